@@ -1,0 +1,18 @@
+# obbsat_add_isa_kernel(<target> <backend> <xsimd-arch> <flags>...)
+#
+# Compiles kernel/backend_isa.cpp once more as an object library for one
+# instruction set: the same kernel source, instantiated for <xsimd-arch> and
+# compiled with that ISA's flags only. Nothing in such an object may run before
+# the dispatcher (compiled at the baseline ISA) has checked the CPU.
+function(obbsat_add_isa_kernel target backend arch)
+  set(flags ${ARGN})
+  add_library(${target} OBJECT ${PROJECT_SOURCE_DIR}/kernel/backend_isa.cpp)
+  target_compile_definitions(${target} PRIVATE
+    OBBSAT_ISA_ARCH=${arch} OBBSAT_ISA_NAME=${backend})
+  target_compile_options(${target} PRIVATE ${flags})
+  target_link_libraries(${target} PRIVATE obbsat_ref xsimd)
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/kernel
+                                               ${PROJECT_SOURCE_DIR}/kernel/include)
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  obbsat_target_defaults(${target})
+endfunction()

@@ -1,0 +1,130 @@
+#include "backend_registry.hpp"
+#include "thread_pool.hpp"
+
+#include <obbsat/collide.hpp>
+#include <obbsat/error.hpp>
+
+#include <algorithm>
+#include <string>
+#include <thread>
+
+namespace obbsat {
+
+namespace {
+
+// Below this many pairs per part, waking another core costs more than it
+// saves (a wake-up is a few microseconds; a pair is a few nanoseconds).
+constexpr std::size_t min_pairs_per_part = 8192;
+
+// Parts start on multiples of this, so every part but the last fills whole
+// vectors of the widest backend.
+constexpr std::size_t part_alignment = 64;
+
+std::size_t parts_for(std::size_t count, unsigned threads) {
+    std::size_t wanted = threads;
+    if (wanted == 0) {
+        wanted = std::max(1u, std::thread::hardware_concurrency());
+    }
+    const std::size_t useful = std::max<std::size_t>(1, count / min_pairs_per_part);
+    return std::min(wanted, useful);
+}
+
+/// Runs body(begin, end) over [0, count) split into `parts` aligned ranges.
+template <class Body>
+void split_over_threads(std::size_t count, unsigned threads, const Body& body) {
+    const std::size_t parts = parts_for(count, threads);
+    if (parts <= 1) {
+        body(std::size_t{0}, count);
+        return;
+    }
+    const std::size_t per_part =
+        (count / parts + part_alignment - 1) / part_alignment * part_alignment;
+    detail::thread_pool::shared().run(parts, [&](std::size_t part) {
+        const std::size_t begin = std::min(count, part * per_part);
+        const std::size_t end = (part + 1 == parts) ? count : std::min(count, begin + per_part);
+        if (begin < end) {
+            body(begin, end);
+        }
+    });
+}
+
+void check_indices(const rect_soa& rects, const pair_index* pairs, std::size_t count) {
+    // One branch-free pass finds whether any index is out of range; only then
+    // is the first offender searched for, to name it.
+    std::uint32_t largest = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        largest = std::max(largest, std::max(pairs[i].a, pairs[i].b));
+    }
+    if (count == 0 || largest < rects.size()) {
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const pair_index& p = pairs[i];
+        const bool a_bad = p.a >= rects.size();
+        if (a_bad || p.b >= rects.size()) {
+            throw invalid_input("pair " + std::to_string(i) + ": index " +
+                                std::to_string(a_bad ? p.a : p.b) + " is out of range (" +
+                                std::to_string(rects.size()) + " rectangles)");
+        }
+    }
+}
+
+}  // namespace
+
+backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options) {
+    const backend ran = resolve_backend(options.use);
+    check_indices(rects, pairs, count);
+    const detail::indexed_fn kernel =
+        detail::kernels_for(ran).indexed[static_cast<unsigned>(options.test)];
+    const detail::soa_view view = detail::view_of(rects);
+    split_over_threads(count, options.threads, [&](std::size_t begin, std::size_t end) {
+        kernel(view, pairs + begin, end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+std::vector<std::uint8_t> collide_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), options);
+    return verdicts;
+}
+
+std::vector<pair_index> colliding_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    const std::vector<std::uint8_t> verdicts = collide_pairs(rects, pairs, options);
+    std::vector<pair_index> hits;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        if (verdicts[i] != 0) {
+            hits.push_back(pairs[i]);
+        }
+    }
+    return hits;
+}
+
+backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    if (a.size() != b.size()) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) +
+                            " rectangles in A, " + std::to_string(b.size()) + " in B");
+    }
+    const backend ran = resolve_backend(options.use);
+    const detail::stream_fn kernel =
+        detail::kernels_for(ran).stream[static_cast<unsigned>(options.test)];
+    const detail::soa_view va = detail::view_of(a);
+    const detail::soa_view vb = detail::view_of(b);
+    split_over_threads(a.size(), options.threads, [&](std::size_t begin, std::size_t end) {
+        kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
+                                         const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
+}
+
+}  // namespace obbsat

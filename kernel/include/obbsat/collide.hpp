@@ -1,0 +1,50 @@
+// Batch collision queries: which pairs of rectangles collide.
+//
+// These are the checked entry points. They reject out-of-range indices and
+// unequal batch lengths with invalid_input (rect_soa already guarantees finite
+// coordinates), resolve the backend once per call, and split the batch over
+// `threads` cores. Verdicts never depend on the backend or the thread count.
+#pragma once
+
+#include <obbsat/backend.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_soa.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace obbsat {
+
+struct collide_options {
+    method test = method::sat4;           ///< which collision test
+    backend use = backend::automatic;     ///< which instruction set (see backend.hpp)
+    unsigned threads = 1;                 ///< cores to split one batch over; 0 means all
+};
+
+/// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0,
+/// for i < count; returns the backend that ran. Throws invalid_input naming
+/// the first pair with an index >= rects.size(), unsupported_backend for a
+/// backend this CPU cannot run; nothing is written then.
+backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options = {});
+
+/// The verdicts of collide_pairs as a vector, one byte (0 or 1) per pair.
+std::vector<std::uint8_t> collide_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options = {});
+
+/// The pairs of `pairs` that collide, in their input order.
+std::vector<pair_index> colliding_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options = {});
+
+/// verdicts[i] = 1 if a[i] and b[i] collide, else 0, for i < a.size(); returns
+/// the backend that ran. Throws invalid_input when a and b differ in size.
+backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdicts,
+                       const collide_options& options = {});
+
+/// The verdicts of collide_stream as a vector.
+std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
+                                         const collide_options& options = {});
+
+}  // namespace obbsat

@@ -1,0 +1,27 @@
+// Methods: the collision tests obbsat offers. Each has a scalar reference in
+// scalar_ref/ that defines it, and every backend follows that definition.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace obbsat {
+
+enum class method {
+    sat4,  ///< the article's separating axis test in float32, world coordinates
+};
+
+/// The number of methods, for tables indexed by method.
+inline constexpr unsigned method_count = 1;
+
+/// The name of a method, as the CLI spells it.
+const char* method_name(method m);
+
+/// The method called `name`, or nothing if there is none.
+std::optional<method> parse_method(std::string_view name);
+
+/// Every method, in declaration order.
+std::vector<method> all_methods();
+
+}  // namespace obbsat

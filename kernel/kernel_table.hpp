@@ -1,0 +1,37 @@
+// The entry points one backend provides, per method. The dispatcher holds one
+// table per backend; nothing in a table may be called before the dispatcher
+// has checked that the CPU runs that backend.
+#pragma once
+
+#include "soa_view.hpp"
+
+#include <obbsat/method.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace obbsat::detail {
+
+/// verdicts[i] = method(a[i], b[i]) for i < count; reads only a[0..count), b[0..count).
+using stream_fn = void (*)(const soa_view& a, const soa_view& b, std::size_t count,
+                           std::uint8_t* verdicts);
+
+/// verdicts[i] = method(rects[pairs[i].a], rects[pairs[i].b]) for i < count;
+/// every index must be < rects.size (the caller checks).
+using indexed_fn = void (*)(const soa_view& rects, const pair_index* pairs, std::size_t count,
+                            std::uint8_t* verdicts);
+
+struct kernel_table {
+    stream_fn stream[method_count];
+    indexed_fn indexed[method_count];
+};
+
+const kernel_table& scalar_kernels();
+#if OBBSAT_WITH_X86_KERNELS
+const kernel_table& sse2_kernels();
+const kernel_table& avx2_kernels();
+const kernel_table& avx512_kernels();
+#endif
+
+}  // namespace obbsat::detail

@@ -1,0 +1,85 @@
+// Vocabulary of the SIMD kernel: one pair per lane, corners in structure-of-
+// arrays form, and the steps every method shares, written once over the xsimd
+// architecture.
+//
+// Everything here has internal linkage (an unnamed namespace) because this
+// header is compiled into one translation unit per instruction set, each with
+// its own flags: a shared inline function with external linkage could be
+// merged by the linker into the copy built for a wider ISA.
+#pragma once
+
+#include "soa_view.hpp"
+
+#include <xsimd/xsimd.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace obbsat::detail {
+namespace {
+
+template <class Arch>
+using lanes = xsimd::batch<float, Arch>;
+
+template <class Arch>
+using lane_mask = xsimd::batch_bool<float, Arch>;
+
+/// The corners of one rectangle per lane, as eight coordinate vectors in
+/// rect_soa order: ulx, uly, urx, ury, lrx, lry, llx, lly.
+template <class Arch>
+struct quad_lanes {
+    lanes<Arch> c[coord_count];
+
+    const lanes<Arch>& x(unsigned corner) const { return c[2 * corner]; }
+    const lanes<Arch>& y(unsigned corner) const { return c[2 * corner + 1]; }
+};
+
+enum corner_index : unsigned { UL = 0, UR = 1, LR = 2, LL = 3 };
+
+/// The x86 SIMD min and max semantics, written out so that every backend and
+/// the scalar reference pick the same operand: u < v ? u : v, u > v ? u : v.
+template <class Arch>
+lanes<Arch> min_pick(const lanes<Arch>& u, const lanes<Arch>& v) {
+    return xsimd::select(u < v, u, v);
+}
+
+template <class Arch>
+lanes<Arch> max_pick(const lanes<Arch>& u, const lanes<Arch>& v) {
+    return xsimd::select(u > v, u, v);
+}
+
+/// The lanes whose bit is set, lane 0 in bit 0.
+template <class Arch>
+unsigned lane_bits(const lane_mask<Arch>& mask) {
+    if constexpr (std::is_base_of<xsimd::avx512f, Arch>::value) {
+        return static_cast<unsigned>(mask.data);
+    } else if constexpr (std::is_base_of<xsimd::avx, Arch>::value) {
+        return static_cast<unsigned>(_mm256_movemask_ps(mask));
+    } else {
+        return static_cast<unsigned>(_mm_movemask_ps(mask));
+    }
+}
+
+/// Spreads the low 8 bits of `bits` into 8 bytes of value 0 or 1, bit i into byte i.
+inline std::uint64_t spread_bits_to_bytes(unsigned bits) {
+    const std::uint64_t replicated = (bits & 0xffu) * 0x0101010101010101ull;
+    const std::uint64_t isolated = replicated & 0x8040201008040201ull;
+    return ((isolated + 0x7f7f7f7f7f7f7f7full) >> 7) & 0x0101010101010101ull;
+}
+
+/// Writes `count` (at most the lane count) verdict bytes from a lane mask.
+template <class Arch>
+void store_verdicts(const lane_mask<Arch>& mask, std::uint8_t* out, std::size_t count) {
+    constexpr std::size_t width = lanes<Arch>::size;
+    unsigned bits = lane_bits<Arch>(mask);
+    std::uint8_t bytes[width < 8 ? 8 : width];
+    for (std::size_t k = 0; k < width; k += 8) {
+        const std::uint64_t word = spread_bits_to_bytes(bits >> k);
+        std::memcpy(bytes + k, &word, 8);
+    }
+    std::memcpy(out, bytes, count);
+}
+
+}  // namespace
+}  // namespace obbsat::detail

@@ -1,0 +1,13 @@
+// The whole public API of obbsat in one include.
+#pragma once
+
+#include <obbsat/backend.hpp>
+#include <obbsat/collide.hpp>
+#include <obbsat/digest.hpp>
+#include <obbsat/error.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/pose.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_soa.hpp>
+#include <obbsat/ref/sat4.hpp>
+#include <obbsat/scene.hpp>

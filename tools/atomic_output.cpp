@@ -1,0 +1,122 @@
+#include "atomic_output.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace obbsat::io {
+
+namespace {
+
+std::string failure(const std::string& path, const char* what, int error) {
+    return path + ": " + what + ": " + std::strerror(error);
+}
+
+// The mode the target ends with: that of the file it replaces, else what a
+// plain open() would give a new file under the current umask (mkstemp's 0600
+// would surprise whoever reads the output next).
+mode_t final_mode(const std::string& target_path) {
+    struct stat existing {};
+    if (::stat(target_path.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) {
+        return existing.st_mode & 07777;
+    }
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return static_cast<mode_t>(0666 & ~mask);
+}
+
+}  // namespace
+
+atomic_output::atomic_output(std::string target_path) : target_path_(std::move(target_path)) {
+    const std::size_t slash = target_path_.rfind('/');
+    const std::string directory =
+        slash == std::string::npos ? std::string() : target_path_.substr(0, slash + 1);
+    const std::string base =
+        slash == std::string::npos ? target_path_ : target_path_.substr(slash + 1);
+    struct stat existing {};
+    if (base.empty() || base == "." || base == ".." ||
+        (::stat(target_path_.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode))) {
+        throw output_error(target_path_ + ": is a directory, not a file name");
+    }
+
+    std::string pattern = directory + "." + base + ".tmp.XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    const int fd = ::mkstemp(name.data());
+    if (fd < 0) {
+        throw output_error(failure(target_path_, "cannot create a temporary file beside it", errno));
+    }
+    temp_path_ = name.data();
+    if (::fchmod(fd, final_mode(target_path_)) != 0) {
+        const int error = errno;
+        ::close(fd);
+        ::unlink(temp_path_.c_str());
+        temp_path_.clear();
+        throw output_error(failure(target_path_, "cannot set the temporary file's mode", error));
+    }
+    file_ = ::fdopen(fd, "wb");
+    if (file_ == nullptr) {
+        const int error = errno;
+        ::close(fd);
+        ::unlink(temp_path_.c_str());
+        temp_path_.clear();
+        throw output_error(failure(target_path_, "cannot open the temporary file", error));
+    }
+}
+
+atomic_output::~atomic_output() {
+    if (!committed_) {
+        discard();
+    }
+}
+
+void atomic_output::discard() noexcept {
+    if (file_ != nullptr) {
+        std::fclose(file_);
+        file_ = nullptr;
+    }
+    if (!temp_path_.empty()) {
+        ::unlink(temp_path_.c_str());
+        temp_path_.clear();
+    }
+}
+
+void atomic_output::write(const char* data, std::size_t size) {
+    if (file_ == nullptr) {
+        throw output_error(target_path_ + ": write after commit");
+    }
+    if (size != 0 && std::fwrite(data, 1, size, file_) != size) {
+        throw output_error(failure(target_path_, "write error", errno));
+    }
+}
+
+void atomic_output::commit() {
+    if (file_ == nullptr) {
+        throw output_error(target_path_ + ": committed twice");
+    }
+    // Data reaches the disk before the rename makes it visible, so a crash
+    // leaves the old target or the complete new one, never a truncated file.
+    if (std::fflush(file_) != 0) {
+        throw output_error(failure(target_path_, "write error", errno));
+    }
+    if (::fsync(::fileno(file_)) != 0) {
+        throw output_error(failure(target_path_, "cannot flush to disk", errno));
+    }
+    const int closed = std::fclose(file_);
+    file_ = nullptr;
+    if (closed != 0) {
+        throw output_error(failure(target_path_, "write error", errno));
+    }
+    if (::rename(temp_path_.c_str(), target_path_.c_str()) != 0) {
+        throw output_error(failure(target_path_, "cannot replace it", errno));
+    }
+    temp_path_.clear();
+    committed_ = true;
+}
+
+}  // namespace obbsat::io

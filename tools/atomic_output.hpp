@@ -1,0 +1,50 @@
+// Output that appears at its path whole or not at all.
+//
+// Bytes go to a temporary file beside the target (same directory, so the final
+// rename stays within one file system and is atomic); commit() flushes it to
+// disk and renames it over the target. Until then an existing target is left
+// untouched, and if commit() is never reached the temporary file is removed.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace obbsat::io {
+
+/// Output could not be created, written or committed; what() names the path.
+class output_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class atomic_output {
+public:
+    /// Creates the temporary file for `target_path`; throws output_error.
+    explicit atomic_output(std::string target_path);
+    /// Removes the temporary file unless commit() succeeded.
+    ~atomic_output();
+    atomic_output(const atomic_output&) = delete;
+    atomic_output& operator=(const atomic_output&) = delete;
+
+    /// Appends bytes; throws output_error on a write error.
+    void write(const char* data, std::size_t size);
+
+    /// Makes the written bytes the content of the target; throws output_error.
+    void commit();
+
+    const std::string& target_path() const { return target_path_; }
+    /// The temporary file's path, while it exists.
+    const std::string& temp_path() const { return temp_path_; }
+
+private:
+    void discard() noexcept;
+
+    std::string target_path_;
+    std::string temp_path_;
+    std::FILE* file_ = nullptr;
+    bool committed_ = false;
+};
+
+}  // namespace obbsat::io

@@ -1,0 +1,109 @@
+#include "cli_args.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+namespace obbsat::cli {
+
+namespace {
+
+std::string dashed(std::string_view name) { return "--" + std::string(name); }
+
+const option_spec* find_spec(const std::vector<option_spec>& specs, std::string_view name) {
+    for (const option_spec& spec : specs) {
+        if (spec.name == name) {
+            return &spec;
+        }
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+bool parsed_options::has(std::string_view name) const { return value(name).has_value(); }
+
+std::optional<std::string_view> parsed_options::value(std::string_view name) const {
+    for (const auto& [given, text] : values_) {
+        if (given == name) {
+            return text;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string_view parsed_options::required(std::string_view name) const {
+    const auto text = value(name);
+    if (!text) {
+        throw usage_error("missing required option " + dashed(name));
+    }
+    return *text;
+}
+
+parsed_options parse_options(const std::vector<std::string_view>& args,
+                             const std::vector<option_spec>& specs) {
+    parsed_options out;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view word = args[i];
+        if (word.size() < 3 || word.substr(0, 2) != "--") {
+            throw usage_error("unexpected argument '" + std::string(word) + "'");
+        }
+        const std::size_t equals = word.find('=');
+        const std::string_view name = word.substr(2, equals == std::string_view::npos
+                                                         ? std::string_view::npos
+                                                         : equals - 2);
+        const option_spec* spec = find_spec(specs, name);
+        if (spec == nullptr) {
+            throw usage_error("unknown option " + dashed(name));
+        }
+        if (out.has(name)) {
+            throw usage_error("option " + dashed(name) + " given twice");
+        }
+        if (spec->value_name.empty()) {
+            if (equals != std::string_view::npos) {
+                throw usage_error("option " + dashed(name) + " takes no value");
+            }
+            out.add(spec->name, std::string_view());
+            continue;
+        }
+        if (equals != std::string_view::npos) {
+            out.add(spec->name, word.substr(equals + 1));
+            continue;
+        }
+        if (i + 1 >= args.size()) {
+            throw usage_error("option " + dashed(name) + " needs a value (" +
+                              std::string(spec->value_name) + ")");
+        }
+        out.add(spec->name, args[++i]);
+    }
+    return out;
+}
+
+std::uint64_t parse_number_option(std::string_view option, std::string_view text,
+                                  std::uint64_t lo, std::uint64_t hi) {
+    std::uint64_t value = 0;
+    const char* const last = text.data() + text.size();
+    const auto [stop, ec] = std::from_chars(text.data(), last, value);
+    const bool in_range = ec == std::errc() && stop == last && value >= lo && value <= hi;
+    if (!in_range) {
+        throw usage_error(dashed(option) + ": expected a whole number from " + std::to_string(lo) +
+                          " to " + std::to_string(hi) + ", got '" + std::string(text) + "'");
+    }
+    return value;
+}
+
+void print_options(std::FILE* out, const std::vector<option_spec>& specs) {
+    std::size_t width = 0;
+    for (const option_spec& spec : specs) {
+        width = std::max(width, spec.name.size() + spec.value_name.size() + 3);
+    }
+    for (const option_spec& spec : specs) {
+        std::string left = dashed(spec.name);
+        if (!spec.value_name.empty()) {
+            left += " " + std::string(spec.value_name);
+        }
+        std::fprintf(out, "  %-*s  %.*s\n", static_cast<int>(width), left.c_str(),
+                     static_cast<int>(spec.help.size()), spec.help.data());
+    }
+}
+
+}  // namespace obbsat::cli

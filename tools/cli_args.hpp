@@ -1,0 +1,56 @@
+// Option parsing for the subcommands: long options only, each given at most
+// once, as "--name value" or "--name=value"; flags take no value.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace obbsat::cli {
+
+/// The command line is wrong (unknown or repeated option, missing or bad value).
+class usage_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct option_spec {
+    std::string_view name;        ///< without the leading "--"
+    std::string_view value_name;  ///< e.g. "FILE"; empty for a flag
+    std::string_view help;        ///< one line for --help
+};
+
+class parsed_options {
+public:
+    /// True iff the option was given.
+    bool has(std::string_view name) const;
+    /// The value of an option, if given (empty for a flag).
+    std::optional<std::string_view> value(std::string_view name) const;
+    /// The value of an option that must be given; throws usage_error.
+    std::string_view required(std::string_view name) const;
+
+    void add(std::string_view name, std::string_view value) { values_.emplace_back(name, value); }
+
+private:
+    std::vector<std::pair<std::string_view, std::string_view>> values_;
+};
+
+/// Parses `args` (the words after the subcommand, which must outlive the
+/// result) against `specs`; throws usage_error naming the offending word.
+parsed_options parse_options(const std::vector<std::string_view>& args,
+                             const std::vector<option_spec>& specs);
+
+/// The decimal number `text` given to `--option`, checked to lie in [lo, hi];
+/// throws usage_error.
+std::uint64_t parse_number_option(std::string_view option, std::string_view text,
+                                  std::uint64_t lo, std::uint64_t hi);
+
+/// Prints one aligned line per option.
+void print_options(std::FILE* out, const std::vector<option_spec>& specs);
+
+}  // namespace obbsat::cli

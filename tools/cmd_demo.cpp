@@ -1,0 +1,246 @@
+// obbsat demo: every backend this CPU runs, timed on one seeded scene, each
+// run checked byte for byte against the scalar reference before its time
+// counts for anything.
+#include "cli_args.hpp"
+#include "commands.hpp"
+
+#include <obbsat/backend.hpp>
+#include <obbsat/collide.hpp>
+#include <obbsat/digest.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/scene.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace obbsat::cli {
+
+namespace {
+
+struct demo_settings {
+    std::size_t rects = 100000;
+    std::size_t pairs = 1000000;
+    std::uint64_t seed = 1;
+    scene_density density = scene_density::typical;
+    const char* density_name = "typical";
+    unsigned reps = 7;
+};
+
+// One row of the table: a way to compute the scene's verdicts.
+struct demo_entry {
+    method test;
+    std::string runner;  // a backend's name, or whatever else computes the verdicts
+    unsigned threads;
+    std::function<void(std::uint8_t* verdicts)> run;
+    bool is_reference;   // the row the others are checked and compared against
+};
+
+struct demo_result {
+    double median_seconds;
+    std::uint64_t digest;
+    std::size_t colliding;
+};
+
+const std::vector<option_spec>& demo_option_specs() {
+    static const std::vector<option_spec> specs = {
+        {"rects", "N", "rectangles in the scene (default: 100000)"},
+        {"pairs", "N", "candidate pairs wanted (default: 1000000)"},
+        {"seed", "S", "scene seed (default: 1)"},
+        {"density", "D", "sparse, typical or dense: about 5%, 30% or 80% collide (default: typical)"},
+        {"reps", "K", "timed repetitions per row, after one warm-up; the median counts (default: 7)"},
+        {"help", "", "show this help"},
+    };
+    return specs;
+}
+
+demo_settings settings_from(const parsed_options& options) {
+    demo_settings s;
+    if (const auto v = options.value("rects")) {
+        s.rects = static_cast<std::size_t>(parse_number_option("rects", *v, 2, UINT32_MAX));
+    }
+    if (const auto v = options.value("pairs")) {
+        s.pairs = static_cast<std::size_t>(parse_number_option("pairs", *v, 1, 1000000000));
+    }
+    if (const auto v = options.value("seed")) {
+        s.seed = parse_number_option("seed", *v, 0, UINT64_MAX);
+    }
+    if (const auto v = options.value("reps")) {
+        s.reps = static_cast<unsigned>(parse_number_option("reps", *v, 1, 1000));
+    }
+    if (const auto v = options.value("density")) {
+        if (*v == "sparse") {
+            s.density = scene_density::sparse;
+            s.density_name = "sparse";
+        } else if (*v == "typical") {
+            s.density = scene_density::typical;
+            s.density_name = "typical";
+        } else if (*v == "dense") {
+            s.density = scene_density::dense;
+            s.density_name = "dense";
+        } else {
+            throw usage_error("--density: expected sparse, typical or dense, got '" +
+                              std::string(*v) + "'");
+        }
+    }
+    return s;
+}
+
+// Every row the demo times, the reference of each method first.
+std::vector<demo_entry> demo_entries(const scene& world) {
+    std::vector<demo_entry> entries;
+    const std::size_t count = world.pairs.size();
+    for (const method test : all_methods()) {
+        std::vector<backend> runnable;
+        runnable.push_back(backend::scalar);
+        for (const backend b : compiled_backends()) {
+            if (b != backend::scalar && cpu_supports(b)) {
+                runnable.push_back(b);
+            }
+        }
+        std::reverse(runnable.begin() + 1, runnable.end());  // narrowest first after scalar
+        for (const backend b : runnable) {
+            for (const unsigned threads : {1u, 2u}) {
+                collide_options options;
+                options.test = test;
+                options.use = b;
+                options.threads = threads;
+                entries.push_back(demo_entry{
+                    test, backend_name(b), threads,
+                    [&world, count, options](std::uint8_t* verdicts) {
+                        collide_pairs(world.rects, world.pairs.data(), count, verdicts, options);
+                    },
+                    b == backend::scalar && threads == 1});
+            }
+        }
+        // ---- More rows for this method go here. --------------------------
+        // A peer implementation (another library's test on the same scene) is
+        // one more demo_entry with its own `runner` name and a `run` that
+        // writes one 0/1 byte per pair of world.pairs; it is then checked
+        // against the reference and timed like every backend. Only add rows
+        // that really run: every figure in the table is measured here.
+        // -------------------------------------------------------------------
+    }
+    return entries;
+}
+
+double median_of(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+// The first pair where `got` differs from `want`, or count if none does.
+std::size_t first_difference(const std::vector<std::uint8_t>& want,
+                             const std::vector<std::uint8_t>& got) {
+    const auto [a, b] = std::mismatch(want.begin(), want.end(), got.begin());
+    (void)b;
+    return static_cast<std::size_t>(a - want.begin());
+}
+
+void print_mismatch(const demo_entry& entry, const scene& world,
+                    const std::vector<std::uint8_t>& want, const std::vector<std::uint8_t>& got,
+                    std::size_t at) {
+    const pair_index& p = world.pairs[at];
+    std::fprintf(stderr,
+                 "obbsat: demo: %s on %s with %u thread(s) disagrees with the scalar reference at "
+                 "pair %zu (rectangles %" PRIu32 " and %" PRIu32 "): verdict %u, reference %u\n",
+                 method_name(entry.test), entry.runner.c_str(), entry.threads, at, p.a, p.b,
+                 static_cast<unsigned>(got[at]), static_cast<unsigned>(want[at]));
+}
+
+}  // namespace
+
+void print_demo_help(std::FILE* out) {
+    std::fprintf(out,
+                 "usage: obbsat demo [--rects N] [--pairs N] [--seed S] [--density D] [--reps K]\n"
+                 "\n"
+                 "Builds a seeded broadphase-like scene, runs method sat4 on every backend this\n"
+                 "CPU runs at 1 and 2 threads, checks every run's verdicts byte for byte against\n"
+                 "the scalar backend (exit status 1 if any differs), and prints throughput,\n"
+                 "speedup over scalar at 1 thread, the verdict digest (FNV-1a) and the share of\n"
+                 "pairs that collide.\n"
+                 "\n"
+                 "options:\n");
+    print_options(out, demo_option_specs());
+    std::fprintf(out,
+                 "\n"
+                 "example:\n"
+                 "  obbsat demo --density dense --seed 7 --reps 11\n");
+}
+
+int run_demo(const arguments& args) {
+    const demo_settings settings = settings_from(parse_options(args, demo_option_specs()));
+    using clock = std::chrono::steady_clock;
+    auto seconds_since = [](clock::time_point start) {
+        return std::chrono::duration<double>(clock::now() - start).count();
+    };
+
+    const clock::time_point build_start = clock::now();
+    const scene world = make_scene(
+        scene_spec_for(settings.density, settings.rects, settings.pairs, settings.seed));
+    const double build_seconds = seconds_since(build_start);
+    const std::size_t count = world.pairs.size();
+    if (count == 0) {
+        throw usage_error("the scene has no candidate pairs; give it more --rects");
+    }
+
+    std::printf("obbsat %s demo: %zu rectangles, %zu candidate pairs (%s density, seed %" PRIu64
+                "), built in %.2f s\n",
+                OBBSAT_VERSION, world.rects.size(), count, settings.density_name, settings.seed,
+                build_seconds);
+    std::printf("each row: median of %u timed runs after one warm-up; every run checked byte for "
+                "byte against the scalar backend at 1 thread\n\n",
+                settings.reps);
+    std::printf("%-6s  %-8s  %7s  %9s  %8s  %8s  %-16s  %9s\n", "method", "backend", "threads",
+                "Mpairs/s", "ns/pair", "speedup", "digest", "colliding");
+    std::fflush(stdout);
+
+    const std::vector<demo_entry> entries = demo_entries(world);
+    std::vector<std::uint8_t> reference;
+    double reference_seconds = 0.0;
+    std::vector<std::uint8_t> verdicts(count);
+    for (const demo_entry& entry : entries) {
+        if (entry.is_reference) {
+            reference.assign(count, 0);
+            entry.run(reference.data());
+        }
+        std::vector<double> times;
+        for (unsigned rep = 0; rep <= settings.reps; ++rep) {
+            std::fill(verdicts.begin(), verdicts.end(), std::uint8_t{0xff});
+            const clock::time_point start = clock::now();
+            entry.run(verdicts.data());
+            const double elapsed = seconds_since(start);
+            const std::size_t at = first_difference(reference, verdicts);
+            if (at != count) {
+                print_mismatch(entry, world, reference, verdicts, at);
+                return exit_internal_error;
+            }
+            if (rep > 0) {  // rep 0 is the warm-up
+                times.push_back(elapsed);
+            }
+        }
+        demo_result result{median_of(times), verdict_digest(verdicts.data(), count),
+                           static_cast<std::size_t>(
+                               std::count(verdicts.begin(), verdicts.end(), std::uint8_t{1}))};
+        if (entry.is_reference) {
+            reference_seconds = result.median_seconds;
+        }
+        const double pairs = static_cast<double>(count);
+        std::printf("%-6s  %-8s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
+                    method_name(entry.test), entry.runner.c_str(), entry.threads,
+                    pairs / result.median_seconds / 1e6, result.median_seconds / pairs * 1e9,
+                    reference_seconds / result.median_seconds, result.digest,
+                    100.0 * static_cast<double>(result.colliding) / pairs);
+        std::fflush(stdout);
+    }
+    std::printf("\nall %zu rows agree with the scalar reference (best backend here: %s)\n",
+                entries.size(), backend_name(best_supported_backend()));
+    return exit_success;
+}
+
+}  // namespace obbsat::cli

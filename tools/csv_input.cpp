@@ -1,0 +1,334 @@
+#include "csv_input.hpp"
+
+#include <obbsat/rect_soa.hpp>
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <utility>
+
+namespace obbsat::io {
+
+namespace {
+
+std::string located_message(const std::string& file, std::uint64_t line,
+                            const std::string& reason) {
+    if (line == 0) {
+        return file + ": " + reason;
+    }
+    return file + ":" + std::to_string(line) + ": " + reason;
+}
+
+// A field as an error message shows it: quoted, control bytes escaped, and cut
+// short, so a binary file or a megabyte-long field gives a readable message.
+std::string quoted(std::string_view field) {
+    constexpr std::size_t shown = 40;
+    std::string out = "'";
+    for (std::size_t i = 0; i < field.size() && i < shown; ++i) {
+        const auto c = static_cast<unsigned char>(field[i]);
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            constexpr char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 0xf];
+        }
+    }
+    if (field.size() > shown) {
+        out += "...";
+    }
+    out += "'";
+    return out;
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trimmed(std::string_view s) {
+    std::size_t begin = 0;
+    std::size_t end = s.size();
+    while (begin < end && is_blank(s[begin])) {
+        ++begin;
+    }
+    while (end > begin && is_blank(s[end - 1])) {
+        --end;
+    }
+    return s.substr(begin, end - begin);
+}
+
+// Splits `line` at commas into exactly N trimmed fields, or fails naming how
+// many fields the line really has.
+template <std::size_t N>
+std::array<std::string_view, N> split_fields(std::string_view line, const line_reader& where,
+                                             const char* record_name) {
+    std::array<std::string_view, N> fields;
+    std::size_t count = 0;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = line.find(',', start);
+        const std::string_view field =
+            line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+        if (count < N) {
+            fields[count] = trimmed(field);
+        }
+        ++count;
+        if (comma == std::string_view::npos) {
+            break;
+        }
+        start = comma + 1;
+    }
+    if (count != N) {
+        where.fail(std::string("expected ") + std::to_string(N) + " comma-separated fields (" +
+                   record_name + "), found " + std::to_string(count));
+    }
+    return fields;
+}
+
+std::string field_label(std::size_t index, const char* name) {
+    return "field " + std::to_string(index + 1) + " (" + name + ")";
+}
+
+float parse_coordinate(std::string_view field, std::size_t index, const line_reader& where) {
+    const char* name = coord_name(static_cast<coord>(index));
+    if (field.empty()) {
+        where.fail(field_label(index, name) + " is empty");
+    }
+    // strtof needs a terminated string; fields of sane length use the stack.
+    std::array<char, 128> small;
+    std::string large;
+    const char* text = nullptr;
+    if (field.size() < small.size()) {
+        std::memcpy(small.data(), field.data(), field.size());
+        small[field.size()] = '\0';
+        text = small.data();
+    } else {
+        large.assign(field);
+        text = large.c_str();
+    }
+    char* stop = nullptr;
+    errno = 0;
+    const float value = std::strtof(text, &stop);
+    const int parse_errno = errno;
+    if (stop != text + field.size()) {
+        where.fail(field_label(index, name) + ": " + quoted(field) + " is not a number");
+    }
+    if (std::isinf(value) && parse_errno == ERANGE) {
+        where.fail(field_label(index, name) + ": " + quoted(field) +
+                   " is out of float range (magnitude above 3.40282347e+38)");
+    }
+    if (!std::isfinite(value)) {
+        where.fail(field_label(index, name) + ": " + quoted(field) + " is not finite");
+    }
+    // ERANGE with a finite result is underflow: the value rounded to a
+    // subnormal or to zero, which is a valid float, so it is accepted.
+    return value;
+}
+
+std::uint32_t parse_index(std::string_view field, std::size_t index, const char* name,
+                          const line_reader& where) {
+    if (field.empty()) {
+        where.fail(field_label(index, name) + " is empty");
+    }
+    if (field.front() == '-') {
+        where.fail(field_label(index, name) + ": " + quoted(field) +
+                   " is negative; indices are 0-based and unsigned");
+    }
+    std::uint64_t value = 0;
+    const char* const first = field.data();
+    const char* const last = field.data() + field.size();
+    const auto [stop, ec] = std::from_chars(first, last, value);
+    if (ec == std::errc::invalid_argument || stop != last) {
+        where.fail(field_label(index, name) + ": " + quoted(field) +
+                   " is not an unsigned decimal integer");
+    }
+    if (ec == std::errc::result_out_of_range || value > UINT32_MAX) {
+        where.fail(field_label(index, name) + ": " + quoted(field) +
+                   " is too large for a 32-bit index (largest 4294967295)");
+    }
+    return static_cast<std::uint32_t>(value);
+}
+
+}  // namespace
+
+input_error::input_error(std::string file, std::uint64_t line, std::string reason)
+    : std::runtime_error(located_message(file, line, reason)),
+      file_(std::move(file)),
+      line_(line),
+      reason_(std::move(reason)) {}
+
+input_file::input_file(const std::string& path) {
+    if (path == "-") {
+        file_ = stdin;
+        name_ = "<stdin>";
+        return;
+    }
+    name_ = path;
+    file_ = std::fopen(path.c_str(), "rb");
+    if (file_ == nullptr) {
+        throw input_error(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    }
+    owned_ = true;
+}
+
+input_file::~input_file() {
+    if (owned_) {
+        std::fclose(file_);
+    }
+}
+
+line_reader::line_reader(std::FILE* file, std::string name, std::size_t chunk_bytes,
+                         std::size_t max_line_bytes)
+    : file_(file),
+      name_(std::move(name)),
+      buffer_(chunk_bytes == 0 ? 1 : chunk_bytes),
+      max_line_bytes_(max_line_bytes) {}
+
+line_reader::line_reader(std::string_view text, std::string name, std::size_t chunk_bytes,
+                         std::size_t max_line_bytes)
+    : text_(text),
+      name_(std::move(name)),
+      buffer_(chunk_bytes == 0 ? 1 : chunk_bytes),
+      max_line_bytes_(max_line_bytes) {}
+
+void line_reader::fail(const std::string& reason) const {
+    throw input_error(name_, line_number_, reason);
+}
+
+void line_reader::refill() {
+    if (begin_ != 0) {
+        std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
+        end_ -= begin_;
+        begin_ = 0;
+    }
+    if (end_ == buffer_.size()) {
+        // The whole buffer is one unfinished line: grow, up to the limit.
+        if (buffer_.size() >= max_line_bytes_) {
+            throw input_error(name_, line_number_ + 1,
+                              "line is longer than " + std::to_string(max_line_bytes_) + " bytes");
+        }
+        buffer_.resize(std::min(buffer_.size() * 2, max_line_bytes_));
+    }
+    const std::size_t room = buffer_.size() - end_;
+    std::size_t got = 0;
+    if (file_ != nullptr) {
+        got = std::fread(buffer_.data() + end_, 1, room, file_);
+        if (got < room && std::ferror(file_)) {
+            throw input_error(name_, 0, std::string("read error: ") + std::strerror(errno));
+        }
+    } else {
+        got = std::min(room, text_.size());
+        std::memcpy(buffer_.data() + end_, text_.data(), got);
+        text_.remove_prefix(got);
+    }
+    end_ += got;
+    if (got == 0) {
+        input_done_ = true;
+    }
+}
+
+bool line_reader::next(std::string_view& line) {
+    for (;;) {
+        const char* const base = buffer_.data();
+        const std::size_t from = begin_ + scanned_;
+        const void* found = std::memchr(base + from, '\n', end_ - from);
+        std::size_t line_end = 0;
+        std::size_t resume = 0;
+        if (found != nullptr) {
+            line_end = static_cast<std::size_t>(static_cast<const char*>(found) - base);
+            resume = line_end + 1;
+        } else if (input_done_) {
+            if (begin_ == end_) {
+                return false;
+            }
+            line_end = end_;
+            resume = end_;
+        } else {
+            scanned_ = end_ - begin_;
+            refill();
+            continue;
+        }
+        line = std::string_view(base + begin_, line_end - begin_);
+        if (!line.empty() && line.back() == '\r') {
+            line.remove_suffix(1);
+        }
+        begin_ = resume;
+        scanned_ = 0;
+        ++line_number_;
+        return true;
+    }
+}
+
+bool is_skipped_line(std::string_view line) {
+    const std::string_view content = trimmed(line);
+    return content.empty() || content.front() == '#';
+}
+
+rect parse_rect_line(std::string_view line, const line_reader& where) {
+    const auto fields = split_fields<coord_count>(line, where, "ulx,uly,urx,ury,lrx,lry,llx,lly");
+    float v[coord_count];
+    for (std::size_t k = 0; k < coord_count; ++k) {
+        v[k] = parse_coordinate(fields[k], k, where);
+    }
+    return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+}
+
+pair_index parse_pair_line(std::string_view line, const line_reader& where,
+                           std::uint64_t rect_count, const std::string& rect_file) {
+    const auto fields = split_fields<2>(line, where, "i,j");
+    const std::uint32_t a = parse_index(fields[0], 0, "i", where);
+    const std::uint32_t b = parse_index(fields[1], 1, "j", where);
+    if (a >= rect_count || b >= rect_count) {
+        const std::uint32_t bad = a >= rect_count ? a : b;
+        if (rect_count == 0) {
+            where.fail("index " + std::to_string(bad) + " refers to a rectangle, but " + rect_file +
+                       " holds none");
+        }
+        where.fail("index " + std::to_string(bad) + " is out of range: " + rect_file + " holds " +
+                   std::to_string(rect_count) + " rectangles (indices 0 to " +
+                   std::to_string(rect_count - 1) + ")");
+    }
+    return pair_index{a, b};
+}
+
+rect_soa read_rects(line_reader& lines, std::uint64_t max_rects) {
+    rect_soa rects;
+    std::string_view line;
+    while (lines.next(line)) {
+        if (is_skipped_line(line)) {
+            continue;
+        }
+        if (rects.size() >= max_rects) {
+            lines.fail("more than " + std::to_string(max_rects) +
+                       " rectangles; pairs index rectangles with 32-bit indices");
+        }
+        rects.push_back(parse_rect_line(line, lines));
+    }
+    return rects;
+}
+
+rect_soa read_rects_file(const std::string& path) {
+    const input_file file(path);
+    line_reader lines(file.get(), file.name());
+    return read_rects(lines);
+}
+
+pair_reader::pair_reader(line_reader& lines, std::uint64_t rect_count, std::string rect_file)
+    : lines_(lines), rect_count_(rect_count), rect_file_(std::move(rect_file)) {}
+
+bool pair_reader::read_chunk(std::vector<pair_index>& out, std::size_t max_pairs) {
+    out.clear();
+    std::string_view line;
+    while (out.size() < max_pairs && lines_.next(line)) {
+        if (is_skipped_line(line)) {
+            continue;
+        }
+        out.push_back(parse_pair_line(line, lines_, rect_count_, rect_file_));
+    }
+    pairs_read_ += out.size();
+    return !out.empty();
+}
+
+}  // namespace obbsat::io

@@ -1,0 +1,149 @@
+// Readers for the CLI's two input files, with errors that name file and line.
+//
+// Format, shared by both files:
+//   - One record per line; a line ends at "\n" or "\r\n"; the last line may
+//     lack its line end.
+//   - A line that is empty or holds only blanks (space, tab) is skipped, and so
+//     is a line whose first non-blank character is '#' (a comment).
+//   - Fields are separated by ','; blanks around a field are ignored.
+//   - Rectangle file: 8 fields ulx,uly,urx,ury,lrx,lry,llx,lly, each a number
+//     strtof reads completely in the "C" locale (decimal or C99 hex float). A
+//     value that overflows float, or is an infinity or a NaN, is rejected; a
+//     value that rounds to a subnormal or to zero is accepted as rounded.
+//   - Pair file: 2 fields i,j, each an unsigned decimal index below the number
+//     of rectangles (so at most 4294967294).
+// Line numbers count every line of the file from 1, skipped lines included.
+#pragma once
+
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_soa.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace obbsat::io {
+
+/// A file that cannot be read as the format demands; what() is
+/// "FILE:LINE: reason", or "FILE: reason" when no single line is at fault.
+class input_error : public std::runtime_error {
+public:
+    input_error(std::string file, std::uint64_t line, std::string reason);
+
+    const std::string& file() const { return file_; }
+    /// 1-based line number, 0 when the error concerns the whole file.
+    std::uint64_t line() const { return line_; }
+    const std::string& reason() const { return reason_; }
+
+private:
+    std::string file_;
+    std::uint64_t line_;
+    std::string reason_;
+};
+
+/// A FILE* opened for reading, closed when it goes out of scope.
+class input_file {
+public:
+    /// Opens `path`, or standard input when `path` is "-"; throws input_error.
+    explicit input_file(const std::string& path);
+    ~input_file();
+    input_file(const input_file&) = delete;
+    input_file& operator=(const input_file&) = delete;
+
+    std::FILE* get() const { return file_; }
+    /// The name errors use: the path, or "<stdin>".
+    const std::string& name() const { return name_; }
+
+private:
+    std::FILE* file_ = nullptr;
+    bool owned_ = false;
+    std::string name_;
+};
+
+/// The lines of a file or of text in memory, read in large chunks so that a
+/// line may cross a chunk boundary; memory stays bounded by the longest line.
+class line_reader {
+public:
+    static constexpr std::size_t default_chunk_bytes = std::size_t{1} << 20;
+    static constexpr std::size_t default_max_line_bytes = std::size_t{16} << 20;
+
+    /// Lines of `file` (not owned); `name` is what errors call it.
+    line_reader(std::FILE* file, std::string name, std::size_t chunk_bytes = default_chunk_bytes,
+                std::size_t max_line_bytes = default_max_line_bytes);
+    /// Lines of `text` (not copied, must outlive the reader), read through the
+    /// same chunked path as a file.
+    line_reader(std::string_view text, std::string name,
+                std::size_t chunk_bytes = default_chunk_bytes,
+                std::size_t max_line_bytes = default_max_line_bytes);
+
+    /// The next line without its line end, valid until the next call; false
+    /// at the end of input. Throws input_error on a read error or a line
+    /// longer than max_line_bytes.
+    bool next(std::string_view& line);
+
+    /// The 1-based number of the line next() returned last.
+    std::uint64_t line_number() const { return line_number_; }
+    const std::string& name() const { return name_; }
+
+    /// Throws input_error for the line next() returned last.
+    [[noreturn]] void fail(const std::string& reason) const;
+
+private:
+    void refill();
+
+    std::FILE* file_ = nullptr;
+    std::string_view text_;
+    std::string name_;
+    std::vector<char> buffer_;
+    std::size_t max_line_bytes_;
+    std::size_t begin_ = 0;    // first unread byte in buffer_
+    std::size_t end_ = 0;      // one past the last filled byte in buffer_
+    std::size_t scanned_ = 0;  // bytes from begin_ known to hold no '\n'
+    bool input_done_ = false;
+    std::uint64_t line_number_ = 0;
+};
+
+/// True iff `line` is blank or a comment, so it holds no record.
+bool is_skipped_line(std::string_view line);
+
+/// The rectangle on one line (8 fields); throws input_error through `where`.
+rect parse_rect_line(std::string_view line, const line_reader& where);
+
+/// The pair on one line (2 fields), each index below `rect_count`; throws
+/// input_error through `where`, naming `rect_file` when an index is out of range.
+pair_index parse_pair_line(std::string_view line, const line_reader& where,
+                           std::uint64_t rect_count, const std::string& rect_file);
+
+/// Every rectangle of `lines`. More than `max_rects` rectangles is an error
+/// (pairs address rectangles with 32-bit indices).
+rect_soa read_rects(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
+
+/// Every rectangle of the file at `path`.
+rect_soa read_rects_file(const std::string& path);
+
+/// The pairs of a pair file, a bounded chunk at a time, each checked against
+/// the number of rectangles they index.
+class pair_reader {
+public:
+    /// `rect_file` names the rectangle file in errors about indices.
+    pair_reader(line_reader& lines, std::uint64_t rect_count, std::string rect_file);
+
+    /// Replaces the content of `out` with the next up to `max_pairs` pairs;
+    /// false when there are none left. Throws input_error on a bad line.
+    bool read_chunk(std::vector<pair_index>& out, std::size_t max_pairs);
+
+    /// Pairs returned so far.
+    std::uint64_t pairs_read() const { return pairs_read_; }
+
+private:
+    line_reader& lines_;
+    std::uint64_t rect_count_;
+    std::string rect_file_;
+    std::uint64_t pairs_read_ = 0;
+};
+
+}  // namespace obbsat::io

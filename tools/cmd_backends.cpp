@@ -34,7 +34,8 @@ void print_backends_help(std::FILE* out) {
     std::fprintf(out,
                  "\n"
                  "example:\n"
-                 "  OBBSAT_BACKEND=scalar obbsat backends\n");
+                 "  obbsat backends\n"
+                 "  OBBSAT_BACKEND=scalar obbsat backends   # 'auto' now picks scalar\n");
 }
 
 int run_backends(const arguments& args) {

@@ -1,0 +1,375 @@
+// The CLI's readers: what they accept, and for every rejected line the file,
+// line number and reason of the error.
+#include "csv_input.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+using obbsat::pair_index;
+using obbsat::rect;
+using obbsat::rect_soa;
+using obbsat::io::input_error;
+using obbsat::io::line_reader;
+using obbsat::io::pair_reader;
+
+const std::string unit_rect = "0,1,1,1,1,0,0,0";
+
+rect_soa rects_of(const std::string& text,
+                  std::size_t chunk_bytes = line_reader::default_chunk_bytes) {
+    line_reader lines(text, "R.csv", chunk_bytes);
+    return obbsat::io::read_rects(lines);
+}
+
+std::vector<pair_index> pairs_of(const std::string& text, std::uint64_t rect_count,
+                                 std::size_t chunk_bytes = line_reader::default_chunk_bytes) {
+    line_reader lines(text, "P.csv", chunk_bytes);
+    pair_reader reader(lines, rect_count, "R.csv");
+    std::vector<pair_index> all;
+    std::vector<pair_index> chunk;
+    while (reader.read_chunk(chunk, 1000)) {
+        all.insert(all.end(), chunk.begin(), chunk.end());
+    }
+    return all;
+}
+
+input_error rect_error(const std::string& text,
+                       std::size_t chunk_bytes = line_reader::default_chunk_bytes) {
+    try {
+        rects_of(text, chunk_bytes);
+    } catch (const input_error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for rectangle text:\n" << text;
+    return input_error("", 0, "");
+}
+
+input_error pair_error(const std::string& text, std::uint64_t rect_count = 10) {
+    try {
+        pairs_of(text, rect_count);
+    } catch (const input_error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for pair text:\n" << text;
+    return input_error("", 0, "");
+}
+
+// The eight coordinates of rectangle i, in file order.
+std::vector<float> coords(const rect_soa& rects, std::size_t i) {
+    const rect r = rects.at(i);
+    return {r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x, r.lr.y, r.ll.x, r.ll.y};
+}
+
+// A rectangle line whose coordinate `index` is `value` and the others 0.
+std::string line_with(std::size_t index, const std::string& value) {
+    std::string line;
+    for (std::size_t k = 0; k < 8; ++k) {
+        line += (k == 0 ? "" : ",") + (k == index ? value : std::string("0"));
+    }
+    return line;
+}
+
+float single_value(const std::string& value) {
+    const rect_soa rects = rects_of(line_with(3, value) + "\n");
+    EXPECT_EQ(rects.size(), 1u);
+    return coords(rects, 0)[3];
+}
+
+TEST(csv_input, reads_decimal_rectangles_exactly) {
+    const rect_soa rects = rects_of("1.5,-2,0.1,3e2,-0,7,1e-3,12345.678\n" + unit_rect + "\n");
+    ASSERT_EQ(rects.size(), 2u);
+    const std::vector<float> want = {1.5f, -2.0f, 0.1f, 300.0f, -0.0f, 7.0f, 1e-3f, 12345.678f};
+    EXPECT_EQ(coords(rects, 0), want);
+    EXPECT_EQ(coords(rects, 1), (std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}));
+}
+
+TEST(csv_input, reads_hex_floats_exactly) {
+    EXPECT_EQ(single_value("0x1.8p+1"), 3.0f);
+    EXPECT_EQ(single_value("-0x1.fffffep+127"), -FLT_MAX);
+    EXPECT_EQ(single_value("0x1.000002p+0"), 1.0f + FLT_EPSILON);
+    EXPECT_EQ(single_value("0X1P-3"), 0.125f);
+}
+
+TEST(csv_input, accepts_subnormals_and_underflow_to_zero) {
+    EXPECT_EQ(single_value("0x1p-149"), std::numeric_limits<float>::denorm_min());
+    EXPECT_EQ(single_value("1e-40"), 1e-40f);
+    EXPECT_GT(single_value("1e-40"), 0.0f);
+    EXPECT_LT(single_value("1e-40"), FLT_MIN);
+    EXPECT_EQ(single_value("-1.17549421e-38"), -1.17549421e-38f);
+    EXPECT_EQ(single_value("1e-50"), 0.0f);
+}
+
+TEST(csv_input, accepts_values_that_round_to_the_largest_float) {
+    EXPECT_EQ(single_value("3.4028235e38"), FLT_MAX);
+    EXPECT_EQ(single_value("-3.40282356e38"), -FLT_MAX);
+}
+
+TEST(csv_input, rejects_overflow_with_line_and_field) {
+    const input_error e = rect_error(unit_rect + "\n" + line_with(2, "1e39") + "\n");
+    EXPECT_EQ(e.file(), "R.csv");
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(),
+              "field 3 (urx): '1e39' is out of float range (magnitude above 3.40282347e+38)");
+    EXPECT_EQ(std::string(e.what()), "R.csv:2: " + e.reason());
+    EXPECT_NE(rect_error(line_with(0, "-1e39")).reason().find("out of float range"),
+              std::string::npos);
+    EXPECT_NE(rect_error(line_with(7, "3.5e38")).reason().find("field 8 (lly)"), std::string::npos);
+    EXPECT_NE(rect_error(line_with(7, "0x1p128")).reason().find("out of float range"),
+              std::string::npos);
+}
+
+TEST(csv_input, rejects_nan_and_infinity) {
+    for (const char* value : {"nan", "NaN", "-nan", "nan(0x1)", "inf", "-inf", "INF", "infinity"}) {
+        const input_error e = rect_error(line_with(4, value));
+        EXPECT_EQ(e.line(), 1u) << value;
+        EXPECT_EQ(e.reason(), "field 5 (lrx): '" + std::string(value) + "' is not finite") << value;
+    }
+}
+
+TEST(csv_input, rejects_garbage_numbers) {
+    for (const char* value : {"abc", "1.5x", "0x", "1 2", "--1", "1e", ".", "1,5"}) {
+        const input_error e = rect_error("# header\n" + line_with(1, value) + "\n");
+        EXPECT_EQ(e.line(), 2u) << value;
+        if (std::string(value) == "1,5") {
+            EXPECT_EQ(e.reason(), "expected 8 comma-separated fields "
+                                  "(ulx,uly,urx,ury,lrx,lry,llx,lly), found 9");
+        } else {
+            EXPECT_EQ(e.reason(), "field 2 (uly): '" + std::string(value) + "' is not a number")
+                << value;
+        }
+    }
+}
+
+TEST(csv_input, rejects_empty_fields) {
+    const input_error e = rect_error("0,1,1,,1,0,0,0\n");
+    EXPECT_EQ(e.line(), 1u);
+    EXPECT_EQ(e.reason(), "field 4 (ury) is empty");
+    EXPECT_EQ(rect_error("0,1,1,1,1,0,0,  \n").reason(), "field 8 (lly) is empty");
+}
+
+TEST(csv_input, rejects_wrong_field_counts) {
+    EXPECT_EQ(rect_error("0,1,1,1,1,0,0\n").reason(),
+              "expected 8 comma-separated fields (ulx,uly,urx,ury,lrx,lry,llx,lly), found 7");
+    EXPECT_EQ(rect_error(unit_rect + ",0\n").reason(),
+              "expected 8 comma-separated fields (ulx,uly,urx,ury,lrx,lry,llx,lly), found 9");
+    EXPECT_EQ(pair_error("1,2\n1\n").reason(), "expected 2 comma-separated fields (i,j), found 1");
+    EXPECT_EQ(pair_error("1,2\n1\n").line(), 2u);
+    EXPECT_EQ(pair_error("1,2,3\n").reason(), "expected 2 comma-separated fields (i,j), found 3");
+}
+
+TEST(csv_input, accepts_crlf_and_blanks_around_fields) {
+    const rect_soa rects = rects_of(" 0 ,\t1, 1 ,1,1,0,0,0 \r\n" + unit_rect + "\r\n");
+    ASSERT_EQ(rects.size(), 2u);
+    EXPECT_EQ(coords(rects, 0), coords(rects, 1));
+    const auto pairs = pairs_of("0,1\r\n 2 , 3 \r\n", 4);
+    ASSERT_EQ(pairs.size(), 2u);
+    EXPECT_EQ(pairs[1].a, 2u);
+    EXPECT_EQ(pairs[1].b, 3u);
+}
+
+TEST(csv_input, reads_a_last_line_without_line_end) {
+    EXPECT_EQ(rects_of(unit_rect + "\n" + unit_rect).size(), 2u);
+    EXPECT_EQ(rects_of(unit_rect + "\r\n" + unit_rect + "\r").size(), 2u);
+    const auto pairs = pairs_of("0,1\n1,0", 2);
+    ASSERT_EQ(pairs.size(), 2u);
+    EXPECT_EQ(pairs[1].a, 1u);
+}
+
+TEST(csv_input, skips_comments_and_blank_lines_but_counts_them) {
+    const std::string text = "# ulx,uly,...\n\n   \n\t# indented comment\r\n" + unit_rect +
+                             "\n#" + unit_rect + "\n" + line_with(0, "x") + "\n";
+    const input_error e = rect_error(text);
+    EXPECT_EQ(e.line(), 7u);
+    EXPECT_EQ(rects_of("#only comments\n\n").size(), 0u);
+    EXPECT_EQ(rects_of("").size(), 0u);
+    EXPECT_EQ(pairs_of("# i,j\n\n0,0\n  # x\n", 1).size(), 1u);
+}
+
+TEST(csv_input, rejects_a_carriage_return_inside_a_line) {
+    const input_error e = rect_error("0,1,1\r,1,1,0,0,0\n");
+    EXPECT_EQ(e.reason(), "field 3 (urx): '1\\x0d' is not a number");
+}
+
+TEST(csv_input, escapes_and_shortens_garbage_in_messages) {
+    const input_error nul = rect_error(line_with(0, std::string("1\0", 2)));
+    EXPECT_EQ(nul.reason(), "field 1 (ulx): '1\\x00' is not a number");
+    const input_error long_field = rect_error(line_with(0, std::string(100, 'z')));
+    EXPECT_EQ(long_field.reason(),
+              "field 1 (ulx): '" + std::string(40, 'z') + "...' is not a number");
+}
+
+TEST(csv_input, reads_long_fields_and_lines) {
+    // A 300-digit field, longer than any stack buffer, still reads exactly.
+    const std::string long_number = "1." + std::string(298, '0');
+    EXPECT_EQ(single_value(long_number), 1.0f);
+    // A line much longer than a read chunk.
+    std::string padded;
+    for (std::size_t k = 0; k < 8; ++k) {
+        padded += (k == 0 ? "" : ",") + std::string(5000, ' ') + "0.5" + std::string(5000, '\t');
+    }
+    const rect_soa rects = rects_of(padded + "\n" + unit_rect + "\n", 64);
+    ASSERT_EQ(rects.size(), 2u);
+    EXPECT_EQ(coords(rects, 0), std::vector<float>(8, 0.5f));
+}
+
+TEST(csv_input, rejects_a_line_longer_than_the_limit) {
+    const std::string text = unit_rect + "\n" + std::string(5000, ' ') + unit_rect + "\n";
+    line_reader lines(text, "R.csv", 64, 1024);
+    try {
+        obbsat::io::read_rects(lines);
+        FAIL() << "no error";
+    } catch (const input_error& e) {
+        EXPECT_EQ(e.line(), 2u);
+        EXPECT_EQ(e.reason(), "line is longer than 1024 bytes");
+    }
+}
+
+TEST(csv_input, results_do_not_depend_on_chunk_boundaries) {
+    std::string rect_text = "# comment\r\n";
+    std::string pair_text = "# pairs\n";
+    for (int i = 0; i < 40; ++i) {
+        rect_text += std::to_string(i) + ".25, 0x1.8p" + std::to_string(i % 5) + ",1,1,1,0,0,0" +
+                     (i % 3 == 0 ? "\r\n" : "\n") + (i % 7 == 0 ? "\n" : "");
+        pair_text += std::to_string(i) + "," + std::to_string(39 - i) + (i % 2 ? "\r\n" : "\n");
+    }
+    const rect_soa want_rects = rects_of(rect_text);
+    const std::vector<pair_index> want_pairs = pairs_of(pair_text, 40);
+    ASSERT_EQ(want_rects.size(), 40u);
+    ASSERT_EQ(want_pairs.size(), 40u);
+    const std::string bad_text = rect_text + unit_rect + "\n" + line_with(6, "1e40");
+    const input_error want_error = rect_error(bad_text);
+    for (std::size_t chunk = 1; chunk <= 70; ++chunk) {
+        const rect_soa got_rects = rects_of(rect_text, chunk);
+        ASSERT_EQ(got_rects.size(), want_rects.size()) << "chunk " << chunk;
+        for (std::size_t i = 0; i < want_rects.size(); ++i) {
+            ASSERT_EQ(coords(got_rects, i), coords(want_rects, i)) << "chunk " << chunk;
+        }
+        const std::vector<pair_index> got_pairs = pairs_of(pair_text, 40, chunk);
+        ASSERT_EQ(got_pairs.size(), want_pairs.size()) << "chunk " << chunk;
+        for (std::size_t i = 0; i < want_pairs.size(); ++i) {
+            ASSERT_EQ(got_pairs[i].a, want_pairs[i].a);
+            ASSERT_EQ(got_pairs[i].b, want_pairs[i].b);
+        }
+        const input_error got_error = rect_error(bad_text, chunk);
+        EXPECT_EQ(got_error.line(), want_error.line()) << "chunk " << chunk;
+        EXPECT_EQ(got_error.reason(), want_error.reason()) << "chunk " << chunk;
+    }
+}
+
+TEST(csv_input, reads_indices_up_to_the_32_bit_limit) {
+    const std::uint64_t every_index = std::uint64_t{1} << 32;
+    const auto pairs = pairs_of("4294967295,0\n007,4294967294\n", every_index);
+    ASSERT_EQ(pairs.size(), 2u);
+    EXPECT_EQ(pairs[0].a, 4294967295u);
+    EXPECT_EQ(pairs[1].a, 7u);
+    EXPECT_EQ(pairs[1].b, 4294967294u);
+}
+
+TEST(csv_input, rejects_indices_beyond_32_bits) {
+    const std::uint64_t every_index = std::uint64_t{1} << 32;
+    const input_error e = pair_error("0,1\n4294967296,0\n", every_index);
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(),
+              "field 1 (i): '4294967296' is too large for a 32-bit index (largest 4294967295)");
+    EXPECT_EQ(pair_error("0,99999999999999999999999\n", every_index).reason(),
+              "field 2 (j): '99999999999999999999999' is too large for a 32-bit index "
+              "(largest 4294967295)");
+}
+
+TEST(csv_input, rejects_negative_indices) {
+    const input_error e = pair_error("# i,j\n0,-1\n");
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(), "field 2 (j): '-1' is negative; indices are 0-based and unsigned");
+}
+
+TEST(csv_input, rejects_indices_that_are_not_decimal_integers) {
+    for (const char* index : {"1.5", "+1", "0x10", "1e3", "a", "1 1", "٣"}) {
+        const input_error e = pair_error(std::string(index) + ",0\n");
+        EXPECT_EQ(e.line(), 1u) << index;
+        EXPECT_NE(e.reason().find("is not an unsigned decimal integer"), std::string::npos)
+            << e.reason();
+    }
+    EXPECT_EQ(pair_error("0,\n").reason(), "field 2 (j) is empty");
+}
+
+TEST(csv_input, rejects_indices_out_of_range_of_the_rectangle_file) {
+    const input_error e = pair_error("0,4\n4,5\n", 5);
+    EXPECT_EQ(e.file(), "P.csv");
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(), "index 5 is out of range: R.csv holds 5 rectangles (indices 0 to 4)");
+    EXPECT_EQ(pair_error("7,0\n", 5).reason(),
+              "index 7 is out of range: R.csv holds 5 rectangles (indices 0 to 4)");
+}
+
+TEST(csv_input, rejects_any_index_into_an_empty_rectangle_file) {
+    const input_error e = pair_error("\n0,0\n", 0);
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(), "index 0 refers to a rectangle, but R.csv holds none");
+    EXPECT_TRUE(pairs_of("# no pairs\n", 0).empty());
+}
+
+TEST(csv_input, reads_pairs_in_bounded_chunks) {
+    std::string text;
+    for (int i = 0; i < 10; ++i) {
+        text += std::to_string(i) + "," + std::to_string(i) + "\n";
+    }
+    text += "10,x\n";
+    line_reader lines(text, "P.csv");
+    pair_reader reader(lines, 100, "R.csv");
+    std::vector<pair_index> chunk;
+    for (int part = 0; part < 3; ++part) {
+        ASSERT_TRUE(reader.read_chunk(chunk, 3));
+        ASSERT_EQ(chunk.size(), 3u);
+        EXPECT_EQ(chunk[0].a, static_cast<std::uint32_t>(3 * part));
+    }
+    // The bad line comes after one good pair of the last chunk.
+    try {
+        reader.read_chunk(chunk, 3);
+        FAIL() << "no error";
+    } catch (const input_error& e) {
+        EXPECT_EQ(e.line(), 11u);
+    }
+    EXPECT_EQ(reader.pairs_read(), 9u);
+}
+
+TEST(csv_input, limits_the_number_of_rectangles) {
+    const std::string text = unit_rect + "\n# c\n" + unit_rect + "\n" + unit_rect + "\n" + unit_rect;
+    line_reader lines(text, "R.csv");
+    try {
+        obbsat::io::read_rects(lines, 3);
+        FAIL() << "no error";
+    } catch (const input_error& e) {
+        EXPECT_EQ(e.line(), 5u);
+        EXPECT_EQ(e.reason(), "more than 3 rectangles; pairs index rectangles with 32-bit indices");
+    }
+}
+
+TEST(csv_input, reads_files_and_names_missing_ones) {
+    char path[] = "/tmp/obbsat_csv_input_XXXXXX";
+    const int fd = mkstemp(path);
+    ASSERT_GE(fd, 0);
+    std::FILE* f = fdopen(fd, "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("0x1p0,2,3,4,5,6,7,8\r\n-1,-2,-3,-4,-5,-6,-7,-8", f);
+    std::fclose(f);
+    const rect_soa rects = obbsat::io::read_rects_file(path);
+    std::remove(path);
+    ASSERT_EQ(rects.size(), 2u);
+    EXPECT_EQ(coords(rects, 1), (std::vector<float>{-1, -2, -3, -4, -5, -6, -7, -8}));
+    try {
+        obbsat::io::read_rects_file(path);
+        FAIL() << "no error";
+    } catch (const input_error& e) {
+        EXPECT_EQ(e.line(), 0u);
+        EXPECT_EQ(std::string(e.what()), std::string(path) + ": cannot open: No such file or directory");
+    }
+}
+
+}  // namespace

@@ -1,0 +1,634 @@
+// The built obbsat program, run through the shell as a user runs it: exit
+// statuses, exact error messages, --out left untouched on error, and verdict
+// files identical for every backend this CPU runs.
+#include "csv_input.hpp"
+
+#include <obbsat/backend.hpp>
+#include <obbsat/pose.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/ref/sat4.hpp>
+#include <obbsat/scene.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#ifndef OBBSAT_CLI_PATH
+#error "OBBSAT_CLI_PATH must name the obbsat program"
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+using obbsat::backend;
+using obbsat::pair_index;
+using obbsat::point;
+using obbsat::rect;
+
+struct run_result {
+    int status;
+    std::string out;
+    std::string err;
+};
+
+std::string read_file(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream out;
+    out << in.rdbuf();
+    return out.str();
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+// A scratch directory: `work` is the program's current directory (so error
+// messages carry the short relative names the tests expect), `capture` holds
+// its stdout and stderr, outside `work` so they never count as stray files.
+class scratch {
+public:
+    scratch() {
+        char pattern[] = "/tmp/obbsat_cli_XXXXXX";
+        if (mkdtemp(pattern) == nullptr) {
+            throw std::runtime_error("mkdtemp failed");
+        }
+        root_ = pattern;
+        fs::create_directory(work());
+        fs::create_directory(root_ / "capture");
+    }
+    ~scratch() {
+        std::error_code ignored;
+        fs::remove_all(root_, ignored);
+    }
+    scratch(const scratch&) = delete;
+    scratch& operator=(const scratch&) = delete;
+
+    fs::path work() const { return root_ / "work"; }
+    fs::path file(const std::string& name) const { return work() / name; }
+
+    /// Runs `obbsat ARGS` in work(), OBBSAT_BACKEND unset unless `env` sets it.
+    run_result run(const std::string& args, const std::string& env = "",
+                   const std::string& input = "") const {
+        const fs::path out = root_ / "capture" / "stdout";
+        const fs::path err = root_ / "capture" / "stderr";
+        std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND " + env +
+                              " '" OBBSAT_CLI_PATH "' " + args + " > '" + out.string() + "' 2> '" +
+                              err.string() + "'";
+        if (!input.empty()) {
+            command += " < '" + input + "'";
+        }
+        const int raw = std::system(command.c_str());
+        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+        return run_result{status, read_file(out), read_file(err)};
+    }
+
+    /// The names in work(), sorted.
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(work())) {
+            names.push_back(e.path().filename().string());
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    fs::path root_;
+};
+
+const std::string unit_rect = "0,1,1,1,1,0,0,0\n";
+
+// ---------------------------------------------------------------------------
+// Help, version and usage errors.
+
+TEST(program, prints_its_version) {
+    const scratch s;
+    const run_result r = s.run("--version");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "obbsat " OBBSAT_VERSION "\n");
+}
+
+TEST(program, every_command_has_help_with_an_example) {
+    const scratch s;
+    for (const char* args : {"--help", "collide --help", "backends --help", "demo --help"}) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 0) << args;
+        EXPECT_NE(r.out.find("usage: obbsat"), std::string::npos) << args;
+        EXPECT_NE(r.out.find("example:\n  obbsat"), std::string::npos) << args;
+        EXPECT_EQ(r.err, "") << args;
+    }
+}
+
+TEST(program, no_command_or_an_unknown_one_is_a_usage_error) {
+    const scratch s;
+    const run_result none = s.run("");
+    EXPECT_EQ(none.status, 2);
+    EXPECT_NE(none.err.find("usage: obbsat"), std::string::npos);
+    const run_result bogus = s.run("frobnicate");
+    EXPECT_EQ(bogus.status, 2);
+    EXPECT_EQ(bogus.err, "obbsat: unknown command 'frobnicate' (see 'obbsat --help')\n");
+}
+
+TEST(program, collide_usage_errors_exit_2_with_the_reason) {
+    const scratch s;
+    write_file(s.file("R.csv"), unit_rect);
+    write_file(s.file("P.csv"), "0,0\n");
+    const std::string files = "--rects R.csv --pairs P.csv ";
+    const std::string see = " (see 'obbsat collide --help')\n";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"collide --rects R.csv", "missing required option --pairs"},
+        {"collide --pairs P.csv", "missing required option --rects"},
+        {"collide " + files + "--bogus 1", "unknown option --bogus"},
+        {"collide " + files + "extra", "unexpected argument 'extra'"},
+        {"collide " + files + "--rects R.csv", "option --rects given twice"},
+        {"collide " + files + "--out", "option --out needs a value (FILE)"},
+        {"collide " + files + "--threads x", "--threads: expected a whole number from 0 to 1024, got 'x'"},
+        {"collide " + files + "--threads -1", "--threads: expected a whole number from 0 to 1024, got '-1'"},
+        {"collide " + files + "--threads=5000",
+         "--threads: expected a whole number from 0 to 1024, got '5000'"},
+        {"collide " + files + "--backend fast",
+         "--backend: unknown backend 'fast' (expected auto, scalar, sse2, avx2 or avx512)"},
+        {"collide " + files + "--method sat5", "--method: unknown method 'sat5' (expected sat4)"},
+    };
+    for (const auto& [args, reason] : cases) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, "obbsat: collide: " + reason + see) << args;
+        EXPECT_EQ(r.out, "") << args;
+    }
+}
+
+TEST(program, demo_usage_errors_exit_2) {
+    const scratch s;
+    for (const char* args : {"demo --density thick", "demo --reps 0", "demo --rects 1",
+                             "demo --pairs 0", "demo --seed -3", "demo --turbo"}) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err.rfind("obbsat: demo: ", 0), 0u) << r.err;
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Bad input: exit 2, "obbsat: FILE:LINE: reason", --out untouched.
+
+class bad_input : public ::testing::Test {
+protected:
+    void SetUp() override {
+        write_file(s.file("v.txt"), "previous verdicts\n");
+        write_file(s.file("R.csv"), "# ulx,uly,urx,ury,lrx,lry,llx,lly\n" + unit_rect + unit_rect);
+        write_file(s.file("P.csv"), "0,1\n1,0\n");
+    }
+
+    // Runs collide with --out v.txt and checks the common promises.
+    void expect_rejected(const std::string& args, const std::string& message,
+                         const std::string& env = "") {
+        const run_result r = s.run("collide " + args + " --out v.txt", env);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, "obbsat: " + message + "\n") << args;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(read_file(s.file("v.txt")), "previous verdicts\n") << args;
+        std::vector<std::string> left = s.entries();
+        left.erase(std::remove_if(left.begin(), left.end(),
+                                  [](const std::string& n) { return n.rfind(".v.txt.tmp", 0) != 0; }),
+                   left.end());
+        EXPECT_TRUE(left.empty()) << "temporary output left behind: " << left.front();
+    }
+
+    scratch s;
+};
+
+TEST_F(bad_input, a_bad_number_names_file_line_and_field) {
+    write_file(s.file("bad.csv"), unit_rect + "\n0,abc,1,1,1,0,0,0\n");
+    expect_rejected("--rects bad.csv --pairs P.csv",
+                    "bad.csv:3: field 2 (uly): 'abc' is not a number");
+}
+
+TEST_F(bad_input, an_overflowing_or_non_finite_number_is_rejected) {
+    write_file(s.file("big.csv"), unit_rect + "0,1,1e39,1,1,0,0,0\n");
+    expect_rejected("--rects big.csv --pairs P.csv",
+                    "big.csv:2: field 3 (urx): '1e39' is out of float range (magnitude above "
+                    "3.40282347e+38)");
+    write_file(s.file("nan.csv"), "0,1,1,1,1,0,0,nan\r\n");
+    expect_rejected("--rects nan.csv --pairs P.csv", "nan.csv:1: field 8 (lly): 'nan' is not finite");
+}
+
+TEST_F(bad_input, a_wrong_field_count_is_rejected) {
+    write_file(s.file("short.csv"), "0,1,1,1,1,0,0\n");
+    expect_rejected("--rects short.csv --pairs P.csv",
+                    "short.csv:1: expected 8 comma-separated fields "
+                    "(ulx,uly,urx,ury,lrx,lry,llx,lly), found 7");
+    write_file(s.file("triple.csv"), "0,1\n0,1,1\n");
+    expect_rejected("--rects R.csv --pairs triple.csv",
+                    "triple.csv:2: expected 2 comma-separated fields (i,j), found 3");
+}
+
+TEST_F(bad_input, bad_indices_are_rejected) {
+    write_file(s.file("neg.csv"), "0,1\n-1,0\n");
+    expect_rejected("--rects R.csv --pairs neg.csv",
+                    "neg.csv:2: field 1 (i): '-1' is negative; indices are 0-based and unsigned");
+    write_file(s.file("wide.csv"), "0,4294967296\n");
+    expect_rejected("--rects R.csv --pairs wide.csv",
+                    "wide.csv:1: field 2 (j): '4294967296' is too large for a 32-bit index "
+                    "(largest 4294967295)");
+    write_file(s.file("far.csv"), "0,1\n\n1,2\n");
+    expect_rejected("--rects R.csv --pairs far.csv",
+                    "far.csv:3: index 2 is out of range: R.csv holds 2 rectangles (indices 0 to 1)");
+}
+
+TEST_F(bad_input, pairs_into_an_empty_rectangle_file_are_rejected) {
+    write_file(s.file("none.csv"), "# nothing here\n");
+    expect_rejected("--rects none.csv --pairs P.csv",
+                    "P.csv:1: index 0 refers to a rectangle, but none.csv holds none");
+}
+
+TEST_F(bad_input, a_bad_line_after_the_first_chunk_still_leaves_out_untouched) {
+    std::string many;
+    many.reserve(5'000'000);
+    for (int i = 0; i < 1'200'000; ++i) {
+        many += (i % 2 == 0) ? "0,1\n" : "1,0\n";
+    }
+    many += "1,x\n";
+    write_file(s.file("many.csv"), many);
+    expect_rejected("--rects R.csv --pairs many.csv",
+                    "many.csv:1200001: field 2 (j): 'x' is not an unsigned decimal integer");
+}
+
+TEST_F(bad_input, missing_files_and_unwritable_output_are_rejected) {
+    expect_rejected("--rects nothere.csv --pairs P.csv",
+                    "nothere.csv: cannot open: No such file or directory");
+    expect_rejected("--rects R.csv --pairs nothere.csv",
+                    "nothere.csv: cannot open: No such file or directory");
+    const run_result r = s.run("collide --rects R.csv --pairs P.csv --out nodir/v.txt");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "obbsat: nodir/v.txt: cannot create a temporary file beside it: No such "
+                     "file or directory\n");
+}
+
+TEST_F(bad_input, a_bogus_obbsat_backend_is_rejected) {
+    expect_rejected("--rects R.csv --pairs P.csv",
+                    "OBBSAT_BACKEND=bogus names no backend (expected auto, scalar, sse2, avx2 "
+                    "or avx512)",
+                    "OBBSAT_BACKEND=bogus");
+}
+
+TEST_F(bad_input, a_backend_this_cpu_lacks_is_rejected) {
+    bool tested = false;
+    for (const backend b : obbsat::compiled_backends()) {
+        if (obbsat::cpu_supports(b)) {
+            continue;
+        }
+        const std::string name = obbsat::backend_name(b);
+        expect_rejected("--rects R.csv --pairs P.csv --backend " + name,
+                        "backend " + name + " needs instructions this CPU (or its OS) does not provide");
+        expect_rejected("--rects R.csv --pairs P.csv",
+                        "OBBSAT_BACKEND=" + name + ": this CPU or build cannot run that backend",
+                        "OBBSAT_BACKEND=" + name);
+        tested = true;
+    }
+    if (!tested) {
+        GTEST_SKIP() << "this CPU runs every compiled backend";
+    }
+}
+
+// ---------------------------------------------------------------------------
+// OBBSAT_BACKEND and `obbsat backends`.
+
+TEST(backends_command, lists_every_compiled_backend_and_the_automatic_choice) {
+    const scratch s;
+    const run_result r = s.run("backends");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    for (const backend b : obbsat::compiled_backends()) {
+        char row[64];
+        std::snprintf(row, sizeof row, "\n%-8s %5u  %s\n", obbsat::backend_name(b),
+                      obbsat::backend_lanes(b), obbsat::cpu_supports(b) ? "runs" : "lacks");
+        EXPECT_NE(r.out.find(row), std::string::npos) << row << " not in\n" << r.out;
+    }
+    EXPECT_NE(r.out.find(std::string("\nauto: ") +
+                         obbsat::backend_name(obbsat::best_supported_backend()) +
+                         " (best this CPU runs)\n"),
+              std::string::npos)
+        << r.out;
+}
+
+TEST(backends_command, obbsat_backend_forces_the_scalar_backend) {
+    const scratch s;
+    const run_result r = s.run("backends", "OBBSAT_BACKEND=scalar");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.out.find("\nauto: scalar (OBBSAT_BACKEND=scalar)\n"), std::string::npos) << r.out;
+}
+
+TEST(backends_command, a_bogus_obbsat_backend_is_an_error_after_the_list) {
+    const scratch s;
+    const run_result r = s.run("backends", "OBBSAT_BACKEND=bogus");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.out.find("\nscalar "), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("auto:"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "obbsat: OBBSAT_BACKEND=bogus names no backend (expected auto, scalar, "
+                     "sse2, avx2 or avx512)\n");
+}
+
+// ---------------------------------------------------------------------------
+// Verdicts: the reference, then every backend byte for byte.
+
+// Rectangles meant to be hard: integer squares that touch along edges and at
+// corners (at the origin and at offsets where float spacing is 1/8, 2 and 4),
+// rotated rectangles near each other, far from the origin, tiny, huge enough
+// for products to overflow, and degenerate ones (points, segments).
+struct hard_input {
+    std::vector<rect> rects;
+    std::vector<pair_index> pairs;
+};
+
+rect square(float x, float y, float side, bool clockwise) {
+    const point ul{x, y + side}, ur{x + side, y + side}, lr{x + side, y}, ll{x, y};
+    // The other winding: UL, UR, LR, LL run counter-clockwise.
+    return clockwise ? rect{ul, ur, lr, ll} : rect{ll, lr, ur, ul};
+}
+
+rect scaled(const rect& r, float scale, point shift) {
+    auto f = [&](point p) { return point{p.x * scale + shift.x, p.y * scale + shift.y}; };
+    return rect{f(r.ul), f(r.ur), f(r.lr), f(r.ll)};
+}
+
+hard_input make_hard_input() {
+    hard_input in;
+    obbsat::seeded_random random(20261121);
+    auto pair = [&](std::size_t a, std::size_t b) {
+        in.pairs.push_back(pair_index{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+    };
+
+    struct grid {
+        float origin;
+        float side;
+    };
+    for (const grid g : {grid{0.0f, 1.0f}, grid{1048576.0f, 1.0f}, grid{16777216.0f, 2.0f},
+                         grid{-33554432.0f, 4.0f}}) {
+        const std::size_t first = in.rects.size();
+        constexpr int n = 6;
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                in.rects.push_back(square(g.origin + static_cast<float>(x) * g.side,
+                                          g.origin + static_cast<float>(y) * g.side, g.side,
+                                          (x + y) % 2 == 0));
+            }
+        }
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                for (int dy = -2; dy <= 2; ++dy) {
+                    for (int dx = -2; dx <= 2; ++dx) {
+                        const int u = x + dx, v = y + dy;
+                        if (u >= 0 && v >= 0 && u < n && v < n) {
+                            pair(first + static_cast<std::size_t>(y * n + x),
+                                 first + static_cast<std::size_t>(v * n + u));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    struct cluster {
+        double center;
+        double spread;
+        float scale;
+    };
+    for (const cluster c : {cluster{0.0, 8.0, 1.0f}, cluster{1.0e7, 8.0, 1.0f},
+                            cluster{-3.0e5, 6.0, 1.0f}, cluster{0.0, 8.0, 1e-30f},
+                            cluster{0.0, 8.0, 3e18f}}) {
+        const std::size_t first = in.rects.size();
+        constexpr std::size_t n = 150;
+        for (std::size_t i = 0; i < n; ++i) {
+            obbsat::pose p;
+            p.center = point{random.uniform(0.0f, 1.0f) * static_cast<float>(c.spread),
+                             random.uniform(0.0f, 1.0f) * static_cast<float>(c.spread)};
+            p.half_extents = point{random.uniform(0.5f, 3.0f), random.uniform(0.5f, 3.0f)};
+            p.angle = random.uniform(-3.2f, 3.2f);
+            if (i % 25 == 0) {
+                p.half_extents = point{0.0f, 0.0f};  // a point
+            } else if (i % 25 == 1) {
+                p.half_extents.y = 0.0f;  // a segment
+            }
+            in.rects.push_back(
+                scaled(obbsat::corners_of(p), c.scale, point{static_cast<float>(c.center),
+                                                             static_cast<float>(c.center)}));
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t k = 1; k <= 6; ++k) {
+                pair(first + i, first + (i + k * 7) % n);
+            }
+        }
+    }
+
+    for (int k = 0; k < 300; ++k) {
+        pair(random.below(in.rects.size()), random.below(in.rects.size()));
+    }
+    return in;
+}
+
+// Half the rectangles as hex floats, half in shortest-round-trip decimal, with
+// a comment, blank lines and CRLF sprinkled in: the reader must be exact for all.
+std::string rect_text(const std::vector<rect>& rects) {
+    std::string text = "# hard cases\n";
+    char line[512];
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        const rect& r = rects[i];
+        const double v[8] = {r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x, r.lr.y, r.ll.x, r.ll.y};
+        const char* format = i % 2 == 0 ? "%a,%a,%a,%a,%a,%a,%a,%a"
+                                        : "%.9g, %.9g, %.9g, %.9g, %.9g, %.9g, %.9g, %.9g";
+        std::snprintf(line, sizeof line, format, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+        text += line;
+        text += i % 5 == 0 ? "\r\n" : "\n";
+        if (i % 97 == 0) {
+            text += "\n";
+        }
+    }
+    return text;
+}
+
+std::string pair_text(const std::vector<pair_index>& pairs) {
+    std::string text;
+    for (const pair_index& p : pairs) {
+        text += std::to_string(p.a) + "," + std::to_string(p.b) + "\n";
+    }
+    return text;
+}
+
+std::string reference_verdicts(const std::vector<rect>& rects, const std::vector<pair_index>& pairs) {
+    std::string text;
+    for (const pair_index& p : pairs) {
+        text += obbsat::ref::sat4(rects[p.a], rects[p.b]) ? "1\n" : "0\n";
+    }
+    return text;
+}
+
+class verdicts : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        files_ = new scratch();
+        const hard_input in = make_hard_input();
+        write_file(files_->file("R.csv"), rect_text(in.rects));
+        write_file(files_->file("P.csv"), pair_text(in.pairs));
+        reference_ = new std::string(reference_verdicts(in.rects, in.pairs));
+    }
+    static void TearDownTestSuite() {
+        delete files_;
+        delete reference_;
+        files_ = nullptr;
+        reference_ = nullptr;
+    }
+
+    static scratch* files_;
+    static std::string* reference_;
+};
+
+scratch* verdicts::files_ = nullptr;
+std::string* verdicts::reference_ = nullptr;
+
+TEST_F(verdicts, the_hard_input_has_thousands_of_pairs_of_both_kinds) {
+    const std::size_t lines = static_cast<std::size_t>(
+        std::count(reference_->begin(), reference_->end(), '\n'));
+    EXPECT_GT(lines, 4000u);
+    const std::size_t ones = static_cast<std::size_t>(
+        std::count(reference_->begin(), reference_->end(), '1'));
+    EXPECT_GT(ones, lines / 10);
+    EXPECT_LT(ones, lines - lines / 10);
+}
+
+TEST_F(verdicts, scalar_backend_matches_the_reference_in_process) {
+    const run_result r =
+        files_->run("collide --rects R.csv --pairs P.csv --backend scalar --out v_scalar.txt");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(read_file(files_->file("v_scalar.txt")), *reference_);
+}
+
+TEST_F(verdicts, standard_output_and_stdin_give_the_same_bytes) {
+    const run_result to_stdout = files_->run("collide --rects R.csv --pairs P.csv");
+    ASSERT_EQ(to_stdout.status, 0) << to_stdout.err;
+    EXPECT_EQ(to_stdout.out, *reference_);
+    const run_result from_stdin = files_->run("collide --rects R.csv --pairs - --threads 0", "",
+                                              files_->file("P.csv").string());
+    ASSERT_EQ(from_stdin.status, 0) << from_stdin.err;
+    EXPECT_EQ(from_stdin.out, *reference_);
+}
+
+TEST_F(verdicts, obbsat_backend_scalar_and_an_explicit_backend_win_over_auto) {
+    const run_result forced =
+        files_->run("collide --rects R.csv --pairs P.csv", "OBBSAT_BACKEND=scalar");
+    ASSERT_EQ(forced.status, 0) << forced.err;
+    EXPECT_EQ(forced.out, *reference_);
+    // An explicit --backend is a request of its own; OBBSAT_BACKEND only steers auto.
+    const run_result explicit_backend =
+        files_->run("collide --rects R.csv --pairs P.csv --backend scalar", "OBBSAT_BACKEND=bogus");
+    ASSERT_EQ(explicit_backend.status, 0) << explicit_backend.err;
+    EXPECT_EQ(explicit_backend.out, *reference_);
+}
+
+TEST_F(verdicts, output_replaces_an_existing_file_on_success) {
+    write_file(files_->file("old.txt"), "stale\n");
+    const run_result r = files_->run("collide --rects R.csv --pairs P.csv --out old.txt");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(read_file(files_->file("old.txt")), *reference_);
+}
+
+TEST_F(verdicts, empty_pair_files_give_empty_output) {
+    write_file(files_->file("none.csv"), "# no pairs\n\n");
+    write_file(files_->file("empty_rects.csv"), "");
+    for (const char* rects : {"R.csv", "empty_rects.csv"}) {
+        const run_result r = files_->run(std::string("collide --rects ") + rects +
+                                         " --pairs none.csv --out empty.txt");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_TRUE(fs::exists(files_->file("empty.txt")));
+        EXPECT_EQ(read_file(files_->file("empty.txt")), "");
+    }
+}
+
+struct backend_run {
+    backend use;
+    unsigned threads;
+};
+
+// Names the parameter in test listings instead of dumping its bytes.
+void PrintTo(const backend_run& run, std::ostream* os) {
+    *os << obbsat::backend_name(run.use) << " at " << run.threads << " thread(s)";
+}
+
+std::string backend_run_name(const ::testing::TestParamInfo<backend_run>& info) {
+    return std::string(obbsat::backend_name(info.param.use)) + "_" +
+           std::to_string(info.param.threads) + "_threads";
+}
+
+class verdicts_per_backend : public verdicts, public ::testing::WithParamInterface<backend_run> {};
+
+TEST_P(verdicts_per_backend, identical_bytes_to_the_scalar_backend) {
+    const backend_run run = GetParam();
+    if (!obbsat::cpu_supports(run.use) && run.use != backend::automatic) {
+        GTEST_SKIP() << "this CPU or build lacks " << obbsat::backend_name(run.use);
+    }
+    const std::string name = obbsat::backend_name(run.use);
+    const std::string out = "v_" + name + "_" + std::to_string(run.threads) + ".txt";
+    const run_result r = files_->run("collide --rects R.csv --pairs P.csv --backend " + name +
+                                     " --threads " + std::to_string(run.threads) + " --out " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read_file(files_->file(out)), *reference_);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    every_backend, verdicts_per_backend,
+    ::testing::Values(backend_run{backend::scalar, 2}, backend_run{backend::sse2, 1},
+                      backend_run{backend::sse2, 2}, backend_run{backend::avx2, 1},
+                      backend_run{backend::avx2, 2}, backend_run{backend::avx512, 1},
+                      backend_run{backend::avx512, 2}, backend_run{backend::automatic, 2}),
+    backend_run_name);
+
+// The labelled case families, when they are beside the project: the program's
+// verdicts must be the scalar reference's on exactly the floats in the files.
+TEST(shared_cases, program_verdicts_equal_the_reference_on_every_family) {
+    const char* root = std::getenv("OBBSAT_SHARED_CASES");
+    if (root == nullptr || !fs::is_directory(root)) {
+        GTEST_SKIP() << "labelled case families not present";
+    }
+    const scratch s;
+    std::size_t families = 0;
+    for (const auto& entry : fs::directory_iterator(root)) {
+        const fs::path rects_path = entry.path() / "rects.csv";
+        const fs::path pairs_path = entry.path() / "pairs.csv";
+        if (!fs::exists(rects_path) || !fs::exists(pairs_path)) {
+            continue;
+        }
+        const obbsat::rect_soa rects = obbsat::io::read_rects_file(rects_path.string());
+        std::vector<pair_index> pairs;
+        {
+            const obbsat::io::input_file file(pairs_path.string());
+            obbsat::io::line_reader lines(file.get(), file.name());
+            obbsat::io::pair_reader reader(lines, rects.size(), rects_path.string());
+            std::vector<pair_index> chunk;
+            while (reader.read_chunk(chunk, 1 << 16)) {
+                pairs.insert(pairs.end(), chunk.begin(), chunk.end());
+            }
+        }
+        std::string want;
+        for (const pair_index& p : pairs) {
+            want += obbsat::ref::sat4(rects[p.a], rects[p.b]) ? "1\n" : "0\n";
+        }
+        const run_result r = s.run("collide --rects '" + rects_path.string() + "' --pairs '" +
+                                   pairs_path.string() + "' --threads 2");
+        ASSERT_EQ(r.status, 0) << entry.path() << ": " << r.err;
+        EXPECT_EQ(r.out, want) << entry.path();
+        ++families;
+    }
+    EXPECT_GT(families, 0u);
+}
+
+}  // namespace

@@ -7,12 +7,17 @@
 # -ffast-math is never used: it reorders arithmetic and flushes subnormals.
 set(OBBSAT_FP_FLAGS -ffp-contract=off -fno-fast-math)
 
+# The library is position independent (it may be linked into a shared
+# object); without this, GCC assumes any exported function may be interposed
+# at load time and refuses to inline the reference's small step functions.
+set(OBBSAT_CODEGEN_FLAGS -fno-semantic-interposition)
+
 function(obbsat_strict_warnings target)
   target_compile_options(${target} PRIVATE
     -Wall -Wextra -Wconversion -Wsign-conversion -Wshadow -Wpedantic)
 endfunction()
 
 function(obbsat_target_defaults target)
-  target_compile_options(${target} PRIVATE ${OBBSAT_FP_FLAGS})
+  target_compile_options(${target} PRIVATE ${OBBSAT_FP_FLAGS} ${OBBSAT_CODEGEN_FLAGS})
   obbsat_strict_warnings(${target})
 endfunction()

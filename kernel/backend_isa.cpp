@@ -21,6 +21,7 @@ const kernel_table& OBBSAT_CONCAT(OBBSAT_ISA_NAME, _kernels)() {
     static const kernel_table table = {
         {stream_batch<isa_arch, sat4_lanes>},
         {indexed_batch<isa_arch, sat4_lanes>},
+        {indexed_records_batch<isa_arch, sat4_lanes>},
     };
     return table;
 }

@@ -6,6 +6,7 @@
 
 #include "kernel_table.hpp"
 #include "lanes.hpp"
+#include "record_transpose.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -82,6 +83,40 @@ void indexed_batch(const soa_view& rects, const pair_index* pairs, std::size_t c
             sb.put(lane, rects, p.b);
         }
         const lane_mask<Arch> hit = Method<Arch>::collide(sa.load(), sb.load());
+        store_verdicts<Arch>(hit, verdicts + i, valid);
+    }
+}
+
+/// How many pairs ahead the records of a pair are prefetched: far enough to
+/// hide a DRAM access behind the work on the pairs in between.
+constexpr std::size_t prefetch_distance = 16;
+
+/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count.
+template <class Arch, template <class> class Method>
+void indexed_records_batch(const rect* records, const pair_index* pairs, std::size_t count,
+                           std::uint8_t* verdicts) {
+    constexpr std::size_t width = lanes<Arch>::size;
+    std::size_t i = 0;
+    for (; i + width <= count; i += width) {
+        const pair_index* p = pairs + i;
+        if (i + width + prefetch_distance <= count) {
+            for (std::size_t k = prefetch_distance; k < prefetch_distance + width; ++k) {
+                __builtin_prefetch(records + p[k].a);
+                __builtin_prefetch(records + p[k].b);
+            }
+        }
+        const lane_mask<Arch> hit = Method<Arch>::collide(
+            record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].a; }),
+            record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].b; }));
+        store_verdicts<Arch>(hit, verdicts + i, width);
+    }
+    if (i < count) {
+        // Partial vector: repeat the last pair in the unused lanes.
+        const std::size_t valid = count - i;
+        auto pair_at = [&](std::size_t lane) { return pairs[i + (lane < valid ? lane : valid - 1)]; };
+        const lane_mask<Arch> hit = Method<Arch>::collide(
+            record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).a; }),
+            record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).b; }));
         store_verdicts<Arch>(hit, verdicts + i, valid);
     }
 }

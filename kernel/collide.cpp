@@ -48,23 +48,23 @@ void split_over_threads(std::size_t count, unsigned threads, const Body& body) {
     });
 }
 
-void check_indices(const rect_soa& rects, const pair_index* pairs, std::size_t count) {
+void check_indices(std::size_t rect_count, const pair_index* pairs, std::size_t count) {
     // One branch-free pass finds whether any index is out of range; only then
     // is the first offender searched for, to name it.
     std::uint32_t largest = 0;
     for (std::size_t i = 0; i < count; ++i) {
         largest = std::max(largest, std::max(pairs[i].a, pairs[i].b));
     }
-    if (count == 0 || largest < rects.size()) {
+    if (count == 0 || largest < rect_count) {
         return;
     }
     for (std::size_t i = 0; i < count; ++i) {
         const pair_index& p = pairs[i];
-        const bool a_bad = p.a >= rects.size();
-        if (a_bad || p.b >= rects.size()) {
+        const bool a_bad = p.a >= rect_count;
+        if (a_bad || p.b >= rect_count) {
             throw invalid_input("pair " + std::to_string(i) + ": index " +
                                 std::to_string(a_bad ? p.a : p.b) + " is out of range (" +
-                                std::to_string(rects.size()) + " rectangles)");
+                                std::to_string(rect_count) + " rectangles)");
         }
     }
 }
@@ -74,7 +74,7 @@ void check_indices(const rect_soa& rects, const pair_index* pairs, std::size_t c
 backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
-    check_indices(rects, pairs, count);
+    check_indices(rects.size(), pairs, count);
     const detail::indexed_fn kernel =
         detail::kernels_for(ran).indexed[static_cast<unsigned>(options.test)];
     const detail::soa_view view = detail::view_of(rects);
@@ -84,16 +84,31 @@ backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_
     return ran;
 }
 
-std::vector<std::uint8_t> collide_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
-                                        const collide_options& options) {
+backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options) {
+    const backend ran = resolve_backend(options.use);
+    check_indices(rects.size(), pairs, count);
+    const detail::indexed_records_fn kernel =
+        detail::kernels_for(ran).indexed_records[static_cast<unsigned>(options.test)];
+    const rect* records = rects.data();
+    split_over_threads(count, options.threads, [&](std::size_t begin, std::size_t end) {
+        kernel(records, pairs + begin, end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+template <class Store>
+std::vector<std::uint8_t> verdicts_of(const Store& rects, const std::vector<pair_index>& pairs,
+                                      const collide_options& options) {
     std::vector<std::uint8_t> verdicts(pairs.size());
     collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), options);
     return verdicts;
 }
 
-std::vector<pair_index> colliding_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
-                                        const collide_options& options) {
-    const std::vector<std::uint8_t> verdicts = collide_pairs(rects, pairs, options);
+template <class Store>
+std::vector<pair_index> hits_of(const Store& rects, const std::vector<pair_index>& pairs,
+                                const collide_options& options) {
+    const std::vector<std::uint8_t> verdicts = verdicts_of(rects, pairs, options);
     std::vector<pair_index> hits;
     for (std::size_t i = 0; i < pairs.size(); ++i) {
         if (verdicts[i] != 0) {
@@ -101,6 +116,26 @@ std::vector<pair_index> colliding_pairs(const rect_soa& rects, const std::vector
         }
     }
     return hits;
+}
+
+std::vector<std::uint8_t> collide_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    return verdicts_of(rects, pairs, options);
+}
+
+std::vector<pair_index> colliding_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    return hits_of(rects, pairs, options);
+}
+
+std::vector<std::uint8_t> collide_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    return verdicts_of(rects, pairs, options);
+}
+
+std::vector<pair_index> colliding_pairs(const rect_soa& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    return hits_of(rects, pairs, options);
 }
 
 backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdicts,

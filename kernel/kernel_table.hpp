@@ -22,9 +22,15 @@ using stream_fn = void (*)(const soa_view& a, const soa_view& b, std::size_t cou
 using indexed_fn = void (*)(const soa_view& rects, const pair_index* pairs, std::size_t count,
                             std::uint8_t* verdicts);
 
+/// verdicts[i] = method(records[pairs[i].a], records[pairs[i].b]) for i < count,
+/// over packed 32-byte records; every index must be in range (the caller checks).
+using indexed_records_fn = void (*)(const rect* records, const pair_index* pairs, std::size_t count,
+                                    std::uint8_t* verdicts);
+
 struct kernel_table {
     stream_fn stream[method_count];
     indexed_fn indexed[method_count];
+    indexed_records_fn indexed_records[method_count];
 };
 
 const kernel_table& scalar_kernels();

@@ -37,16 +37,18 @@ struct quad_lanes {
 
 enum corner_index : unsigned { UL = 0, UR = 1, LR = 2, LL = 3 };
 
-/// The x86 SIMD min and max semantics, written out so that every backend and
-/// the scalar reference pick the same operand: u < v ? u : v, u > v ? u : v.
+/// The reference's min-pick, u < v ? u : v. On x86, xsimd::min(u, v) is one
+/// MINPS with u as the first operand, which returns exactly that (the second
+/// operand on equality, on -0 vs +0 and on NaN), so no blend is needed.
 template <class Arch>
 lanes<Arch> min_pick(const lanes<Arch>& u, const lanes<Arch>& v) {
-    return xsimd::select(u < v, u, v);
+    return xsimd::min(u, v);
 }
 
+/// The reference's max-pick, u > v ? u : v: one MAXPS, as min_pick.
 template <class Arch>
 lanes<Arch> max_pick(const lanes<Arch>& u, const lanes<Arch>& v) {
-    return xsimd::select(u > v, u, v);
+    return xsimd::max(u, v);
 }
 
 /// The lanes whose bit is set, lane 0 in bit 0.

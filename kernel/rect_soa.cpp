@@ -1,3 +1,5 @@
+#include "finite_check.hpp"
+
 #include <obbsat/error.hpp>
 #include <obbsat/rect_soa.hpp>
 
@@ -119,22 +121,14 @@ void rect_soa::push_back(const rect& r) {
 }
 
 void rect_soa::set(std::size_t index, const rect& r) {
-    if (index >= size_) {
-        throw invalid_input("rectangle " + std::to_string(index) + " is out of range (size " +
-                            std::to_string(size_) + ")");
-    }
+    detail::require_index(index, size_);
     store(index, r);
 }
 
 void rect_soa::store(std::size_t index, const rect& r) {
+    detail::require_finite(r, index);
     float values[coord_count];
     flatten(r, values);
-    for (unsigned c = 0; c < coord_count; ++c) {
-        if (!std::isfinite(values[c])) {
-            throw invalid_input("rectangle " + std::to_string(index) + ": coordinate " +
-                                coord_names[c] + " is not finite");
-        }
-    }
     for (unsigned c = 0; c < coord_count; ++c) {
         mutable_data(coord(c))[index] = values[c];
     }
@@ -156,10 +150,7 @@ rect rect_soa::operator[](std::size_t i) const {
 }
 
 rect rect_soa::at(std::size_t index) const {
-    if (index >= size_) {
-        throw invalid_input("rectangle " + std::to_string(index) + " is out of range (size " +
-                            std::to_string(size_) + ")");
-    }
+    detail::require_index(index, size_);
     return (*this)[index];
 }
 

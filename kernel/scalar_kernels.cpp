@@ -24,12 +24,21 @@ void indexed_pairs(const soa_view& rects, const pair_index* pairs, std::size_t c
     }
 }
 
+template <reference_fn Reference>
+void indexed_records(const rect* records, const pair_index* pairs, std::size_t count,
+                     std::uint8_t* verdicts) {
+    for (std::size_t i = 0; i < count; ++i) {
+        verdicts[i] = Reference(records[pairs[i].a], records[pairs[i].b]) ? 1 : 0;
+    }
+}
+
 }  // namespace
 
 const kernel_table& scalar_kernels() {
     static const kernel_table table = {
         {stream_pairs<ref::sat4>},
         {indexed_pairs<ref::sat4>},
+        {indexed_records<ref::sat4>},
     };
     return table;
 }

@@ -9,6 +9,7 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 
 #include <cstddef>
@@ -23,6 +24,25 @@ struct collide_options {
     unsigned threads = 1;                 ///< cores to split one batch over; 0 means all
 };
 
+/// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0,
+/// for i < count, over packed records (the fast store for pair lists); returns
+/// the backend that ran. Throws invalid_input naming the first pair with an
+/// index >= rects.size(), unsupported_backend for a backend this CPU cannot
+/// run; nothing is written then.
+backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options = {});
+
+/// The verdicts of collide_pairs over packed records, one byte (0 or 1) per pair.
+std::vector<std::uint8_t> collide_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options = {});
+
+/// The pairs of `pairs` that collide, in their input order.
+std::vector<pair_index> colliding_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options = {});
+
+/// The same over a structure-of-arrays store: each lane gathers its corners
+/// from eight arrays (eight cache lines per rectangle), so prefer rect_records
+/// for pair lists; verdicts are identical.
 /// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0,
 /// for i < count; returns the backend that ran. Throws invalid_input naming
 /// the first pair with an index >= rects.size(), unsupported_backend for a

@@ -8,6 +8,7 @@
 #include <obbsat/method.hpp>
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/scene.hpp>

@@ -1,0 +1,74 @@
+#include "finite_check.hpp"
+
+#include <obbsat/rect_records.hpp>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace obbsat {
+
+namespace {
+
+constexpr std::size_t huge_page = std::size_t{2} << 20;
+constexpr std::size_t huge_threshold = 2 * huge_page;
+
+std::size_t alignment_for(std::size_t bytes) { return bytes >= huge_threshold ? huge_page : 64; }
+
+}  // namespace
+
+void* allocate_record_memory(std::size_t bytes) {
+    const std::size_t alignment = alignment_for(bytes);
+    void* block = ::operator new(bytes, std::align_val_t{alignment});
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (alignment == huge_page) {
+        // Advice only: where the OS has no huge pages, nothing changes.
+        (void)madvise(block, bytes / huge_page * huge_page, MADV_HUGEPAGE);
+    }
+#endif
+    return block;
+}
+
+void release_record_memory(void* block, std::size_t bytes) noexcept {
+    ::operator delete(block, std::align_val_t{alignment_for(bytes)});
+}
+
+rect_records::rect_records(const rect* rects, std::size_t count) {
+    records_.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        push_back(rects[i]);
+    }
+}
+
+rect_records::rect_records(const std::vector<rect>& rects) : rect_records(rects.data(), rects.size()) {}
+
+rect_records rect_records::from_poses(const pose* poses, std::size_t count) {
+    rect_records out;
+    out.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        out.push_back(corners_of(poses[i]));
+    }
+    return out;
+}
+
+rect_records rect_records::from_poses(const std::vector<pose>& poses) {
+    return from_poses(poses.data(), poses.size());
+}
+
+void rect_records::push_back(const rect& r) {
+    detail::require_finite(r, records_.size());
+    records_.push_back(r);
+}
+
+void rect_records::set(std::size_t index, const rect& r) {
+    detail::require_index(index, records_.size());
+    detail::require_finite(r, index);
+    records_[index] = r;
+}
+
+const rect& rect_records::at(std::size_t index) const {
+    detail::require_index(index, records_.size());
+    return records_[index];
+}
+
+}  // namespace obbsat

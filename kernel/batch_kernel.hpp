@@ -51,9 +51,8 @@ void stream_batch(const soa_view& a, const soa_view& b, std::size_t count, std::
     constexpr std::size_t width = lanes<Arch>::size;
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
-        const lane_mask<Arch> hit =
-            Method<Arch>::collide(load_consecutive<Arch>(a, i), load_consecutive<Arch>(b, i));
-        store_verdicts<Arch>(hit, verdicts + i, width);
+        const unsigned hit = Method<Arch>::collide(load_consecutive<Arch>(a, i), load_consecutive<Arch>(b, i));
+        store_verdicts<width>(hit, verdicts + i, width);
     }
     if (i < count) {
         // Partial vector: repeat the last pair in the unused lanes.
@@ -63,8 +62,8 @@ void stream_batch(const soa_view& a, const soa_view& b, std::size_t count, std::
             sa.put(lane, a, k);
             sb.put(lane, b, k);
         }
-        const lane_mask<Arch> hit = Method<Arch>::collide(sa.load(), sb.load());
-        store_verdicts<Arch>(hit, verdicts + i, count - i);
+        const unsigned hit = Method<Arch>::collide(sa.load(), sb.load());
+        store_verdicts<width>(hit, verdicts + i, count - i);
     }
 }
 
@@ -82,8 +81,8 @@ void indexed_batch(const soa_view& rects, const pair_index* pairs, std::size_t c
             sa.put(lane, rects, p.a);
             sb.put(lane, rects, p.b);
         }
-        const lane_mask<Arch> hit = Method<Arch>::collide(sa.load(), sb.load());
-        store_verdicts<Arch>(hit, verdicts + i, valid);
+        const unsigned hit = Method<Arch>::collide(sa.load(), sb.load());
+        store_verdicts<width>(hit, verdicts + i, valid);
     }
 }
 
@@ -105,19 +104,19 @@ void indexed_records_batch(const rect* records, const pair_index* pairs, std::si
                 __builtin_prefetch(records + p[k].b);
             }
         }
-        const lane_mask<Arch> hit = Method<Arch>::collide(
+        const unsigned hit = Method<Arch>::collide(
             record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].a; }),
             record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].b; }));
-        store_verdicts<Arch>(hit, verdicts + i, width);
+        store_verdicts<width>(hit, verdicts + i, width);
     }
     if (i < count) {
         // Partial vector: repeat the last pair in the unused lanes.
         const std::size_t valid = count - i;
         auto pair_at = [&](std::size_t lane) { return pairs[i + (lane < valid ? lane : valid - 1)]; };
-        const lane_mask<Arch> hit = Method<Arch>::collide(
+        const unsigned hit = Method<Arch>::collide(
             record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).a; }),
             record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).b; }));
-        store_verdicts<Arch>(hit, verdicts + i, valid);
+        store_verdicts<width>(hit, verdicts + i, valid);
     }
 }
 

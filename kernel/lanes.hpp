@@ -26,40 +26,55 @@ template <class Arch>
 using lane_mask = xsimd::batch_bool<float, Arch>;
 
 /// The corners of one rectangle per lane, as eight coordinate vectors in
-/// rect_soa order: ulx, uly, urx, ury, lrx, lry, llx, lly.
-template <class Arch>
-struct quad_lanes {
-    lanes<Arch> c[coord_count];
+/// rect_soa order: ulx, uly, urx, ury, lrx, lry, llx, lly. Batch is an xsimd
+/// batch of float (the input) or of double (methods that compute in double).
+template <class Batch>
+struct quad {
+    Batch c[coord_count];
 
-    const lanes<Arch>& x(unsigned corner) const { return c[2 * corner]; }
-    const lanes<Arch>& y(unsigned corner) const { return c[2 * corner + 1]; }
+    const Batch& x(unsigned corner) const { return c[2 * corner]; }
+    const Batch& y(unsigned corner) const { return c[2 * corner + 1]; }
 };
+
+template <class Arch>
+using quad_lanes = quad<lanes<Arch>>;
 
 enum corner_index : unsigned { UL = 0, UR = 1, LR = 2, LL = 3 };
 
 /// The reference's min-pick, u < v ? u : v. On x86, xsimd::min(u, v) is one
-/// MINPS with u as the first operand, which returns exactly that (the second
-/// operand on equality, on -0 vs +0 and on NaN), so no blend is needed.
-template <class Arch>
-lanes<Arch> min_pick(const lanes<Arch>& u, const lanes<Arch>& v) {
+/// MINPS (MINPD) with u as the first operand, which returns exactly that (the
+/// second operand on equality, on -0 vs +0 and on NaN), so no blend is needed.
+template <class Batch>
+Batch min_pick(const Batch& u, const Batch& v) {
     return xsimd::min(u, v);
 }
 
-/// The reference's max-pick, u > v ? u : v: one MAXPS, as min_pick.
-template <class Arch>
-lanes<Arch> max_pick(const lanes<Arch>& u, const lanes<Arch>& v) {
+/// The reference's max-pick, u > v ? u : v: one MAXPS (MAXPD), as min_pick.
+template <class Batch>
+Batch max_pick(const Batch& u, const Batch& v) {
     return xsimd::max(u, v);
 }
 
-/// The lanes whose bit is set, lane 0 in bit 0.
-template <class Arch>
-unsigned lane_bits(const lane_mask<Arch>& mask) {
+/// The lanes whose mask is set, lane 0 in bit 0, for float or double masks.
+template <class T, class Arch>
+unsigned lane_bits(const xsimd::batch_bool<T, Arch>& mask) {
+    constexpr bool is_float = std::is_same<T, float>::value;
     if constexpr (std::is_base_of<xsimd::avx512f, Arch>::value) {
         return static_cast<unsigned>(mask.data);
     } else if constexpr (std::is_base_of<xsimd::avx, Arch>::value) {
-        return static_cast<unsigned>(_mm256_movemask_ps(mask));
+#ifdef __AVX__
+        if constexpr (is_float) {
+            return static_cast<unsigned>(_mm256_movemask_ps(mask));
+        } else {
+            return static_cast<unsigned>(_mm256_movemask_pd(mask));
+        }
+#endif
     } else {
-        return static_cast<unsigned>(_mm_movemask_ps(mask));
+        if constexpr (is_float) {
+            return static_cast<unsigned>(_mm_movemask_ps(mask));
+        } else {
+            return static_cast<unsigned>(_mm_movemask_pd(mask));
+        }
     }
 }
 
@@ -70,13 +85,11 @@ inline std::uint64_t spread_bits_to_bytes(unsigned bits) {
     return ((isolated + 0x7f7f7f7f7f7f7f7full) >> 7) & 0x0101010101010101ull;
 }
 
-/// Writes `count` (at most the lane count) verdict bytes from a lane mask.
-template <class Arch>
-void store_verdicts(const lane_mask<Arch>& mask, std::uint8_t* out, std::size_t count) {
-    constexpr std::size_t width = lanes<Arch>::size;
-    unsigned bits = lane_bits<Arch>(mask);
-    std::uint8_t bytes[width < 8 ? 8 : width];
-    for (std::size_t k = 0; k < width; k += 8) {
+/// Writes `count` (at most `Width`) verdict bytes, byte i from bit i of `bits`.
+template <std::size_t Width>
+void store_verdicts(unsigned bits, std::uint8_t* out, std::size_t count) {
+    std::uint8_t bytes[Width < 8 ? 8 : Width];
+    for (std::size_t k = 0; k < Width; k += 8) {
         const std::uint64_t word = spread_bits_to_bytes(bits >> k);
         std::memcpy(bytes + k, &word, 8);
     }

@@ -11,6 +11,8 @@ struct method_entry {
 
 const method_entry methods[method_count] = {
     {method::sat4, "sat4"},
+    {method::sat4_centered, "sat4_centered"},
+    {method::sat4_double, "sat4_double"},
 };
 
 }  // namespace

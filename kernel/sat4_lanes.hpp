@@ -1,6 +1,7 @@
-// Method sat4 on one pair per lane: the same IEEE operations, in the same
-// order, as obbsat::ref::sat4 (scalar_ref/include/obbsat/ref/sat4.hpp states
-// the order). The scalar stops at the first separating axis; here all four
+// The article's test on one pair per lane: the same IEEE operations, in the
+// same order, as the scalar reference (scalar_ref/include/obbsat/ref/sat4.hpp
+// states the order), over a batch of float (sat4, sat4_centered) or of double
+// (sat4_double). The scalar stops at the first separating axis; here all four
 // axes are evaluated and their verdicts combined, which gives the same answer.
 #pragma once
 
@@ -9,41 +10,45 @@
 namespace obbsat::detail {
 namespace {
 
-template <class Arch>
-struct sat4_lanes {
+template <class Batch>
+struct sat4_steps {
+    using mask = typename Batch::batch_bool_type;
+
     /// min and max of the four corner scalars (x * ax) + (y * ay), folded UL, UR, LR, LL.
-    static void project(const quad_lanes<Arch>& q, const lanes<Arch>& ax, const lanes<Arch>& ay,
-                        lanes<Arch>& lo, lanes<Arch>& hi) {
-        lanes<Arch> s[4];
+    static void project(const quad<Batch>& q, const Batch& ax, const Batch& ay, Batch& lo, Batch& hi) {
+        Batch s[4];
         for (unsigned k = 0; k < 4; ++k) {
-            const lanes<Arch> along_x = q.x(k) * ax;
-            const lanes<Arch> along_y = q.y(k) * ay;
+            const Batch along_x = q.x(k) * ax;
+            const Batch along_y = q.y(k) * ay;
             s[k] = along_x + along_y;
         }
-        lo = min_pick<Arch>(min_pick<Arch>(min_pick<Arch>(s[UL], s[UR]), s[LR]), s[LL]);
-        hi = max_pick<Arch>(max_pick<Arch>(max_pick<Arch>(s[UL], s[UR]), s[LR]), s[LL]);
+        lo = min_pick(min_pick(min_pick(s[UL], s[UR]), s[LR]), s[LL]);
+        hi = max_pick(max_pick(max_pick(s[UL], s[UR]), s[LR]), s[LL]);
     }
 
     /// Overlap on the axis (ax, ay): minB <= maxA and maxB >= minA.
-    static lane_mask<Arch> overlap_on(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b,
-                                      const lanes<Arch>& ax, const lanes<Arch>& ay) {
-        lanes<Arch> min_a, max_a, min_b, max_b;
+    static mask overlap_on(const quad<Batch>& a, const quad<Batch>& b, const Batch& ax, const Batch& ay) {
+        Batch min_a, max_a, min_b, max_b;
         project(a, ax, ay, min_a, max_a);
         project(b, ax, ay, min_b, max_b);
         return (min_b <= max_a) & (max_b >= min_a);
     }
 
-    static lane_mask<Arch> collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static mask collide(const quad<Batch>& a, const quad<Batch>& b) {
         // The article's axes: A.UR - A.UL, A.UR - A.LR, B.UL - B.LL, B.UL - B.UR.
-        const lane_mask<Arch> on1 =
-            overlap_on(a, b, a.x(UR) - a.x(UL), a.y(UR) - a.y(UL));
-        const lane_mask<Arch> on2 =
-            overlap_on(a, b, a.x(UR) - a.x(LR), a.y(UR) - a.y(LR));
-        const lane_mask<Arch> on3 =
-            overlap_on(a, b, b.x(UL) - b.x(LL), b.y(UL) - b.y(LL));
-        const lane_mask<Arch> on4 =
-            overlap_on(a, b, b.x(UL) - b.x(UR), b.y(UL) - b.y(UR));
+        const mask on1 = overlap_on(a, b, a.x(UR) - a.x(UL), a.y(UR) - a.y(UL));
+        const mask on2 = overlap_on(a, b, a.x(UR) - a.x(LR), a.y(UR) - a.y(LR));
+        const mask on3 = overlap_on(a, b, b.x(UL) - b.x(LL), b.y(UL) - b.y(LL));
+        const mask on4 = overlap_on(a, b, b.x(UL) - b.x(UR), b.y(UL) - b.y(UR));
         return on1 & on2 & on3 & on4;
+    }
+};
+
+/// Method sat4: the steps on the float corners as given.
+template <class Arch>
+struct sat4_lanes {
+    static unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+        return lane_bits(sat4_steps<lanes<Arch>>::collide(a, b));
     }
 };
 

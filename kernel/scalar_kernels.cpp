@@ -2,6 +2,8 @@
 #include "kernel_table.hpp"
 
 #include <obbsat/ref/sat4.hpp>
+#include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
 
 namespace obbsat::detail {
 
@@ -35,10 +37,12 @@ void indexed_records(const rect* records, const pair_index* pairs, std::size_t c
 }  // namespace
 
 const kernel_table& scalar_kernels() {
+    // Rows in the order of obbsat::method.
     static const kernel_table table = {
-        {stream_pairs<ref::sat4>},
-        {indexed_pairs<ref::sat4>},
-        {indexed_records<ref::sat4>},
+        {stream_pairs<ref::sat4>, stream_pairs<ref::sat4_centered>, stream_pairs<ref::sat4_double>},
+        {indexed_pairs<ref::sat4>, indexed_pairs<ref::sat4_centered>, indexed_pairs<ref::sat4_double>},
+        {indexed_records<ref::sat4>, indexed_records<ref::sat4_centered>,
+         indexed_records<ref::sat4_double>},
     };
     return table;
 }

@@ -1,32 +1,35 @@
+#include "sat4_steps.hpp"
+
 #include <obbsat/ref/sat4.hpp>
 
 namespace obbsat::ref {
 
+namespace {
+
+steps::vec2<float> as_vec(point p) { return steps::vec2<float>{p.x, p.y}; }
+point as_point(steps::vec2<float> v) { return point{v.x, v.y}; }
+
+}  // namespace
+
 point axis_between(point from, point to) {
-    return point{to.x - from.x, to.y - from.y};
+    return as_point(steps::axis_between(as_vec(from), as_vec(to)));
 }
 
 float scalar_on_axis(point corner, point axis) {
-    const float along_x = corner.x * axis.x;
-    const float along_y = corner.y * axis.y;
-    return along_x + along_y;
+    return steps::scalar_on_axis(as_vec(corner), as_vec(axis));
 }
 
-float min_pick(float u, float v) { return (u < v) ? u : v; }
+float min_pick(float u, float v) { return steps::min_pick(u, v); }
 
-float max_pick(float u, float v) { return (u > v) ? u : v; }
+float max_pick(float u, float v) { return steps::max_pick(u, v); }
 
 extent project_rect(const rect& r, point axis) {
-    const float ul = scalar_on_axis(r.ul, axis);
-    const float ur = scalar_on_axis(r.ur, axis);
-    const float lr = scalar_on_axis(r.lr, axis);
-    const float ll = scalar_on_axis(r.ll, axis);
-    return extent{min_pick(min_pick(min_pick(ul, ur), lr), ll),
-                  max_pick(max_pick(max_pick(ul, ur), lr), ll)};
+    const steps::extent<float> e = steps::project(steps::quad<float>(r), as_vec(axis));
+    return extent{e.min, e.max};
 }
 
 bool extents_overlap(extent a, extent b) {
-    return b.min <= a.max && b.max >= a.min;
+    return steps::overlap(steps::extent<float>{a.min, a.max}, steps::extent<float>{b.min, b.max});
 }
 
 void sat4_axes(const rect& a, const rect& b, point axes[4]) {
@@ -37,15 +40,7 @@ void sat4_axes(const rect& a, const rect& b, point axes[4]) {
 }
 
 bool sat4(const rect& a, const rect& b) {
-    point axes[4];
-    sat4_axes(a, b, axes);
-    for (const point& axis : axes) {
-        // One axis without overlap separates the rectangles: stop there.
-        if (!extents_overlap(project_rect(a, axis), project_rect(b, axis))) {
-            return false;
-        }
-    }
-    return true;
+    return steps::collide(steps::quad<float>(a), steps::quad<float>(b));
 }
 
 }  // namespace obbsat::ref

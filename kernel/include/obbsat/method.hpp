@@ -9,11 +9,13 @@
 namespace obbsat {
 
 enum class method {
-    sat4,  ///< the article's separating axis test in float32, world coordinates
+    sat4,           ///< the article's separating axis test in float32, world coordinates
+    sat4_centered,  ///< sat4 after moving the origin to A.UL: precision independent of position
+    sat4_double,    ///< sat4's steps in double arithmetic on the float input
 };
 
 /// The number of methods, for tables indexed by method.
-inline constexpr unsigned method_count = 1;
+inline constexpr unsigned method_count = 3;
 
 /// The name of a method, as the CLI spells it.
 const char* method_name(method m);

@@ -11,4 +11,6 @@
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 #include <obbsat/ref/sat4.hpp>
+#include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
 #include <obbsat/scene.hpp>

@@ -1,0 +1,30 @@
+// Method sat4_centered on one pair per lane: every corner of A and B moved by
+// -A.UL (one float subtraction per coordinate), then sat4's steps, exactly as
+// scalar_ref/include/obbsat/ref/sat4_centered.hpp defines it.
+#pragma once
+
+#include "sat4_lanes.hpp"
+
+namespace obbsat::detail {
+namespace {
+
+template <class Arch>
+struct sat4_centered_lanes {
+    static quad_lanes<Arch> moved(const quad_lanes<Arch>& q, const lanes<Arch>& ox, const lanes<Arch>& oy) {
+        quad_lanes<Arch> out;
+        for (unsigned k = 0; k < 4; ++k) {
+            out.c[2 * k] = q.x(k) - ox;
+            out.c[2 * k + 1] = q.y(k) - oy;
+        }
+        return out;
+    }
+
+    static unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+        const lanes<Arch> ox = a.x(UL);
+        const lanes<Arch> oy = a.y(UL);
+        return lane_bits(sat4_steps<lanes<Arch>>::collide(moved(a, ox, oy), moved(b, ox, oy)));
+    }
+};
+
+}  // namespace
+}  // namespace obbsat::detail

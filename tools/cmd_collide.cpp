@@ -1,6 +1,7 @@
 // obbsat collide: one verdict line per pair of a pair file.
 //
-// The rectangle file is read whole into a rect_soa; the pair file is streamed
+// The rectangle file is read whole into packed records (one cache line per
+// rectangle, as pairs fetch them at random); the pair file is streamed
 // a chunk at a time (parse, collide, write), so memory stays bounded however
 // many pairs there are. With --out, verdicts go to a temporary file renamed
 // over the target at the end, so a bad line anywhere leaves the target as it
@@ -153,10 +154,10 @@ int run_collide(const arguments& args) {
     const io::input_file pairs_file(pairs_path);
     verdict_writer writer(options.value("out"));
 
-    rect_soa rects;
+    rect_records rects;
     {
         io::line_reader lines(rects_file.get(), rects_file.name());
-        rects = io::read_rects(lines);
+        rects = io::read_rect_records(lines);
     }
 
     io::line_reader pair_lines(pairs_file.get(), pairs_file.name());

@@ -8,6 +8,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/rect_records.hpp>
 #include <obbsat/scene.hpp>
 
 #include <algorithm>
@@ -35,9 +36,17 @@ struct demo_settings {
 struct demo_entry {
     method test;
     std::string runner;  // a backend's name, or whatever else computes the verdicts
+    std::string store;   // how the rectangles are laid out in memory
     unsigned threads;
     std::function<void(std::uint8_t* verdicts)> run;
     bool is_reference;   // the row the others are checked and compared against
+};
+
+// The scene, with its rectangles in both stores the library takes for pair
+// lists: arrays per coordinate, and packed records (one cache line each).
+struct demo_scene {
+    scene world;
+    rect_records records;
 };
 
 struct demo_result {
@@ -90,37 +99,58 @@ demo_settings settings_from(const parsed_options& options) {
     return s;
 }
 
-// Every row the demo times, the reference of each method first.
-std::vector<demo_entry> demo_entries(const scene& world) {
-    std::vector<demo_entry> entries;
-    const std::size_t count = world.pairs.size();
-    for (const method test : all_methods()) {
-        std::vector<backend> runnable;
-        runnable.push_back(backend::scalar);
-        for (const backend b : compiled_backends()) {
-            if (b != backend::scalar && cpu_supports(b)) {
-                runnable.push_back(b);
-            }
+rect_records records_of(const rect_soa& rects) {
+    std::vector<rect> plain;
+    plain.reserve(rects.size());
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        plain.push_back(rects[i]);
+    }
+    return rect_records(plain);
+}
+
+// The backends this CPU runs: scalar first, then narrowest to widest.
+std::vector<backend> runnable_backends() {
+    std::vector<backend> runnable{backend::scalar};
+    const std::vector<backend> compiled = compiled_backends();  // best first
+    for (auto b = compiled.rbegin(); b != compiled.rend(); ++b) {
+        if (*b != backend::scalar && cpu_supports(*b)) {
+            runnable.push_back(*b);
         }
-        std::reverse(runnable.begin() + 1, runnable.end());  // narrowest first after scalar
-        for (const backend b : runnable) {
-            for (const unsigned threads : {1u, 2u}) {
-                collide_options options;
-                options.test = test;
-                options.use = b;
-                options.threads = threads;
-                entries.push_back(demo_entry{
-                    test, backend_name(b), threads,
-                    [&world, count, options](std::uint8_t* verdicts) {
-                        collide_pairs(world.rects, world.pairs.data(), count, verdicts, options);
-                    },
-                    b == backend::scalar && threads == 1});
+    }
+    return runnable;
+}
+
+// Every row the demo times, the reference of each method first.
+std::vector<demo_entry> demo_entries(const demo_scene& demo) {
+    std::vector<demo_entry> entries;
+    const std::vector<pair_index>& pairs = demo.world.pairs;
+    for (const method test : all_methods()) {
+        for (const char* store : {"soa", "records"}) {
+            const bool soa = std::strcmp(store, "soa") == 0;
+            for (const backend b : runnable_backends()) {
+                for (const unsigned threads : {1u, 2u}) {
+                    collide_options options;
+                    options.test = test;
+                    options.use = b;
+                    options.threads = threads;
+                    auto run = [&demo, &pairs, soa, options](std::uint8_t* verdicts) {
+                        if (soa) {
+                            collide_pairs(demo.world.rects, pairs.data(), pairs.size(), verdicts,
+                                          options);
+                        } else {
+                            collide_pairs(demo.records, pairs.data(), pairs.size(), verdicts,
+                                          options);
+                        }
+                    };
+                    entries.push_back(demo_entry{test, backend_name(b), store, threads, run,
+                                                 soa && b == backend::scalar && threads == 1});
+                }
             }
         }
         // ---- More rows for this method go here. --------------------------
         // A peer implementation (another library's test on the same scene) is
         // one more demo_entry with its own `runner` name and a `run` that
-        // writes one 0/1 byte per pair of world.pairs; it is then checked
+        // writes one 0/1 byte per pair of demo.world.pairs; it is then checked
         // against the reference and timed like every backend. Only add rows
         // that really run: every figure in the table is measured here.
         // -------------------------------------------------------------------
@@ -147,9 +177,10 @@ void print_mismatch(const demo_entry& entry, const scene& world,
                     std::size_t at) {
     const pair_index& p = world.pairs[at];
     std::fprintf(stderr,
-                 "obbsat: demo: %s on %s with %u thread(s) disagrees with the scalar reference at "
-                 "pair %zu (rectangles %" PRIu32 " and %" PRIu32 "): verdict %u, reference %u\n",
-                 method_name(entry.test), entry.runner.c_str(), entry.threads, at, p.a, p.b,
+                 "obbsat: demo: %s on %s (%s, %u thread(s)) disagrees with the scalar reference "
+                 "at pair %zu (rectangles %" PRIu32 " and %" PRIu32 "): verdict %u, reference %u\n",
+                 method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
+                 entry.threads, at, p.a, p.b,
                  static_cast<unsigned>(got[at]), static_cast<unsigned>(want[at]));
 }
 
@@ -160,10 +191,11 @@ void print_demo_help(std::FILE* out) {
                  "usage: obbsat demo [--rects N] [--pairs N] [--seed S] [--density D] [--reps K]\n"
                  "\n"
                  "Builds a seeded broadphase-like scene, runs method sat4 on every backend this\n"
-                 "CPU runs at 1 and 2 threads, checks every run's verdicts byte for byte against\n"
-                 "the scalar backend (exit status 1 if any differs), and prints throughput,\n"
-                 "speedup over scalar at 1 thread, the verdict digest (FNV-1a) and the share of\n"
-                 "pairs that collide.\n"
+                 "CPU runs, at 1 and 2 threads, over both rectangle stores (soa: one array per\n"
+                 "coordinate; records: one packed 32-byte record per rectangle), checks every\n"
+                 "run's verdicts byte for byte against the scalar backend over soa at 1 thread\n"
+                 "(exit status 1 if any differs), and prints throughput, speedup over that\n"
+                 "reference, the verdict digest (FNV-1a) and the share of pairs that collide.\n"
                  "\n"
                  "options:\n");
     print_options(out, demo_option_specs());
@@ -181,9 +213,12 @@ int run_demo(const arguments& args) {
     };
 
     const clock::time_point build_start = clock::now();
-    const scene world = make_scene(
+    demo_scene demo;
+    demo.world = make_scene(
         scene_spec_for(settings.density, settings.rects, settings.pairs, settings.seed));
+    demo.records = records_of(demo.world.rects);
     const double build_seconds = seconds_since(build_start);
+    const scene& world = demo.world;
     const std::size_t count = world.pairs.size();
     if (count == 0) {
         throw usage_error("the scene has no candidate pairs; give it more --rects");
@@ -194,13 +229,14 @@ int run_demo(const arguments& args) {
                 OBBSAT_VERSION, world.rects.size(), count, settings.density_name, settings.seed,
                 build_seconds);
     std::printf("each row: median of %u timed runs after one warm-up; every run checked byte for "
-                "byte against the scalar backend at 1 thread\n\n",
+                "byte against the reference,\nthe scalar backend over soa at 1 thread, which "
+                "'speedup' compares against\n\n",
                 settings.reps);
-    std::printf("%-6s  %-8s  %7s  %9s  %8s  %8s  %-16s  %9s\n", "method", "backend", "threads",
-                "Mpairs/s", "ns/pair", "speedup", "digest", "colliding");
+    std::printf("%-6s  %-8s  %-7s  %7s  %9s  %8s  %8s  %-16s  %9s\n", "method", "backend",
+                "store", "threads", "Mpairs/s", "ns/pair", "speedup", "digest", "colliding");
     std::fflush(stdout);
 
-    const std::vector<demo_entry> entries = demo_entries(world);
+    const std::vector<demo_entry> entries = demo_entries(demo);
     std::vector<std::uint8_t> reference;
     double reference_seconds = 0.0;
     std::vector<std::uint8_t> verdicts(count);
@@ -231,8 +267,9 @@ int run_demo(const arguments& args) {
             reference_seconds = result.median_seconds;
         }
         const double pairs = static_cast<double>(count);
-        std::printf("%-6s  %-8s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
-                    method_name(entry.test), entry.runner.c_str(), entry.threads,
+        std::printf("%-6s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
+                    method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
+                    entry.threads,
                     pairs / result.median_seconds / 1e6, result.median_seconds / pairs * 1e9,
                     reference_seconds / result.median_seconds, result.digest,
                     100.0 * static_cast<double>(result.colliding) / pairs);

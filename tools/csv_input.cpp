@@ -293,8 +293,11 @@ pair_index parse_pair_line(std::string_view line, const line_reader& where,
     return pair_index{a, b};
 }
 
-rect_soa read_rects(line_reader& lines, std::uint64_t max_rects) {
-    rect_soa rects;
+namespace {
+
+template <class Store>
+Store read_rects_into(line_reader& lines, std::uint64_t max_rects) {
+    Store rects;
     std::string_view line;
     while (lines.next(line)) {
         if (is_skipped_line(line)) {
@@ -307,6 +310,16 @@ rect_soa read_rects(line_reader& lines, std::uint64_t max_rects) {
         rects.push_back(parse_rect_line(line, lines));
     }
     return rects;
+}
+
+}  // namespace
+
+rect_soa read_rects(line_reader& lines, std::uint64_t max_rects) {
+    return read_rects_into<rect_soa>(lines, max_rects);
+}
+
+rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects) {
+    return read_rects_into<rect_records>(lines, max_rects);
 }
 
 rect_soa read_rects_file(const std::string& path) {

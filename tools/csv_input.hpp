@@ -16,6 +16,7 @@
 #pragma once
 
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 
 #include <cstddef>
@@ -79,6 +80,9 @@ public:
     line_reader(std::string_view text, std::string name,
                 std::size_t chunk_bytes = default_chunk_bytes,
                 std::size_t max_line_bytes = default_max_line_bytes);
+    /// A temporary string would be gone before its lines are read.
+    line_reader(std::string&& text, std::string name, std::size_t chunk_bytes = 0,
+                std::size_t max_line_bytes = 0) = delete;
 
     /// The next line without its line end, valid until the next call; false
     /// at the end of input. Throws input_error on a read error or a line
@@ -118,9 +122,13 @@ rect parse_rect_line(std::string_view line, const line_reader& where);
 pair_index parse_pair_line(std::string_view line, const line_reader& where,
                            std::uint64_t rect_count, const std::string& rect_file);
 
-/// Every rectangle of `lines`. More than `max_rects` rectangles is an error
-/// (pairs address rectangles with 32-bit indices).
+/// Every rectangle of `lines`, as arrays per coordinate. More than `max_rects`
+/// rectangles is an error (pairs address rectangles with 32-bit indices).
 rect_soa read_rects(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
+
+/// Every rectangle of `lines`, as packed records (the faster store for pair
+/// lists, see rect_records.hpp); the same checks as read_rects.
+rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
 
 /// Every rectangle of the file at `path`.
 rect_soa read_rects_file(const std::string& path);

@@ -351,6 +351,31 @@ TEST(csv_input, limits_the_number_of_rectangles) {
     }
 }
 
+TEST(csv_input, both_stores_read_the_same_rectangles) {
+    const std::string text = "# c\n0x1p-149,2,3,4,5,6,7,8\r\n\n-1,-2.5,1e30,-4,5,6,7,8";
+    line_reader soa_lines(text, "R.csv", 5);
+    const rect_soa soa = obbsat::io::read_rects(soa_lines);
+    line_reader record_lines(text, "R.csv", 5);
+    const obbsat::rect_records records = obbsat::io::read_rect_records(record_lines);
+    ASSERT_EQ(soa.size(), 2u);
+    ASSERT_EQ(records.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const rect r = records[i];
+        EXPECT_EQ(coords(soa, i), (std::vector<float>{r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x,
+                                                      r.lr.y, r.ll.x, r.ll.y}));
+    }
+    const std::string bad_text = text + "\n1,2,3,4,5,6,7,inf\n";
+    line_reader bad_lines(bad_text, "R.csv");
+    try {
+        obbsat::io::read_rect_records(bad_lines);
+        FAIL() << "no error";
+    } catch (const input_error& e) {
+        EXPECT_EQ(std::string(e.what()), "R.csv:5: field 8 (lly): 'inf' is not finite");
+    }
+    line_reader many_lines(text, "R.csv");
+    EXPECT_THROW(obbsat::io::read_rect_records(many_lines, 1), input_error);
+}
+
 TEST(csv_input, reads_files_and_names_missing_ones) {
     char path[] = "/tmp/obbsat_csv_input_XXXXXX";
     const int fd = mkstemp(path);

@@ -1,0 +1,38 @@
+// What each part of obbsat_bench registers with Google Benchmark, and the
+// counters they share. Parts that need an optional peer library are compiled
+// only when CMake found it (OBBSAT_BENCH_WITH_BOX2D, OBBSAT_BENCH_WITH_BOOST).
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <cstddef>
+#include <ostream>
+
+namespace obbsat_bench {
+
+/// collide/<method>/<mode>/<backend>/pairs:<N>/threads:<T>[/density:<d>] for
+/// every method and every backend this CPU runs; one line on `skipped` per
+/// backend it cannot run.
+void register_collide_benchmarks(std::ostream& skipped);
+
+/// peer/box2d_collide_polygons/pairs:<N> and peer/box2d_test_overlap/pairs:<N>.
+void register_box2d_peers();
+
+/// peer/boost_geometry_intersects/pairs:<N>.
+void register_boost_geometry_peers();
+
+/// Sets pairs_per_second and ns_per_pair from the real time of the run:
+/// `pairs` are decided per iteration.
+inline void set_pair_rate_counters(benchmark::State& state, std::size_t pairs) {
+    const auto per_iteration = static_cast<double>(pairs);
+    state.counters["pairs_per_second"] =
+        benchmark::Counter(per_iteration, benchmark::Counter::kIsIterationInvariantRate);
+    // Rate of (pairs * 1e-9) per second, inverted: seconds per 1e-9 pairs,
+    // which is nanoseconds per pair.
+    state.counters["ns_per_pair"] = benchmark::Counter(
+        per_iteration * 1e-9, static_cast<benchmark::Counter::Flags>(
+                                  benchmark::Counter::kIsIterationInvariantRate |
+                                  benchmark::Counter::kInvert));
+}
+
+}  // namespace obbsat_bench

@@ -1,0 +1,130 @@
+#include "bench_workload.hpp"
+
+#include <obbsat/ref/sat4.hpp>
+#include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
+
+#include <stdexcept>
+#include <utility>
+
+namespace obbsat_bench {
+
+namespace {
+
+// The generator's seed for every scene, and the shuffle's: fixed so that runs
+// on different days and machines time the same bytes.
+constexpr std::uint64_t scene_seed = 1;
+constexpr std::uint64_t shuffle_seed = 2;
+
+bool reference_collides(obbsat::method test, const obbsat::rect& a, const obbsat::rect& b) {
+    // No default: a new method must name its scalar reference here before the
+    // benchmarks can check it (the compiler warns about a missing case).
+    switch (test) {
+        case obbsat::method::sat4: return obbsat::ref::sat4(a, b);
+        case obbsat::method::sat4_centered: return obbsat::ref::sat4_centered(a, b);
+        case obbsat::method::sat4_double: return obbsat::ref::sat4_double(a, b);
+    }
+    throw std::logic_error(std::string("no scalar reference for method ") +
+                           obbsat::method_name(test));
+}
+
+std::vector<obbsat::pair_index> seeded_shuffle(std::vector<obbsat::pair_index> pairs,
+                                               std::uint64_t seed) {
+    // Our own Fisher-Yates on the library's splitmix64: std::shuffle's
+    // algorithm differs between standard libraries, this does not.
+    obbsat::seeded_random random(seed);
+    for (std::size_t i = pairs.size(); i > 1; --i) {
+        const auto j = static_cast<std::size_t>(random.below(i));
+        std::swap(pairs[i - 1], pairs[j]);
+    }
+    return pairs;
+}
+
+}  // namespace
+
+const char* density_name(obbsat::scene_density density) {
+    switch (density) {
+        case obbsat::scene_density::sparse: return "sparse";
+        case obbsat::scene_density::typical: return "typical";
+        case obbsat::scene_density::dense: return "dense";
+    }
+    return "unknown";
+}
+
+std::vector<std::uint8_t> reference_verdicts(obbsat::method test, const obbsat::rect_soa& rects,
+                                             const std::vector<obbsat::pair_index>& pairs) {
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        verdicts[i] = reference_collides(test, rects[pairs[i].a], rects[pairs[i].b]) ? 1 : 0;
+    }
+    return verdicts;
+}
+
+workload::workload(std::size_t pairs, obbsat::scene_density density)
+    : scene_(obbsat::make_scene(obbsat::scene_spec_for(density, pairs / 2, pairs, scene_seed))) {
+    if (scene_.pairs.size() != pairs) {
+        throw std::runtime_error(std::string("the ") + density_name(density) + " scene of " +
+                                 std::to_string(pairs / 2) + " rectangles has " +
+                                 std::to_string(scene_.pairs.size()) + " candidate pairs, not " +
+                                 std::to_string(pairs));
+    }
+    records_.reserve(scene_.rects.size());
+    for (std::size_t i = 0; i < scene_.rects.size(); ++i) {
+        records_.push_back(scene_.rects[i]);
+    }
+    shuffled_pairs_ = seeded_shuffle(scene_.pairs, shuffle_seed);
+}
+
+const std::vector<std::uint8_t>& workload::sorted_reference(obbsat::method test) {
+    auto found = sorted_reference_.find(test);
+    if (found == sorted_reference_.end()) {
+        found = sorted_reference_.emplace(test, reference_verdicts(test, rects(), sorted_pairs())).first;
+    }
+    return found->second;
+}
+
+const std::vector<std::uint8_t>& workload::shuffled_reference(obbsat::method test) {
+    auto found = shuffled_reference_.find(test);
+    if (found == shuffled_reference_.end()) {
+        found = shuffled_reference_.emplace(test, reference_verdicts(test, rects(), shuffled_pairs()))
+                    .first;
+    }
+    return found->second;
+}
+
+const obbsat::rect_soa& workload::stream_a() {
+    build_streams();
+    return *stream_a_;
+}
+
+const obbsat::rect_soa& workload::stream_b() {
+    build_streams();
+    return *stream_b_;
+}
+
+void workload::build_streams() {
+    if (stream_a_) {
+        return;
+    }
+    auto a = std::make_unique<obbsat::rect_soa>();
+    auto b = std::make_unique<obbsat::rect_soa>();
+    a->reserve(scene_.pairs.size());
+    b->reserve(scene_.pairs.size());
+    for (const obbsat::pair_index& p : scene_.pairs) {
+        a->push_back(scene_.rects[p.a]);
+        b->push_back(scene_.rects[p.b]);
+    }
+    stream_a_ = std::move(a);
+    stream_b_ = std::move(b);
+}
+
+workload& workload_for(std::size_t pairs, obbsat::scene_density density) {
+    static std::map<std::pair<std::size_t, obbsat::scene_density>, std::unique_ptr<workload>> cache;
+    std::unique_ptr<workload>& slot = cache[{pairs, density}];
+    if (!slot) {
+        slot = std::make_unique<workload>(pairs, density);
+    }
+    return *slot;
+}
+
+}  // namespace obbsat_bench

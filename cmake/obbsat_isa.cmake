@@ -10,7 +10,8 @@ function(obbsat_add_isa_kernel target backend arch)
   target_compile_definitions(${target} PRIVATE
     OBBSAT_ISA_ARCH=${arch} OBBSAT_ISA_NAME=${backend})
   target_compile_options(${target} PRIVATE ${flags})
-  target_link_libraries(${target} PRIVATE obbsat_ref xsimd)
+  target_link_libraries(${target} PRIVATE obbsat_ref)
+  target_include_directories(${target} SYSTEM PRIVATE ${OBBSAT_XSIMD_INCLUDE_DIRS})
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/kernel
                                                ${PROJECT_SOURCE_DIR}/kernel/include)
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)

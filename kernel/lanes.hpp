@@ -16,6 +16,11 @@
 #include <cstring>
 #include <type_traits>
 
+// The lane steps are small and called once per vector from the batch loops;
+// left to itself GCC keeps a method's collide() out of line, and every call
+// then spills sixteen vectors of corners to the stack and reloads them.
+#define OBBSAT_LANE_INLINE __attribute__((always_inline)) inline
+
 namespace obbsat::detail {
 namespace {
 

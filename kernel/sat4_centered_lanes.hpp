@@ -10,7 +10,7 @@ namespace {
 
 template <class Arch>
 struct sat4_centered_lanes {
-    static quad_lanes<Arch> moved(const quad_lanes<Arch>& q, const lanes<Arch>& ox, const lanes<Arch>& oy) {
+    static OBBSAT_LANE_INLINE quad_lanes<Arch> moved(const quad_lanes<Arch>& q, const lanes<Arch>& ox, const lanes<Arch>& oy) {
         quad_lanes<Arch> out;
         for (unsigned k = 0; k < 4; ++k) {
             out.c[2 * k] = q.x(k) - ox;
@@ -19,7 +19,7 @@ struct sat4_centered_lanes {
         return out;
     }
 
-    static unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
         const lanes<Arch> ox = a.x(UL);
         const lanes<Arch> oy = a.y(UL);
         return lane_bits(sat4_steps<lanes<Arch>>::collide(moved(a, ox, oy), moved(b, ox, oy)));

@@ -17,7 +17,7 @@ struct sat4_double_lanes {
 
     /// Lanes [0, W/2) (Upper false) or [W/2, W) (Upper true) of v, as doubles.
     template <bool Upper>
-    static wide widen(const lanes<Arch>& v) {
+    static OBBSAT_LANE_INLINE wide widen(const lanes<Arch>& v) {
         const reg r = v;
         if constexpr (half_width == 8) {
 #ifdef __AVX512DQ__
@@ -33,7 +33,7 @@ struct sat4_double_lanes {
     }
 
     template <bool Upper>
-    static quad<wide> widen(const quad_lanes<Arch>& q) {
+    static OBBSAT_LANE_INLINE quad<wide> widen(const quad_lanes<Arch>& q) {
         quad<wide> out;
         for (unsigned c = 0; c < coord_count; ++c) {
             out.c[c] = widen<Upper>(q.c[c]);
@@ -41,7 +41,7 @@ struct sat4_double_lanes {
         return out;
     }
 
-    static unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
         const unsigned low = lane_bits(sat4_steps<wide>::collide(widen<false>(a), widen<false>(b)));
         const unsigned high = lane_bits(sat4_steps<wide>::collide(widen<true>(a), widen<true>(b)));
         return low | (high << half_width);

@@ -15,7 +15,7 @@ struct sat4_steps {
     using mask = typename Batch::batch_bool_type;
 
     /// min and max of the four corner scalars (x * ax) + (y * ay), folded UL, UR, LR, LL.
-    static void project(const quad<Batch>& q, const Batch& ax, const Batch& ay, Batch& lo, Batch& hi) {
+    static OBBSAT_LANE_INLINE void project(const quad<Batch>& q, const Batch& ax, const Batch& ay, Batch& lo, Batch& hi) {
         Batch s[4];
         for (unsigned k = 0; k < 4; ++k) {
             const Batch along_x = q.x(k) * ax;
@@ -27,14 +27,14 @@ struct sat4_steps {
     }
 
     /// Overlap on the axis (ax, ay): minB <= maxA and maxB >= minA.
-    static mask overlap_on(const quad<Batch>& a, const quad<Batch>& b, const Batch& ax, const Batch& ay) {
+    static OBBSAT_LANE_INLINE mask overlap_on(const quad<Batch>& a, const quad<Batch>& b, const Batch& ax, const Batch& ay) {
         Batch min_a, max_a, min_b, max_b;
         project(a, ax, ay, min_a, max_a);
         project(b, ax, ay, min_b, max_b);
         return (min_b <= max_a) & (max_b >= min_a);
     }
 
-    static mask collide(const quad<Batch>& a, const quad<Batch>& b) {
+    static OBBSAT_LANE_INLINE mask collide(const quad<Batch>& a, const quad<Batch>& b) {
         // The article's axes: A.UR - A.UL, A.UR - A.LR, B.UL - B.LL, B.UL - B.UR.
         const mask on1 = overlap_on(a, b, a.x(UR) - a.x(UL), a.y(UR) - a.y(UL));
         const mask on2 = overlap_on(a, b, a.x(UR) - a.x(LR), a.y(UR) - a.y(LR));
@@ -47,7 +47,7 @@ struct sat4_steps {
 /// Method sat4: the steps on the float corners as given.
 template <class Arch>
 struct sat4_lanes {
-    static unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
         return lane_bits(sat4_steps<lanes<Arch>>::collide(a, b));
     }
 };

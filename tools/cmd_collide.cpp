@@ -30,14 +30,25 @@ namespace {
 // negligible, small enough that 100M pairs run in a few tens of MB.
 constexpr std::size_t pairs_per_chunk = std::size_t{1} << 20;
 
+// "sat4, sat4_centered, ...": every method this build offers.
+std::string method_list() {
+    std::string known;
+    for (const method m : all_methods()) {
+        known += known.empty() ? "" : ", ";
+        known += method_name(m);
+    }
+    return known;
+}
+
 const std::vector<option_spec>& collide_option_specs() {
+    static const std::string method_help = "collision test: " + method_list() + " (default: sat4)";
     static const std::vector<option_spec> specs = {
         {"rects", "FILE", "rectangles, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line (required)"},
         {"pairs", "FILE", "pairs, one 'i,j' of 0-based rectangle indices per line; '-' is stdin (required)"},
         {"out", "FILE", "write verdicts here, all or nothing (default: standard output)"},
         {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
         {"threads", "N", "cores to split each chunk over, 0 for all (default: 1)"},
-        {"method", "NAME", "collision test (default: sat4, the only one so far)"},
+        {"method", "NAME", method_help},
         {"help", "", "show this help"},
     };
     return specs;
@@ -63,13 +74,8 @@ method method_option(const parsed_options& options) {
     }
     const auto parsed = parse_method(*name);
     if (!parsed) {
-        std::string known;
-        for (const method m : all_methods()) {
-            known += known.empty() ? "" : ", ";
-            known += method_name(m);
-        }
         throw usage_error("--method: unknown method '" + std::string(*name) + "' (expected " +
-                          known + ")");
+                          method_list() + ")");
     }
     return *parsed;
 }
@@ -113,7 +119,7 @@ private:
 void print_collide_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat collide --rects FILE --pairs FILE [--out FILE] [--backend NAME]\n"
-                 "                      [--threads N] [--method sat4]\n"
+                 "                      [--threads N] [--method NAME]\n"
                  "\n"
                  "Writes one line per pair, in pair order: 1 if the two rectangles collide\n"
                  "(touching counts), else 0.\n"

@@ -30,6 +30,7 @@ struct demo_settings {
     scene_density density = scene_density::typical;
     const char* density_name = "typical";
     unsigned reps = 7;
+    std::vector<method> methods{method::sat4};
 };
 
 // One row of the table: a way to compute the scene's verdicts.
@@ -62,6 +63,7 @@ const std::vector<option_spec>& demo_option_specs() {
         {"seed", "S", "scene seed (default: 1)"},
         {"density", "D", "sparse, typical or dense: about 5%, 30% or 80% collide (default: typical)"},
         {"reps", "K", "timed repetitions per row, after one warm-up; the median counts (default: 7)"},
+        {"method", "NAME", "a collision test, or 'all' for every one this build offers (default: sat4)"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -80,6 +82,20 @@ demo_settings settings_from(const parsed_options& options) {
     }
     if (const auto v = options.value("reps")) {
         s.reps = static_cast<unsigned>(parse_number_option("reps", *v, 1, 1000));
+    }
+    if (const auto v = options.value("method")) {
+        if (*v == "all") {
+            s.methods = all_methods();
+        } else if (const auto m = parse_method(*v)) {
+            s.methods = {*m};
+        } else {
+            std::string known;
+            for (const method each : all_methods()) {
+                known += std::string(method_name(each)) + ", ";
+            }
+            throw usage_error("--method: expected " + known + "or all, got '" + std::string(*v) +
+                              "'");
+        }
     }
     if (const auto v = options.value("density")) {
         if (*v == "sparse") {
@@ -121,10 +137,10 @@ std::vector<backend> runnable_backends() {
 }
 
 // Every row the demo times, the reference of each method first.
-std::vector<demo_entry> demo_entries(const demo_scene& demo) {
+std::vector<demo_entry> demo_entries(const demo_scene& demo, const std::vector<method>& methods) {
     std::vector<demo_entry> entries;
     const std::vector<pair_index>& pairs = demo.world.pairs;
-    for (const method test : all_methods()) {
+    for (const method test : methods) {
         for (const char* store : {"soa", "records"}) {
             const bool soa = std::strcmp(store, "soa") == 0;
             for (const backend b : runnable_backends()) {
@@ -189,20 +205,23 @@ void print_mismatch(const demo_entry& entry, const scene& world,
 void print_demo_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat demo [--rects N] [--pairs N] [--seed S] [--density D] [--reps K]\n"
+                 "                   [--method NAME|all]\n"
                  "\n"
-                 "Builds a seeded broadphase-like scene, runs method sat4 on every backend this\n"
-                 "CPU runs, at 1 and 2 threads, over both rectangle stores (soa: one array per\n"
-                 "coordinate; records: one packed 32-byte record per rectangle), checks every\n"
-                 "run's verdicts byte for byte against the scalar backend over soa at 1 thread\n"
-                 "(exit status 1 if any differs), and prints throughput, speedup over that\n"
-                 "reference, the verdict digest (FNV-1a) and the share of pairs that collide.\n"
+                 "Builds a seeded broadphase-like scene, runs method sat4 (or the --method\n"
+                 "given) on every backend this CPU runs, at 1 and 2 threads, over both rectangle\n"
+                 "stores (soa: one array per coordinate; records: one packed 32-byte record per\n"
+                 "rectangle), and checks every run's verdicts byte for byte against the same\n"
+                 "method on the scalar backend over soa at 1 thread (exit status 1 if any\n"
+                 "differs). Prints throughput, speedup over that reference, the verdict digest\n"
+                 "(FNV-1a) and the share of pairs that collide.\n"
                  "\n"
                  "options:\n");
     print_options(out, demo_option_specs());
     std::fprintf(out,
                  "\n"
                  "example:\n"
-                 "  obbsat demo --density dense --seed 7 --reps 11\n");
+                 "  obbsat demo --density dense --seed 7 --reps 11\n"
+                 "  obbsat demo --method all --rects 20000 --pairs 200000\n");
 }
 
 int run_demo(const arguments& args) {
@@ -229,14 +248,19 @@ int run_demo(const arguments& args) {
                 OBBSAT_VERSION, world.rects.size(), count, settings.density_name, settings.seed,
                 build_seconds);
     std::printf("each row: median of %u timed runs after one warm-up; every run checked byte for "
-                "byte against the reference,\nthe scalar backend over soa at 1 thread, which "
-                "'speedup' compares against\n\n",
+                "byte against the reference,\nthe same method on the scalar backend over soa at "
+                "1 thread, which 'speedup' compares against\n\n",
                 settings.reps);
-    std::printf("%-6s  %-8s  %-7s  %7s  %9s  %8s  %8s  %-16s  %9s\n", "method", "backend",
-                "store", "threads", "Mpairs/s", "ns/pair", "speedup", "digest", "colliding");
+    int method_width = static_cast<int>(std::strlen("method"));
+    for (const method m : settings.methods) {
+        method_width = std::max(method_width, static_cast<int>(std::strlen(method_name(m))));
+    }
+    std::printf("%-*s  %-8s  %-7s  %7s  %9s  %8s  %8s  %-16s  %9s\n", method_width, "method",
+                "backend", "store", "threads", "Mpairs/s", "ns/pair", "speedup", "digest",
+                "colliding");
     std::fflush(stdout);
 
-    const std::vector<demo_entry> entries = demo_entries(demo);
+    const std::vector<demo_entry> entries = demo_entries(demo, settings.methods);
     std::vector<std::uint8_t> reference;
     double reference_seconds = 0.0;
     std::vector<std::uint8_t> verdicts(count);
@@ -267,8 +291,8 @@ int run_demo(const arguments& args) {
             reference_seconds = result.median_seconds;
         }
         const double pairs = static_cast<double>(count);
-        std::printf("%-6s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
-                    method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
+        std::printf("%-*s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
+                    method_width, method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
                     entry.threads,
                     pairs / result.median_seconds / 1e6, result.median_seconds / pairs * 1e9,
                     reference_seconds / result.median_seconds, result.digest,

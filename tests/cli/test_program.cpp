@@ -4,9 +4,12 @@
 #include "csv_input.hpp"
 
 #include <obbsat/backend.hpp>
+#include <obbsat/method.hpp>
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/ref/sat4.hpp>
+#include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
 #include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -30,6 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using obbsat::backend;
+using obbsat::method;
 using obbsat::pair_index;
 using obbsat::point;
 using obbsat::rect;
@@ -107,6 +111,24 @@ private:
 
 const std::string unit_rect = "0,1,1,1,1,0,0,0\n";
 
+std::string method_list() {
+    std::string known;
+    for (const method m : obbsat::all_methods()) {
+        known += (known.empty() ? "" : ", ") + std::string(obbsat::method_name(m));
+    }
+    return known;
+}
+
+// The scalar reference of each method, from scalar_ref/, called in process.
+bool reference_collides(method m, const rect& a, const rect& b) {
+    switch (m) {
+        case method::sat4: return obbsat::ref::sat4(a, b);
+        case method::sat4_centered: return obbsat::ref::sat4_centered(a, b);
+        case method::sat4_double: return obbsat::ref::sat4_double(a, b);
+    }
+    throw std::logic_error("no reference for this method");
+}
+
 // ---------------------------------------------------------------------------
 // Help, version and usage errors.
 
@@ -157,7 +179,8 @@ TEST(program, collide_usage_errors_exit_2_with_the_reason) {
          "--threads: expected a whole number from 0 to 1024, got '5000'"},
         {"collide " + files + "--backend fast",
          "--backend: unknown backend 'fast' (expected auto, scalar, sse2, avx2 or avx512)"},
-        {"collide " + files + "--method sat5", "--method: unknown method 'sat5' (expected sat4)"},
+        {"collide " + files + "--method sat5", "--method: unknown method 'sat5' (expected " +
+                                                   method_list() + ")"},
     };
     for (const auto& [args, reason] : cases) {
         const run_result r = s.run(args);
@@ -170,7 +193,8 @@ TEST(program, collide_usage_errors_exit_2_with_the_reason) {
 TEST(program, demo_usage_errors_exit_2) {
     const scratch s;
     for (const char* args : {"demo --density thick", "demo --reps 0", "demo --rects 1",
-                             "demo --pairs 0", "demo --seed -3", "demo --turbo"}) {
+                             "demo --pairs 0", "demo --seed -3", "demo --turbo",
+                             "demo --method sat5"}) {
         const run_result r = s.run(args);
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_EQ(r.err.rfind("obbsat: demo: ", 0), 0u) << r.err;
@@ -463,10 +487,11 @@ std::string pair_text(const std::vector<pair_index>& pairs) {
     return text;
 }
 
-std::string reference_verdicts(const std::vector<rect>& rects, const std::vector<pair_index>& pairs) {
+std::string reference_verdicts(method m, const std::vector<rect>& rects,
+                               const std::vector<pair_index>& pairs) {
     std::string text;
     for (const pair_index& p : pairs) {
-        text += obbsat::ref::sat4(rects[p.a], rects[p.b]) ? "1\n" : "0\n";
+        text += reference_collides(m, rects[p.a], rects[p.b]) ? "1\n" : "0\n";
     }
     return text;
 }
@@ -478,21 +503,33 @@ protected:
         const hard_input in = make_hard_input();
         write_file(files_->file("R.csv"), rect_text(in.rects));
         write_file(files_->file("P.csv"), pair_text(in.pairs));
-        reference_ = new std::string(reference_verdicts(in.rects, in.pairs));
+        references_ = new std::vector<std::string>();
+        for (const method m : obbsat::all_methods()) {
+            references_->push_back(reference_verdicts(m, in.rects, in.pairs));
+        }
+        reference_ = &references_->front();
     }
     static void TearDownTestSuite() {
         delete files_;
-        delete reference_;
+        delete references_;
         files_ = nullptr;
+        references_ = nullptr;
         reference_ = nullptr;
     }
 
+    /// The expected verdict text of method `m`.
+    static const std::string& reference_of(method m) {
+        return (*references_)[static_cast<std::size_t>(m)];
+    }
+
     static scratch* files_;
-    static std::string* reference_;
+    static std::vector<std::string>* references_;
+    static const std::string* reference_;  // method sat4, the default
 };
 
 scratch* verdicts::files_ = nullptr;
-std::string* verdicts::reference_ = nullptr;
+std::vector<std::string>* verdicts::references_ = nullptr;
+const std::string* verdicts::reference_ = nullptr;
 
 TEST_F(verdicts, the_hard_input_has_thousands_of_pairs_of_both_kinds) {
     const std::size_t lines = static_cast<std::size_t>(
@@ -510,6 +547,24 @@ TEST_F(verdicts, scalar_backend_matches_the_reference_in_process) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     EXPECT_EQ(read_file(files_->file("v_scalar.txt")), *reference_);
+}
+
+TEST_F(verdicts, every_method_on_the_scalar_backend_matches_its_reference) {
+    for (const method m : obbsat::all_methods()) {
+        const std::string name = obbsat::method_name(m);
+        const run_result r = files_->run("collide --rects R.csv --pairs P.csv --backend scalar "
+                                         "--method " + name);
+        ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+        EXPECT_EQ(r.out, reference_of(m)) << name;
+    }
+}
+
+TEST_F(verdicts, methods_differ_on_the_hard_input) {
+    // Otherwise --method could be ignored and every test above still pass.
+    const auto& all = *references_;
+    for (std::size_t i = 1; i < all.size(); ++i) {
+        EXPECT_NE(all[i], all[0]) << obbsat::method_name(obbsat::all_methods()[i]);
+    }
 }
 
 TEST_F(verdicts, standard_output_and_stdin_give_the_same_bytes) {
@@ -555,42 +610,57 @@ TEST_F(verdicts, empty_pair_files_give_empty_output) {
 }
 
 struct backend_run {
+    method test;
     backend use;
     unsigned threads;
 };
 
 // Names the parameter in test listings instead of dumping its bytes.
 void PrintTo(const backend_run& run, std::ostream* os) {
-    *os << obbsat::backend_name(run.use) << " at " << run.threads << " thread(s)";
+    *os << obbsat::method_name(run.test) << " on " << obbsat::backend_name(run.use) << " at "
+        << run.threads << " thread(s)";
 }
 
 std::string backend_run_name(const ::testing::TestParamInfo<backend_run>& info) {
-    return std::string(obbsat::backend_name(info.param.use)) + "_" +
-           std::to_string(info.param.threads) + "_threads";
+    return std::string(obbsat::method_name(info.param.test)) + "_" +
+           obbsat::backend_name(info.param.use) + "_" + std::to_string(info.param.threads) +
+           "_threads";
+}
+
+// Every method on every backend (those this CPU lacks are skipped when run).
+std::vector<backend_run> every_backend_run() {
+    std::vector<backend_run> runs;
+    const std::pair<backend, unsigned> backends[] = {
+        {backend::scalar, 2}, {backend::sse2, 1},   {backend::sse2, 2},
+        {backend::avx2, 1},   {backend::avx2, 2},   {backend::avx512, 1},
+        {backend::avx512, 2}, {backend::automatic, 2}};
+    for (const method m : obbsat::all_methods()) {
+        for (const auto& [use, threads] : backends) {
+            runs.push_back(backend_run{m, use, threads});
+        }
+    }
+    return runs;
 }
 
 class verdicts_per_backend : public verdicts, public ::testing::WithParamInterface<backend_run> {};
 
-TEST_P(verdicts_per_backend, identical_bytes_to_the_scalar_backend) {
+TEST_P(verdicts_per_backend, identical_bytes_to_the_reference) {
     const backend_run run = GetParam();
     if (!obbsat::cpu_supports(run.use) && run.use != backend::automatic) {
         GTEST_SKIP() << "this CPU or build lacks " << obbsat::backend_name(run.use);
     }
     const std::string name = obbsat::backend_name(run.use);
-    const std::string out = "v_" + name + "_" + std::to_string(run.threads) + ".txt";
-    const run_result r = files_->run("collide --rects R.csv --pairs P.csv --backend " + name +
-                                     " --threads " + std::to_string(run.threads) + " --out " + out);
+    const std::string test = obbsat::method_name(run.test);
+    const std::string out = "v_" + test + "_" + name + "_" + std::to_string(run.threads) + ".txt";
+    const run_result r = files_->run("collide --rects R.csv --pairs P.csv --method " + test +
+                                     " --backend " + name + " --threads " +
+                                     std::to_string(run.threads) + " --out " + out);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(read_file(files_->file(out)), *reference_);
+    EXPECT_EQ(read_file(files_->file(out)), reference_of(run.test));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    every_backend, verdicts_per_backend,
-    ::testing::Values(backend_run{backend::scalar, 2}, backend_run{backend::sse2, 1},
-                      backend_run{backend::sse2, 2}, backend_run{backend::avx2, 1},
-                      backend_run{backend::avx2, 2}, backend_run{backend::avx512, 1},
-                      backend_run{backend::avx512, 2}, backend_run{backend::automatic, 2}),
-    backend_run_name);
+INSTANTIATE_TEST_SUITE_P(every_backend, verdicts_per_backend,
+                         ::testing::ValuesIn(every_backend_run()), backend_run_name);
 
 // The labelled case families, when they are beside the project: the program's
 // verdicts must be the scalar reference's on exactly the floats in the files.

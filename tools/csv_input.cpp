@@ -254,6 +254,11 @@ bool line_reader::next(std::string_view& line) {
         if (!line.empty() && line.back() == '\r') {
             line.remove_suffix(1);
         }
+        // Spreadsheets often start a CSV file with a UTF-8 byte order mark.
+        constexpr std::string_view byte_order_mark = "\xef\xbb\xbf";
+        if (line_number_ == 0 && line.substr(0, byte_order_mark.size()) == byte_order_mark) {
+            line.remove_prefix(byte_order_mark.size());
+        }
         begin_ = resume;
         scanned_ = 0;
         ++line_number_;

@@ -2,7 +2,7 @@
 //
 // Format, shared by both files:
 //   - One record per line; a line ends at "\n" or "\r\n"; the last line may
-//     lack its line end.
+//     lack its line end. A UTF-8 byte order mark at the start is ignored.
 //   - A line that is empty or holds only blanks (space, tab) is skipped, and so
 //     is a line whose first non-blank character is '#' (a comment).
 //   - Fields are separated by ','; blanks around a field are ignored.

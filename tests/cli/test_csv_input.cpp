@@ -182,6 +182,16 @@ TEST(csv_input, reads_a_last_line_without_line_end) {
     EXPECT_EQ(pairs[1].a, 1u);
 }
 
+TEST(csv_input, ignores_a_byte_order_mark_only_at_the_start) {
+    const std::string bom = "\xef\xbb\xbf";
+    EXPECT_EQ(rects_of(bom + unit_rect + "\n").size(), 1u);
+    EXPECT_EQ(rects_of(bom + "# comment\n" + unit_rect).size(), 1u);
+    EXPECT_EQ(pairs_of(bom + "0,0\n", 1).size(), 1u);
+    const input_error e = rect_error(unit_rect + "\n" + bom + unit_rect + "\n");
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(), "field 1 (ulx): '\\xef\\xbb\\xbf0' is not a number");
+}
+
 TEST(csv_input, skips_comments_and_blank_lines_but_counts_them) {
     const std::string text = "# ulx,uly,...\n\n   \n\t# indented comment\r\n" + unit_rect +
                              "\n#" + unit_rect + "\n" + line_with(0, "x") + "\n";

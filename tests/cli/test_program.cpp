@@ -286,6 +286,15 @@ TEST_F(bad_input, a_bad_line_after_the_first_chunk_still_leaves_out_untouched) {
                     "many.csv:1200001: field 2 (j): 'x' is not an unsigned decimal integer");
 }
 
+TEST_F(bad_input, a_bad_line_on_standard_input_is_named_stdin) {
+    write_file(s.file("bad_pairs.csv"), "0,1\n1,1,1\n");
+    const run_result r = s.run("collide --rects R.csv --pairs - --out v.txt", "",
+                               s.file("bad_pairs.csv").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "obbsat: <stdin>:2: expected 2 comma-separated fields (i,j), found 3\n");
+    EXPECT_EQ(read_file(s.file("v.txt")), "previous verdicts\n");
+}
+
 TEST_F(bad_input, missing_files_and_unwritable_output_are_rejected) {
     expect_rejected("--rects nothere.csv --pairs P.csv",
                     "nothere.csv: cannot open: No such file or directory");

@@ -34,17 +34,44 @@ mode_t final_mode(const std::string& target_path) {
 
 atomic_output::atomic_output(std::string target_path) : target_path_(std::move(target_path)) {
     const std::size_t slash = target_path_.rfind('/');
-    const std::string directory =
-        slash == std::string::npos ? std::string() : target_path_.substr(0, slash + 1);
     const std::string base =
         slash == std::string::npos ? target_path_ : target_path_.substr(slash + 1);
     struct stat existing {};
-    if (base.empty() || base == "." || base == ".." ||
-        (::stat(target_path_.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode))) {
+    const bool exists = ::stat(target_path_.c_str(), &existing) == 0;
+    if (base.empty() || base == "." || base == ".." || (exists && S_ISDIR(existing.st_mode))) {
         throw output_error(target_path_ + ": is a directory, not a file name");
     }
+    if (exists && !S_ISREG(existing.st_mode)) {
+        open_direct();
+        return;
+    }
+    std::string final_path = target_path_;
+    if (exists) {
+        if (char* resolved = ::realpath(target_path_.c_str(), nullptr)) {
+            final_path = resolved;
+            std::free(resolved);
+        }
+    }
+    open_temporary(final_path);
+}
 
-    std::string pattern = directory + "." + base + ".tmp.XXXXXX";
+void atomic_output::open_direct() {
+    file_ = std::fopen(target_path_.c_str(), "wb");
+    if (file_ == nullptr) {
+        throw output_error(failure(target_path_, "cannot open", errno));
+    }
+    direct_ = true;
+}
+
+void atomic_output::open_temporary(const std::string& final_path) {
+    final_path_ = final_path;
+    const std::size_t slash = final_path_.rfind('/');
+    const std::string directory =
+        slash == std::string::npos ? std::string() : final_path_.substr(0, slash + 1);
+    const std::string base =
+        slash == std::string::npos ? final_path_ : final_path_.substr(slash + 1);
+
+    const std::string pattern = directory + "." + base + ".tmp.XXXXXX";
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     const int fd = ::mkstemp(name.data());
@@ -52,7 +79,7 @@ atomic_output::atomic_output(std::string target_path) : target_path_(std::move(t
         throw output_error(failure(target_path_, "cannot create a temporary file beside it", errno));
     }
     temp_path_ = name.data();
-    if (::fchmod(fd, final_mode(target_path_)) != 0) {
+    if (::fchmod(fd, final_mode(final_path_)) != 0) {
         const int error = errno;
         ::close(fd);
         ::unlink(temp_path_.c_str());
@@ -99,11 +126,20 @@ void atomic_output::commit() {
     if (file_ == nullptr) {
         throw output_error(target_path_ + ": committed twice");
     }
-    // Data reaches the disk before the rename makes it visible, so a crash
-    // leaves the old target or the complete new one, never a truncated file.
     if (std::fflush(file_) != 0) {
         throw output_error(failure(target_path_, "write error", errno));
     }
+    if (direct_) {
+        const int closed = std::fclose(file_);
+        file_ = nullptr;
+        if (closed != 0) {
+            throw output_error(failure(target_path_, "write error", errno));
+        }
+        committed_ = true;
+        return;
+    }
+    // Data reaches the disk before the rename makes it visible, so a crash
+    // leaves the old target or the complete new one, never a truncated file.
     if (::fsync(::fileno(file_)) != 0) {
         throw output_error(failure(target_path_, "cannot flush to disk", errno));
     }
@@ -112,7 +148,7 @@ void atomic_output::commit() {
     if (closed != 0) {
         throw output_error(failure(target_path_, "write error", errno));
     }
-    if (::rename(temp_path_.c_str(), target_path_.c_str()) != 0) {
+    if (::rename(temp_path_.c_str(), final_path_.c_str()) != 0) {
         throw output_error(failure(target_path_, "cannot replace it", errno));
     }
     temp_path_.clear();

@@ -4,6 +4,11 @@
 // rename stays within one file system and is atomic); commit() flushes it to
 // disk and renames it over the target. Until then an existing target is left
 // untouched, and if commit() is never reached the temporary file is removed.
+//
+// A target that is a symbolic link keeps the link: the file it names is
+// replaced. A target that exists but is not a regular file (a device such as
+// /dev/null, a named pipe) is written directly, since there is no file to
+// replace and renaming over it would remove the device.
 #pragma once
 
 #include <cstddef>
@@ -35,15 +40,19 @@ public:
     void commit();
 
     const std::string& target_path() const { return target_path_; }
-    /// The temporary file's path, while it exists.
+    /// The temporary file's path, while it exists; empty when writing directly.
     const std::string& temp_path() const { return temp_path_; }
 
 private:
+    void open_direct();
+    void open_temporary(const std::string& final_path);
     void discard() noexcept;
 
     std::string target_path_;
+    std::string final_path_;  // target_path_ with symbolic links resolved
     std::string temp_path_;
     std::FILE* file_ = nullptr;
+    bool direct_ = false;
     bool committed_ = false;
 };
 

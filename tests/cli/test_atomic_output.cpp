@@ -121,6 +121,30 @@ TEST_F(atomic_output_test, a_directory_is_not_a_target) {
     EXPECT_TRUE(fs::is_directory(path("sub")));
 }
 
+TEST_F(atomic_output_test, a_symbolic_link_survives_and_its_file_is_replaced) {
+    put(path("real.txt"), "old\n");
+    fs::create_symlink("real.txt", path("link.txt"));
+    {
+        atomic_output out(path("link.txt"));
+        out.write("new\n", 4);
+        out.commit();
+    }
+    EXPECT_TRUE(fs::is_symlink(path("link.txt")));
+    EXPECT_EQ(content(path("real.txt")), "new\n");
+    EXPECT_EQ(entries().size(), 2u);
+}
+
+TEST_F(atomic_output_test, a_device_is_written_directly_and_stays_a_device) {
+    ASSERT_TRUE(fs::is_character_file("/dev/null"));
+    {
+        atomic_output out("/dev/null");
+        EXPECT_EQ(out.temp_path(), "");
+        out.write("1\n", 2);
+        out.commit();
+    }
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
 TEST_F(atomic_output_test, writing_after_commit_is_an_error) {
     atomic_output out(path("v.txt"));
     out.commit();

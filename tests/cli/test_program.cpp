@@ -606,6 +606,16 @@ TEST_F(verdicts, output_replaces_an_existing_file_on_success) {
     EXPECT_EQ(read_file(files_->file("old.txt")), *reference_);
 }
 
+TEST_F(verdicts, output_to_a_device_goes_straight_to_it) {
+    const run_result r = files_->run("collide --rects R.csv --pairs P.csv --out /dev/null");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));
+    const run_result to_stdout = files_->run("collide --rects R.csv --pairs P.csv --out /dev/stdout");
+    ASSERT_EQ(to_stdout.status, 0) << to_stdout.err;
+    EXPECT_EQ(to_stdout.out, *reference_);
+}
+
 TEST_F(verdicts, empty_pair_files_give_empty_output) {
     write_file(files_->file("none.csv"), "# no pairs\n\n");
     write_file(files_->file("empty_rects.csv"), "");

@@ -1,5 +1,10 @@
 // Random draws for case building, on top of seeded_random, in portable
 // arithmetic only (no log or exp: spreads over decades use powers of two).
+//
+// Callers make each draw its own statement (or an element of a braced list,
+// which is evaluated in order): the order in which a function's arguments, or
+// the operands of *, are evaluated is unspecified and differs between
+// compilers, and so would the suites.
 #pragma once
 
 #include "geometry.hpp"

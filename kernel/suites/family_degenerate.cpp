@@ -127,8 +127,9 @@ void build_degenerate(suite_builder& out, seeded_random& random) {
             vec p = boundary_point(random, a);
             if (chance(random, 0.3)) {
                 // Off the boundary by a few float steps of the coordinates.
-                const double magnitude = std::fabs(p.x) + std::fabs(p.y);
-                p = p + (binary_log_uniform(random, -24, -20) * magnitude) * random_axis(random);
+                const double distance = binary_log_uniform(random, -24, -20) * (std::fabs(p.x) + std::fabs(p.y));
+                const vec direction = random_axis(random);
+                p = p + distance * direction;
             }
             b = shape_through(random, kb, p, a);
         }

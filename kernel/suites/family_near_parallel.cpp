@@ -28,9 +28,12 @@ void build_near_parallel(suite_builder& out, seeded_random& random) {
 
         const bool tilted = chance(random, 0.7);
         // A small turn: the unit vector of parameter t turns by 2 atan(t) ~ 2t.
-        const double turn = tilted ? random_sign(random) * 0.5 * decades[random.below(3)] *
-                                         uniform(random, 1.0, 10.0)
-                                   : 0.0;
+        double turn = 0.0;
+        if (tilted) {
+            const double sign = random_sign(random);
+            const double decade = decades[random.below(3)];
+            turn = sign * 0.5 * decade * uniform(random, 1.0, 10.0);
+        }
         const vec relative_axis = unit_from_parameter(turn);
 
         const double u = uniform(random, 0.0, 1.0);
@@ -38,7 +41,8 @@ void build_near_parallel(suite_builder& out, seeded_random& random) {
         const char* gap_name = "gap0";
         if (u >= 0.2) {
             const double sign = random_sign(random);
-            gap = sign * half_h_a * decades[random.below(6)] * uniform(random, 1.0, 10.0);
+            const double decade = decades[random.below(6)];
+            gap = sign * half_h_a * decade * uniform(random, 1.0, 10.0);
             gap_name = sign > 0 ? "gap+" : "gap-";
         }
 

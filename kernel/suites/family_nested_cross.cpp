@@ -47,8 +47,10 @@ void build_nested_cross(suite_builder& out, seeded_random& random) {
             const vec inside = center + rotate(vec{uniform(random, -0.5, 0.5) * half_w,
                                                    uniform(random, -0.5, 0.5) * half_h},
                                                axis);
-            const quad b = box(inside, random_axis(random), uniform(random, 0.1, 0.7) * inner,
-                               uniform(random, 0.1, 0.7) * inner);
+            const vec inner_axis = random_axis(random);
+            const double inner_w = uniform(random, 0.1, 0.7) * inner;
+            const double inner_h = uniform(random, 0.1, 0.7) * inner;
+            const quad b = box(inside, inner_axis, inner_w, inner_h);
             out.add_two(to_rect(a), to_rect(b), kind);
         } else if (kind == "identical") {
             const rect ra = to_rect(a);

@@ -38,8 +38,10 @@ tagged_scene kissing_scene(seeded_random& random, std::size_t pairs) {
         const contact_mode mode = random_contact_mode(random);
         const gap g = random_gap(random);
         const quad& qa = out.quads[a];
-        out.quads.push_back(place_against(random, qa, mode, uniform(random, 0.5, 5.0),
-                                          uniform(random, 0.5, 5.0), g.relative * size_of(qa)));
+        const double half_width = uniform(random, 0.5, 5.0);
+        const double half_height = uniform(random, 0.5, 5.0);
+        out.quads.push_back(
+            place_against(random, qa, mode, half_width, half_height, g.relative * size_of(qa)));
         out.pairs.push_back(pair_index{a, static_cast<std::uint32_t>(out.quads.size() - 1)});
         out.tags.push_back(std::string("kiss:") + contact_mode_name(mode) + ":" + g.name);
     }

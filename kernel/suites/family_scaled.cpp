@@ -28,16 +28,20 @@ void build_scaled_groups(suite_builder& out, seeded_random& random, const scalin
     for (std::size_t group = 0; !out.full(); ++group) {
         const scaling& s = scalings[group % count];
         const vec center{uniform(random, -1.0, 1.0), uniform(random, -1.0, 1.0)};
-        const quad a = box(center, random_axis(random), uniform(random, 0.5, 2.0),
-                           uniform(random, 0.5, 2.0));
+        const vec axis = random_axis(random);
+        const double half_width = uniform(random, 0.5, 2.0);
+        const double half_height = uniform(random, 0.5, 2.0);
+        const quad a = box(center, axis, half_width, half_height);
         const vec offset{s.offset, s.offset};
         const std::uint32_t index_a = out.add_rect(to_rect(scaled(a, s.scale, offset)));
         const auto partners = integer(random, 1, 3);
         for (std::int64_t i = 0; i < partners; ++i) {
             const contact_mode mode = random_contact_mode(random);
             const gap g = random_gap(random);
-            const quad b = place_against(random, a, mode, uniform(random, 0.5, 2.0),
-                                         uniform(random, 0.5, 2.0), g.relative * size_of(a));
+            const double b_half_width = uniform(random, 0.5, 2.0);
+            const double b_half_height = uniform(random, 0.5, 2.0);
+            const quad b = place_against(random, a, mode, b_half_width, b_half_height,
+                                         g.relative * size_of(a));
             const std::uint32_t index_b = out.add_rect(to_rect(scaled(b, s.scale, offset)));
             out.add_pair(index_a, index_b,
                          std::string(s.name) + ":" + contact_mode_name(mode) + ":" + g.name);

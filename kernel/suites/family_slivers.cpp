@@ -35,10 +35,13 @@ void build_slivers(suite_builder& out, seeded_random& random) {
         const auto kind = random.below(4);
         if (kind == 0) {
             // Another sliver through a point near A's middle, at any angle.
-            const vec through = center + uniform(random, -0.5, 0.5) * half_length * axis +
-                                uniform(random, -3.0, 3.0) * half_thickness * perp(axis);
-            const quad b = box(through, random_axis(random), uniform(random, 1.0, 10.0),
-                               uniform(random, 1.0, 10.0) / aspect);
+            const double along = uniform(random, -0.5, 0.5) * half_length;
+            const double across = uniform(random, -3.0, 3.0) * half_thickness;
+            const vec b_axis = random_axis(random);
+            const double b_half_length = uniform(random, 1.0, 10.0);
+            const double b_half_thickness = uniform(random, 1.0, 10.0) / aspect;
+            const quad b = box(center + along * axis + across * perp(axis), b_axis, b_half_length,
+                               b_half_thickness);
             out.add_two(to_rect(a), to_rect(b), "cross" + suffix);
             continue;
         }
@@ -46,19 +49,24 @@ void build_slivers(suite_builder& out, seeded_random& random) {
         const double signed_gap = g.relative * 2.0 * half_thickness;
         if (kind == 1) {
             // A parallel sliver along one of A's long edges (edges 0 and 2).
-            const quad b = place_against(random, a, contact_mode::edge, uniform(random, 1.0, 10.0),
-                                         uniform(random, 1.0, 10.0) / aspect, signed_gap,
-                                         long_edge(random));
+            const double b_half_length = uniform(random, 1.0, 10.0);
+            const double b_half_thickness = uniform(random, 1.0, 10.0) / aspect;
+            const int edge = long_edge(random);
+            const quad b = place_against(random, a, contact_mode::edge, b_half_length,
+                                         b_half_thickness, signed_gap, edge);
             out.add_two(to_rect(a), to_rect(b), std::string("side:") + g.name + suffix);
         } else if (kind == 2) {
             const contact_mode mode = random_contact_mode(random);
-            const quad b = place_against(random, a, mode, uniform(random, 0.5, 5.0),
-                                         uniform(random, 0.5, 5.0), signed_gap);
+            const double b_half_width = uniform(random, 0.5, 5.0);
+            const double b_half_height = uniform(random, 0.5, 5.0);
+            const quad b = place_against(random, a, mode, b_half_width, b_half_height, signed_gap);
             out.add_two(to_rect(a), to_rect(b), std::string("rect:") + g.name + suffix);
         } else {
-            const quad b = place_against(random, a, contact_mode::corner, uniform(random, 1.0, 10.0),
-                                         uniform(random, 1.0, 10.0) / aspect, signed_gap,
-                                         long_edge(random));
+            const double b_half_length = uniform(random, 1.0, 10.0);
+            const double b_half_thickness = uniform(random, 1.0, 10.0) / aspect;
+            const int edge = long_edge(random);
+            const quad b = place_against(random, a, contact_mode::corner, b_half_length,
+                                         b_half_thickness, signed_gap, edge);
             out.add_two(to_rect(a), to_rect(b), std::string("tip:") + g.name + suffix);
         }
     }

@@ -47,8 +47,11 @@ void build_map(suite_builder& out, seeded_random& random, const map_style& style
     const vec step_y = height * perp(axis);   // one row up
     vec origin{uniform(random, -100.0, 100.0), uniform(random, -100.0, 100.0)};
     if (style.far) {
-        origin = vec{random_sign(random) * binary_log_uniform(random, 13, 19),
-                     random_sign(random) * binary_log_uniform(random, 13, 19)};
+        const double sign_x = random_sign(random);
+        const double far_x = binary_log_uniform(random, 13, 19);
+        const double sign_y = random_sign(random);
+        const double far_y = binary_log_uniform(random, 13, 19);
+        origin = vec{sign_x * far_x, sign_y * far_y};
     }
 
     // Grid points in half-tile units along the row, rounded once and shared.

@@ -1,0 +1,25 @@
+// The exact oracle over a batch of candidate pairs, split over threads. Every
+// input is checked before any pair is classified, so on an error nothing is
+// written.
+#pragma once
+
+#include <obbsat/oracle/contact.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace obbsat::oracle {
+
+/// out[i] = classify(rects[pairs[i].a], rects[pairs[i].b]) for i < pair_count, over
+/// `threads` threads (0: all cores). Throws std::out_of_range naming the first pair
+/// with an index >= rect_count, std::invalid_argument naming the first rect with a
+/// non-finite coordinate.
+void classify_pairs(const rect* rects, std::size_t rect_count, const pair_index* pairs,
+                    std::size_t pair_count, contact* out, unsigned threads = 1);
+
+/// The contacts of classify_pairs as a vector.
+std::vector<contact> classify_pairs(const std::vector<rect>& rects,
+                                    const std::vector<pair_index>& pairs, unsigned threads = 1);
+
+}  // namespace obbsat::oracle

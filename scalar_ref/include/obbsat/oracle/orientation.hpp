@@ -1,0 +1,22 @@
+// The one geometric predicate of the exact oracle: on which side of the line
+// through p and q the point r lies, decided exactly for every finite float.
+//
+// The determinant (q - p) x (r - p) of three float points can need several
+// hundred bits (a coordinate near 1e38 minus one near 1e-45), so it is first
+// evaluated in double with a rigorous error bound, and only when that bound
+// cannot fix the sign is it recomputed exactly. The result never depends on
+// which of the two paths ran.
+#pragma once
+
+#include <obbsat/rect.hpp>
+
+namespace obbsat::oracle {
+
+/// +1 if p, q, r turn counter-clockwise (r left of the line p -> q), -1 if clockwise,
+/// 0 if collinear (or two of them coincide); exact for all finite floats.
+int orientation(point p, point q, point r);
+
+/// The same sign as `orientation`, always by the exact path (for tests and diagnostics).
+int orientation_exact(point p, point q, point r);
+
+}  // namespace obbsat::oracle

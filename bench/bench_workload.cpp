@@ -1,5 +1,7 @@
 #include "bench_workload.hpp"
 
+#include <obbsat/oracle/contact.hpp>
+#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
@@ -23,6 +25,8 @@ bool reference_collides(obbsat::method test, const obbsat::rect& a, const obbsat
         case obbsat::method::sat4: return obbsat::ref::sat4(a, b);
         case obbsat::method::sat4_centered: return obbsat::ref::sat4_centered(a, b);
         case obbsat::method::sat4_double: return obbsat::ref::sat4_double(a, b);
+        case obbsat::method::conservative: return obbsat::ref::conservative(a, b);
+        case obbsat::method::exact: return obbsat::oracle::intersects(a, b);
     }
     throw std::logic_error(std::string("no scalar reference for method ") +
                            obbsat::method_name(test));

@@ -10,7 +10,7 @@ function(obbsat_add_isa_kernel target backend arch)
   target_compile_definitions(${target} PRIVATE
     OBBSAT_ISA_ARCH=${arch} OBBSAT_ISA_NAME=${backend})
   target_compile_options(${target} PRIVATE ${flags})
-  target_link_libraries(${target} PRIVATE obbsat_ref)
+  target_link_libraries(${target} PRIVATE obbsat_ref obbsat_oracle)
   target_include_directories(${target} SYSTEM PRIVATE ${OBBSAT_XSIMD_INCLUDE_DIRS})
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/kernel
                                                ${PROJECT_SOURCE_DIR}/kernel/include)

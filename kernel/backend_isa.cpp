@@ -3,6 +3,7 @@
 // xsimd architecture and OBBSAT_ISA_NAME to the backend's name, and with that
 // ISA's compiler flags; it defines <name>_kernels().
 #include "batch_kernel.hpp"
+#include "certified_lanes.hpp"
 #include "kernel_table.hpp"
 #include "sat4_centered_lanes.hpp"
 #include "sat4_double_lanes.hpp"
@@ -23,11 +24,14 @@ const kernel_table& OBBSAT_CONCAT(OBBSAT_ISA_NAME, _kernels)() {
     // Rows in the order of obbsat::method.
     static const kernel_table table = {
         {stream_batch<isa_arch, sat4_lanes>, stream_batch<isa_arch, sat4_centered_lanes>,
-         stream_batch<isa_arch, sat4_double_lanes>},
+         stream_batch<isa_arch, sat4_double_lanes>, stream_batch<isa_arch, conservative_lanes>,
+         stream_batch<isa_arch, exact_lanes>},
         {indexed_batch<isa_arch, sat4_lanes>, indexed_batch<isa_arch, sat4_centered_lanes>,
-         indexed_batch<isa_arch, sat4_double_lanes>},
+         indexed_batch<isa_arch, sat4_double_lanes>, indexed_batch<isa_arch, conservative_lanes>,
+         indexed_batch<isa_arch, exact_lanes>},
         {indexed_records_batch<isa_arch, sat4_lanes>, indexed_records_batch<isa_arch, sat4_centered_lanes>,
-         indexed_records_batch<isa_arch, sat4_double_lanes>},
+         indexed_records_batch<isa_arch, sat4_double_lanes>, indexed_records_batch<isa_arch, conservative_lanes>,
+         indexed_records_batch<isa_arch, exact_lanes>},
     };
     return table;
 }

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace obbsat::detail {
 namespace {
@@ -45,14 +46,41 @@ struct staged_quads {
     }
 };
 
-/// verdicts[i] = Method(a[i], b[i]) for i < count.
+/// Stores one vector's verdicts (the first `valid` lanes); lanes the fast
+/// path left undecided are settled one by one with rect_at(lane) giving the
+/// lane's two rectangles. Returns how many lanes were settled that way.
+template <std::size_t Width, template <class> class Method, class Arch, class RectsAt>
+OBBSAT_LANE_INLINE std::size_t finish_vector(const lane_verdicts& v, std::uint8_t* out, std::size_t valid,
+                                             const RectsAt& rects_at) {
+    store_verdicts<Width>(v.hit, out, valid);
+    if constexpr (Method<Arch>::has_slow_path) {
+        std::size_t settled = 0;
+        for (unsigned unsure = v.unsure; unsure != 0; unsure &= unsure - 1) {
+            const std::size_t lane = static_cast<std::size_t>(__builtin_ctz(unsure));
+            if (lane < valid) {
+                const auto ab = rects_at(lane);
+                out[lane] = Method<Arch>::decide_exactly(ab.first, ab.second) ? 1 : 0;
+                ++settled;
+            }
+        }
+        return settled;
+    } else {
+        (void)rects_at;
+        return 0;
+    }
+}
+
+/// verdicts[i] = Method(a[i], b[i]) for i < count; returns the lanes settled exactly.
 template <class Arch, template <class> class Method>
-void stream_batch(const soa_view& a, const soa_view& b, std::size_t count, std::uint8_t* verdicts) {
+std::size_t stream_batch(const soa_view& a, const soa_view& b, std::size_t count, std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
+    std::size_t settled = 0;
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
-        const unsigned hit = Method<Arch>::collide(load_consecutive<Arch>(a, i), load_consecutive<Arch>(b, i));
-        store_verdicts<width>(hit, verdicts + i, width);
+        const lane_verdicts v = Method<Arch>::collide(load_consecutive<Arch>(a, i), load_consecutive<Arch>(b, i));
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, width, [&](std::size_t lane) {
+            return std::make_pair(a.at(i + lane), b.at(i + lane));
+        });
     }
     if (i < count) {
         // Partial vector: repeat the last pair in the unused lanes.
@@ -62,17 +90,22 @@ void stream_batch(const soa_view& a, const soa_view& b, std::size_t count, std::
             sa.put(lane, a, k);
             sb.put(lane, b, k);
         }
-        const unsigned hit = Method<Arch>::collide(sa.load(), sb.load());
-        store_verdicts<width>(hit, verdicts + i, count - i);
+        const lane_verdicts v = Method<Arch>::collide(sa.load(), sb.load());
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, count - i, [&](std::size_t lane) {
+            return std::make_pair(a.at(i + lane), b.at(i + lane));
+        });
     }
+    return settled;
 }
 
-/// verdicts[i] = Method(rects[pairs[i].a], rects[pairs[i].b]) for i < count.
+/// verdicts[i] = Method(rects[pairs[i].a], rects[pairs[i].b]) for i < count;
+/// returns the lanes settled exactly.
 template <class Arch, template <class> class Method>
-void indexed_batch(const soa_view& rects, const pair_index* pairs, std::size_t count,
-                   std::uint8_t* verdicts) {
+std::size_t indexed_batch(const soa_view& rects, const pair_index* pairs, std::size_t count,
+                          std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
     staged_quads<Arch> sa, sb;
+    std::size_t settled = 0;
     for (std::size_t i = 0; i < count; i += width) {
         const std::size_t valid = (count - i < width) ? count - i : width;
         for (std::size_t lane = 0; lane < width; ++lane) {
@@ -81,20 +114,26 @@ void indexed_batch(const soa_view& rects, const pair_index* pairs, std::size_t c
             sa.put(lane, rects, p.a);
             sb.put(lane, rects, p.b);
         }
-        const unsigned hit = Method<Arch>::collide(sa.load(), sb.load());
-        store_verdicts<width>(hit, verdicts + i, valid);
+        const lane_verdicts v = Method<Arch>::collide(sa.load(), sb.load());
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid, [&](std::size_t lane) {
+            return std::make_pair(rects.at(pairs[i + lane].a), rects.at(pairs[i + lane].b));
+        });
     }
+    return settled;
 }
 
 /// How many pairs ahead the records of a pair are prefetched: far enough to
 /// hide a DRAM access behind the work on the pairs in between.
 constexpr std::size_t prefetch_distance = 16;
 
-/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count.
+/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
+/// returns the lanes settled exactly.
 template <class Arch, template <class> class Method>
-void indexed_records_batch(const rect* records, const pair_index* pairs, std::size_t count,
-                           std::uint8_t* verdicts) {
+std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, std::size_t count,
+                                  std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
+    std::size_t settled = 0;
+    auto rects_of = [&](std::size_t pair) { return std::make_pair(records[pairs[pair].a], records[pairs[pair].b]); };
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
         const pair_index* p = pairs + i;
@@ -104,20 +143,23 @@ void indexed_records_batch(const rect* records, const pair_index* pairs, std::si
                 __builtin_prefetch(records + p[k].b);
             }
         }
-        const unsigned hit = Method<Arch>::collide(
+        const lane_verdicts v = Method<Arch>::collide(
             record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].a; }),
             record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].b; }));
-        store_verdicts<width>(hit, verdicts + i, width);
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, width,
+                                                      [&](std::size_t lane) { return rects_of(i + lane); });
     }
     if (i < count) {
         // Partial vector: repeat the last pair in the unused lanes.
         const std::size_t valid = count - i;
         auto pair_at = [&](std::size_t lane) { return pairs[i + (lane < valid ? lane : valid - 1)]; };
-        const unsigned hit = Method<Arch>::collide(
+        const lane_verdicts v = Method<Arch>::collide(
             record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).a; }),
             record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).b; }));
-        store_verdicts<width>(hit, verdicts + i, valid);
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
+                                                      [&](std::size_t lane) { return rects_of(i + lane); });
     }
+    return settled;
 }
 
 }  // namespace

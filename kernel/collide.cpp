@@ -29,23 +29,33 @@ std::size_t parts_for(std::size_t count, unsigned threads) {
     return std::min(wanted, useful);
 }
 
-/// Runs body(begin, end) over [0, count) split into `parts` aligned ranges.
+/// Runs body(begin, end) over [0, count) split into aligned ranges, one per
+/// part; body returns how many pairs it settled exactly, and the sum is
+/// reported through options.slow_path_pairs.
 template <class Body>
-void split_over_threads(std::size_t count, unsigned threads, const Body& body) {
-    const std::size_t parts = parts_for(count, threads);
+void split_over_threads(std::size_t count, const collide_options& options, const Body& body) {
+    const std::size_t parts = parts_for(count, options.threads);
+    std::size_t settled = 0;
     if (parts <= 1) {
-        body(std::size_t{0}, count);
-        return;
-    }
-    const std::size_t per_part =
-        (count / parts + part_alignment - 1) / part_alignment * part_alignment;
-    detail::thread_pool::shared().run(parts, [&](std::size_t part) {
-        const std::size_t begin = std::min(count, part * per_part);
-        const std::size_t end = (part + 1 == parts) ? count : std::min(count, begin + per_part);
-        if (begin < end) {
-            body(begin, end);
+        settled = body(std::size_t{0}, count);
+    } else {
+        const std::size_t per_part =
+            (count / parts + part_alignment - 1) / part_alignment * part_alignment;
+        std::vector<std::size_t> settled_per_part(parts, 0);
+        detail::thread_pool::shared().run(parts, [&](std::size_t part) {
+            const std::size_t begin = std::min(count, part * per_part);
+            const std::size_t end = (part + 1 == parts) ? count : std::min(count, begin + per_part);
+            if (begin < end) {
+                settled_per_part[part] = body(begin, end);
+            }
+        });
+        for (const std::size_t s : settled_per_part) {
+            settled += s;
         }
-    });
+    }
+    if (options.slow_path_pairs != nullptr) {
+        *options.slow_path_pairs = settled;
+    }
 }
 
 void check_indices(std::size_t rect_count, const pair_index* pairs, std::size_t count) {
@@ -78,8 +88,8 @@ backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_
     const detail::indexed_fn kernel =
         detail::kernels_for(ran).indexed[static_cast<unsigned>(options.test)];
     const detail::soa_view view = detail::view_of(rects);
-    split_over_threads(count, options.threads, [&](std::size_t begin, std::size_t end) {
-        kernel(view, pairs + begin, end - begin, verdicts + begin);
+    split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
+        return kernel(view, pairs + begin, end - begin, verdicts + begin);
     });
     return ran;
 }
@@ -91,8 +101,8 @@ backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::s
     const detail::indexed_records_fn kernel =
         detail::kernels_for(ran).indexed_records[static_cast<unsigned>(options.test)];
     const rect* records = rects.data();
-    split_over_threads(count, options.threads, [&](std::size_t begin, std::size_t end) {
-        kernel(records, pairs + begin, end - begin, verdicts + begin);
+    split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
+        return kernel(records, pairs + begin, end - begin, verdicts + begin);
     });
     return ran;
 }
@@ -149,8 +159,8 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
         detail::kernels_for(ran).stream[static_cast<unsigned>(options.test)];
     const detail::soa_view va = detail::view_of(a);
     const detail::soa_view vb = detail::view_of(b);
-    split_over_threads(a.size(), options.threads, [&](std::size_t begin, std::size_t end) {
-        kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+    split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
+        return kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
     });
     return ran;
 }

@@ -13,18 +13,21 @@
 
 namespace obbsat::detail {
 
+// Every entry returns how many pairs it decided on the method's exact slow
+// path (always 0 for methods without one).
+
 /// verdicts[i] = method(a[i], b[i]) for i < count; reads only a[0..count), b[0..count).
-using stream_fn = void (*)(const soa_view& a, const soa_view& b, std::size_t count,
+using stream_fn = std::size_t (*)(const soa_view& a, const soa_view& b, std::size_t count,
                            std::uint8_t* verdicts);
 
 /// verdicts[i] = method(rects[pairs[i].a], rects[pairs[i].b]) for i < count;
 /// every index must be < rects.size (the caller checks).
-using indexed_fn = void (*)(const soa_view& rects, const pair_index* pairs, std::size_t count,
+using indexed_fn = std::size_t (*)(const soa_view& rects, const pair_index* pairs, std::size_t count,
                             std::uint8_t* verdicts);
 
 /// verdicts[i] = method(records[pairs[i].a], records[pairs[i].b]) for i < count,
 /// over packed 32-byte records; every index must be in range (the caller checks).
-using indexed_records_fn = void (*)(const rect* records, const pair_index* pairs, std::size_t count,
+using indexed_records_fn = std::size_t (*)(const rect* records, const pair_index* pairs, std::size_t count,
                                     std::uint8_t* verdicts);
 
 struct kernel_table {

@@ -83,6 +83,14 @@ unsigned lane_bits(const xsimd::batch_bool<T, Arch>& mask) {
     }
 }
 
+/// A method's answer for one vector of pairs: lane i collides iff bit i of
+/// `hit` is set, unless bit i of `unsure` is set: then the fast path could not
+/// decide and the method's decide_exactly settles that lane.
+struct lane_verdicts {
+    unsigned hit;
+    unsigned unsure;
+};
+
 /// Spreads the low 8 bits of `bits` into 8 bytes of value 0 or 1, bit i into byte i.
 inline std::uint64_t spread_bits_to_bytes(unsigned bits) {
     const std::uint64_t replicated = (bits & 0xffu) * 0x0101010101010101ull;

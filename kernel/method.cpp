@@ -1,4 +1,9 @@
 #include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
+#include <obbsat/ref/certified.hpp>
+#include <obbsat/ref/sat4.hpp>
+#include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
 
 namespace obbsat {
 
@@ -7,12 +12,15 @@ namespace {
 struct method_entry {
     method id;
     const char* name;
+    reference_fn reference;
 };
 
 const method_entry methods[method_count] = {
-    {method::sat4, "sat4"},
-    {method::sat4_centered, "sat4_centered"},
-    {method::sat4_double, "sat4_double"},
+    {method::sat4, "sat4", ref::sat4},
+    {method::sat4_centered, "sat4_centered", ref::sat4_centered},
+    {method::sat4_double, "sat4_double", ref::sat4_double},
+    {method::conservative, "conservative", ref::conservative},
+    {method::exact, "exact", oracle::intersects},
 };
 
 }  // namespace
@@ -33,6 +41,15 @@ std::optional<method> parse_method(std::string_view name) {
         }
     }
     return std::nullopt;
+}
+
+reference_fn method_reference(method m) {
+    for (const auto& e : methods) {
+        if (e.id == m) {
+            return e.reference;
+        }
+    }
+    return nullptr;
 }
 
 std::vector<method> all_methods() {

@@ -10,6 +10,7 @@ namespace {
 
 template <class Arch>
 struct sat4_centered_lanes {
+    static constexpr bool has_slow_path = false;
     static OBBSAT_LANE_INLINE quad_lanes<Arch> moved(const quad_lanes<Arch>& q, const lanes<Arch>& ox, const lanes<Arch>& oy) {
         quad_lanes<Arch> out;
         for (unsigned k = 0; k < 4; ++k) {
@@ -19,10 +20,10 @@ struct sat4_centered_lanes {
         return out;
     }
 
-    static OBBSAT_LANE_INLINE unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
         const lanes<Arch> ox = a.x(UL);
         const lanes<Arch> oy = a.y(UL);
-        return lane_bits(sat4_steps<lanes<Arch>>::collide(moved(a, ox, oy), moved(b, ox, oy)));
+        return lane_verdicts{lane_bits(sat4_steps<lanes<Arch>>::collide(moved(a, ox, oy), moved(b, ox, oy))), 0};
     }
 };
 

@@ -11,6 +11,7 @@ namespace {
 
 template <class Arch>
 struct sat4_double_lanes {
+    static constexpr bool has_slow_path = false;
     using wide = xsimd::batch<double, Arch>;
     using reg = typename lanes<Arch>::register_type;
     static constexpr std::size_t half_width = lanes<Arch>::size / 2;
@@ -41,10 +42,10 @@ struct sat4_double_lanes {
         return out;
     }
 
-    static OBBSAT_LANE_INLINE unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
         const unsigned low = lane_bits(sat4_steps<wide>::collide(widen<false>(a), widen<false>(b)));
         const unsigned high = lane_bits(sat4_steps<wide>::collide(widen<true>(a), widen<true>(b)));
-        return low | (high << half_width);
+        return lane_verdicts{low | (high << half_width), 0};
     }
 };
 

@@ -52,8 +52,9 @@ struct sat4_steps {
 /// Method sat4: the steps on the float corners as given.
 template <class Arch>
 struct sat4_lanes {
-    static OBBSAT_LANE_INLINE unsigned collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
-        return lane_bits(sat4_steps<lanes<Arch>>::collide(a, b));
+    static constexpr bool has_slow_path = false;
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+        return lane_verdicts{lane_bits(sat4_steps<lanes<Arch>>::collide(a, b)), 0};
     }
 };
 

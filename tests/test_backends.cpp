@@ -16,7 +16,9 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
@@ -72,6 +74,8 @@ constexpr golden_entry golden_digests[] = {
     {method::sat4, 0x1b45ee63ec5aa29e},
     {method::sat4_centered, 0x09b8092686886edf},
     {method::sat4_double, 0x3099c979b782180d},
+    {method::conservative, 0xd856975a604e797d},
+    {method::exact, 0x22608e361cc69299},
 };
 
 /// The scalar reference that defines `m`, or nullptr for a method this file does not know yet.
@@ -80,6 +84,8 @@ reference_fn reference_of(method m) {
         case method::sat4: return obbsat::ref::sat4;
         case method::sat4_centered: return obbsat::ref::sat4_centered;
         case method::sat4_double: return obbsat::ref::sat4_double;
+        case method::conservative: return obbsat::ref::conservative;
+        case method::exact: return obbsat::oracle::intersects;
     }
     return nullptr;
 }

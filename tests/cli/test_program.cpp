@@ -5,8 +5,10 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
@@ -125,6 +127,8 @@ bool reference_collides(method m, const rect& a, const rect& b) {
         case method::sat4: return obbsat::ref::sat4(a, b);
         case method::sat4_centered: return obbsat::ref::sat4_centered(a, b);
         case method::sat4_double: return obbsat::ref::sat4_double(a, b);
+        case method::conservative: return obbsat::ref::conservative(a, b);
+        case method::exact: return obbsat::oracle::intersects(a, b);
     }
     throw std::logic_error("no reference for this method");
 }

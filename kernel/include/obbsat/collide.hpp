@@ -22,6 +22,9 @@ struct collide_options {
     method test = method::sat4;           ///< which collision test
     backend use = backend::automatic;     ///< which instruction set (see backend.hpp)
     unsigned threads = 1;                 ///< cores to split one batch over; 0 means all
+    /// When set, receives how many pairs were decided on the exact slow path
+    /// (method exact only; 0 for the others).
+    std::size_t* slow_path_pairs = nullptr;
 };
 
 /// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0,

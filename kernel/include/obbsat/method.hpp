@@ -2,6 +2,8 @@
 // scalar_ref/ that defines it, and every backend follows that definition.
 #pragma once
 
+#include <obbsat/rect.hpp>
+
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -12,10 +14,12 @@ enum class method {
     sat4,           ///< the article's separating axis test in float32, world coordinates
     sat4_centered,  ///< sat4 after moving the origin to A.UL: precision independent of position
     sat4_double,    ///< sat4's steps in double arithmetic on the float input
+    conservative,   ///< collides unless proven separated: never misses a collision
+    exact,          ///< the exact answer for the quads as given (touching collides)
 };
 
 /// The number of methods, for tables indexed by method.
-inline constexpr unsigned method_count = 3;
+inline constexpr unsigned method_count = 5;
 
 /// The name of a method, as the CLI spells it.
 const char* method_name(method m);
@@ -25,5 +29,11 @@ std::optional<method> parse_method(std::string_view name);
 
 /// Every method, in declaration order.
 std::vector<method> all_methods();
+
+/// A method's scalar reference: the plain definition every backend follows.
+using reference_fn = bool (*)(const rect& a, const rect& b);
+
+/// The scalar reference of `m` (for exact: the exact oracle, obbsat::oracle::intersects).
+reference_fn method_reference(method m);
 
 }  // namespace obbsat

@@ -1,0 +1,120 @@
+// The certified separating-edge test on one pair per lane: the same float
+// operations, in the same order, as obbsat::ref::certify
+// (scalar_ref/include/obbsat/ref/certified.hpp states them), and the methods
+// built on it: conservative (no slow path) and exact (undecided lanes are
+// settled by the exact oracle, one pair at a time).
+#pragma once
+
+#include "lanes.hpp"
+
+#include <obbsat/oracle/contact.hpp>
+
+namespace obbsat::detail {
+namespace {
+
+template <class Arch>
+struct certified_steps {
+    using batch = lanes<Arch>;
+    using mask = lane_mask<Arch>;
+
+    struct quad_edges {
+        batch ex[4], ey[4];  // edge k: corner k+1 - corner k
+        batch flip;          // -0.0 where the winding is clockwise, +0.0 otherwise
+        mask convex;         // proven strictly convex
+    };
+
+    struct verdict {
+        mask separated;
+        mask intersecting;
+    };
+
+    static OBBSAT_LANE_INLINE quad_edges edges_of(const quad_lanes<Arch>& q, const batch& bound) {
+        quad_edges out;
+        for (unsigned k = 0; k < 4; ++k) {
+            const unsigned next = (k + 1) % 4;
+            out.ex[k] = q.x(next) - q.x(k);
+            out.ey[k] = q.y(next) - q.y(k);
+        }
+        const batch neg_bound = -bound;
+        mask all_left(true), all_right(true);
+        for (unsigned k = 0; k < 4; ++k) {
+            const unsigned next = (k + 1) % 4;
+            const batch turn = (out.ex[k] * out.ey[next]) - (out.ey[k] * out.ex[next]);
+            all_left = all_left & (turn > bound);
+            all_right = all_right & (turn < neg_bound);
+        }
+        out.convex = all_left | all_right;
+        out.flip = xsimd::select(all_right, batch(-0.0f), batch(0.0f));
+        return out;
+    }
+
+    /// Edges of q against the corners of `other`: some edge with every corner
+    /// outside (separating) and every edge with a corner inside (blocked).
+    static OBBSAT_LANE_INLINE void scan_edges(const quad_lanes<Arch>& q, const quad_edges& qe,
+                                              const quad_lanes<Arch>& other, const batch& bound,
+                                              mask& separating, mask& all_blocked) {
+        // Every corner outside iff the largest outward orientation is below
+        // -bound; some corner inside iff it is above bound. On a decidable
+        // lane no orientation is NaN, so the max decides both exactly as the
+        // reference's per-corner comparisons do.
+        const batch neg_bound = -bound;
+        for (unsigned k = 0; k < 4; ++k) {
+            batch largest;
+            for (unsigned r = 0; r < 4; ++r) {
+                const batch d = (qe.ex[k] * (other.y(r) - q.y(k))) - (qe.ey[k] * (other.x(r) - q.x(k)));
+                const batch sd = d ^ qe.flip;  // negated for clockwise quads: exact
+                largest = r == 0 ? sd : max_pick(largest, sd);
+            }
+            separating = separating | (largest < neg_bound);
+            all_blocked = all_blocked & (largest > bound);
+        }
+    }
+
+    static OBBSAT_LANE_INLINE verdict certify(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+        batch xmin = a.x(UL), xmax = a.x(UL), ymin = a.y(UL), ymax = a.y(UL);
+        for (unsigned k = 1; k < 8; ++k) {
+            const quad_lanes<Arch>& q = k < 4 ? a : b;
+            const unsigned corner = k % 4;
+            xmin = min_pick(xmin, q.x(corner));
+            xmax = max_pick(xmax, q.x(corner));
+            ymin = min_pick(ymin, q.y(corner));
+            ymax = max_pick(ymax, q.y(corner));
+        }
+        const batch area = (xmax - xmin) * (ymax - ymin);
+        const mask in_range = (area >= batch(0x1p-80f)) & (area <= batch(0x1p100f));
+        const batch bound = area * batch(0x1p-20f);
+
+        const quad_edges ea = edges_of(a, bound);
+        const quad_edges eb = edges_of(b, bound);
+        const mask decidable = in_range & ea.convex & eb.convex;
+
+        mask separating(false), all_blocked(true);
+        scan_edges(a, ea, b, bound, separating, all_blocked);
+        scan_edges(b, eb, a, bound, separating, all_blocked);
+        return verdict{decidable & separating, decidable & ~separating & all_blocked};
+    }
+};
+
+/// Method conservative: a lane collides unless it is proven separated.
+template <class Arch>
+struct conservative_lanes {
+    static constexpr bool has_slow_path = false;
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+        const auto v = certified_steps<Arch>::certify(a, b);
+        return lane_verdicts{lane_bits(~v.separated), 0};
+    }
+};
+
+/// Method exact: proven lanes from the fast path, the rest from the oracle.
+template <class Arch>
+struct exact_lanes {
+    static constexpr bool has_slow_path = true;
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+        const auto v = certified_steps<Arch>::certify(a, b);
+        return lane_verdicts{lane_bits(v.intersecting), lane_bits(~(v.separated | v.intersecting))};
+    }
+    static bool decide_exactly(const rect& a, const rect& b) { return oracle::intersects(a, b); }
+};
+
+}  // namespace
+}  // namespace obbsat::detail

@@ -45,6 +45,9 @@ install(TARGETS ${obbsat_installed_libraries}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(TARGET obbsat_cli)
+  install(TARGETS obbsat_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 
 set(obbsat_header_exclusions PATTERN "suites" EXCLUDE)
 if(NOT TARGET obbsat_oracle)

@@ -28,6 +28,29 @@ struct certified_steps {
         mask intersecting;
     };
 
+    /// Per-coordinate extent of a set of corners.
+    struct extent {
+        batch xmin, xmax, ymin, ymax;
+
+        batch area() const { return (xmax - xmin) * (ymax - ymin); }
+    };
+
+    static OBBSAT_LANE_INLINE extent extent_of(const quad_lanes<Arch>& q) {
+        extent e{q.x(UL), q.x(UL), q.y(UL), q.y(UL)};
+        for (unsigned k = 1; k < 4; ++k) {
+            e.xmin = min_pick(e.xmin, q.x(k));
+            e.xmax = max_pick(e.xmax, q.x(k));
+            e.ymin = min_pick(e.ymin, q.y(k));
+            e.ymax = max_pick(e.ymax, q.y(k));
+        }
+        return e;
+    }
+
+    static OBBSAT_LANE_INLINE extent joined(const extent& a, const extent& b) {
+        return extent{min_pick(a.xmin, b.xmin), max_pick(a.xmax, b.xmax), min_pick(a.ymin, b.ymin),
+                      max_pick(a.ymax, b.ymax)};
+    }
+
     static OBBSAT_LANE_INLINE quad_edges edges_of(const quad_lanes<Arch>& q, const batch& bound) {
         quad_edges out;
         for (unsigned k = 0; k < 4; ++k) {
@@ -71,21 +94,19 @@ struct certified_steps {
     }
 
     static OBBSAT_LANE_INLINE verdict certify(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
-        batch xmin = a.x(UL), xmax = a.x(UL), ymin = a.y(UL), ymax = a.y(UL);
-        for (unsigned k = 1; k < 8; ++k) {
-            const quad_lanes<Arch>& q = k < 4 ? a : b;
-            const unsigned corner = k % 4;
-            xmin = min_pick(xmin, q.x(corner));
-            xmax = max_pick(xmax, q.x(corner));
-            ymin = min_pick(ymin, q.y(corner));
-            ymax = max_pick(ymax, q.y(corner));
-        }
-        const batch area = (xmax - xmin) * (ymax - ymin);
-        const mask in_range = (area >= batch(0x1p-80f)) & (area <= batch(0x1p100f));
-        const batch bound = area * batch(0x1p-20f);
+        const extent xa = extent_of(a);
+        const extent xb = extent_of(b);
+        const batch area_a = xa.area();
+        const batch area_b = xb.area();
+        const batch area = joined(xa, xb).area();
+        const batch min_area(0x1p-80f);
+        const batch factor(0x1p-20f);
+        const mask in_range =
+            (area >= min_area) & (area <= batch(0x1p100f)) & (area_a >= min_area) & (area_b >= min_area);
+        const batch bound = area * factor;
 
-        const quad_edges ea = edges_of(a, bound);
-        const quad_edges eb = edges_of(b, bound);
+        const quad_edges ea = edges_of(a, area_a * factor);
+        const quad_edges eb = edges_of(b, area_b * factor);
         const mask decidable = in_range & ea.convex & eb.convex;
 
         mask separating(false), all_blocked(true);

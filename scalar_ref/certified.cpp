@@ -1,5 +1,7 @@
 #include <obbsat/ref/certified.hpp>
 
+#include <initializer_list>
+
 namespace obbsat::ref {
 
 namespace {
@@ -17,7 +19,7 @@ struct quad_edges {
     float winding;    // +1 counter-clockwise, -1 clockwise, 0 not proven convex
 };
 
-quad_edges edges_of(const rect& r, float bound) {
+quad_edges edges_of(const rect& r, float own_bound) {
     quad_edges q{{r.ul, r.ur, r.lr, r.ll}, {}, 0.0f};
     for (int k = 0; k < 4; ++k) {
         const point& from = q.corner[k];
@@ -30,8 +32,8 @@ quad_edges edges_of(const rect& r, float bound) {
         const point& e = q.edge[k];
         const point& next = q.edge[(k + 1) % 4];
         const float turn = (e.x * next.y) - (e.y * next.x);
-        all_left = all_left && turn > bound;
-        all_right = all_right && turn < -bound;
+        all_left = all_left && turn > own_bound;
+        all_right = all_right && turn < -own_bound;
     }
     q.winding = all_left ? 1.0f : (all_right ? -1.0f : 0.0f);
     return q;
@@ -63,24 +65,45 @@ void scan_edges(const quad_edges& q, const quad_edges& other, float bound, bool&
     }
 }
 
+struct extent {
+    float xmin, xmax, ymin, ymax;
+
+    float area() const { return (xmax - xmin) * (ymax - ymin); }
+};
+
+extent extent_of(const rect& r) {
+    extent e{r.ul.x, r.ul.x, r.ul.y, r.ul.y};
+    for (const point& p : {r.ur, r.lr, r.ll}) {
+        e.xmin = min_pick(e.xmin, p.x);
+        e.xmax = max_pick(e.xmax, p.x);
+        e.ymin = min_pick(e.ymin, p.y);
+        e.ymax = max_pick(e.ymax, p.y);
+    }
+    return e;
+}
+
+extent joined(const extent& a, const extent& b) {
+    return extent{min_pick(a.xmin, b.xmin), max_pick(a.xmax, b.xmax), min_pick(a.ymin, b.ymin),
+                  max_pick(a.ymax, b.ymax)};
+}
+
+// NaN (from an infinite width) fails both comparisons: out of range.
+bool in_range(float area) { return area >= min_area && area <= max_area; }
+
 }  // namespace
 
 certified_verdict certify(const rect& a, const rect& b) {
-    const point corners[8] = {a.ul, a.ur, a.lr, a.ll, b.ul, b.ur, b.lr, b.ll};
-    float xmin = corners[0].x, xmax = corners[0].x, ymin = corners[0].y, ymax = corners[0].y;
-    for (int k = 1; k < 8; ++k) {
-        xmin = min_pick(xmin, corners[k].x);
-        xmax = max_pick(xmax, corners[k].x);
-        ymin = min_pick(ymin, corners[k].y);
-        ymax = max_pick(ymax, corners[k].y);
-    }
-    const float area = (xmax - xmin) * (ymax - ymin);
-    if (!(area >= min_area && area <= max_area)) {
+    const extent ea = extent_of(a);
+    const extent eb = extent_of(b);
+    const float area_a = ea.area();
+    const float area_b = eb.area();
+    const float area = joined(ea, eb).area();
+    if (!(in_range(area) && area_a >= min_area && area_b >= min_area)) {
         return certified_verdict{false, false};
     }
     const float bound = area * bound_factor;
-    const quad_edges qa = edges_of(a, bound);
-    const quad_edges qb = edges_of(b, bound);
+    const quad_edges qa = edges_of(a, area_a * bound_factor);
+    const quad_edges qb = edges_of(b, area_b * bound_factor);
     if (qa.winding == 0.0f || qb.winding == 0.0f) {
         return certified_verdict{false, false};
     }

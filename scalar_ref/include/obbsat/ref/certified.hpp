@@ -12,15 +12,19 @@
 // convex (all four turns certified of one sign), which also gives their winding.
 //
 // Contract, the exact float32 operations in order (no FMA):
-//   1. Extent of the pair: xmin, xmax, ymin, ymax over the eight corners (A's
-//      UL, UR, LR, LL then B's), folded with min-pick u < v ? u : v and
-//      max-pick u > v ? u : v; w = xmax - xmin, h = ymax - ymin, area = w * h.
-//   2. Guard: decide nothing unless 2^-80 <= area <= 2^100 (no product below
-//      the normal range matters, none overflows).
-//   3. bound = area * 2^-20.
+//   1. Extent of each quad: xmin, xmax, ymin, ymax over its corners UL, UR, LR,
+//      LL, folded with min-pick u < v ? u : v and max-pick u > v ? u : v; its
+//      area = (xmax - xmin) * (ymax - ymin). Extent of the pair: the min-pick
+//      and max-pick of A's and B's (A first); area likewise.
+//   2. Guard: decide nothing unless 2^-80 <= area <= 2^100 for the pair and
+//      2^-80 <= area for each quad (no product below the normal range matters,
+//      none overflows).
+//   3. bound = area * 2^-20 for the pair; own_bound = area * 2^-20 per quad.
 //   4. Edges e_k = q_{k+1} - q_k per coordinate, k = 0..3 in corner order, q_4 = q_0.
 //   5. Turns t_k = (e_k.x * e_{k+1}.y) - (e_k.y * e_{k+1}.x). A quad is convex with
-//      winding s = +1 if every t_k > bound, s = -1 if every t_k < -bound.
+//      winding s = +1 if every t_k > own_bound, s = -1 if every t_k < -own_bound.
+//      (A turn involves one quad only, so its own extent bounds its error: a
+//      small quad beside a large one is still proven convex.)
 //   6. For each edge k of A and each corner r of B (and B's edges against A's
 //      corners): d = (e_k.x * (r.y - q_k.y)) - (e_k.y * (r.x - q_k.x)), then
 //      sd = d with its sign flipped when s = -1. Outside iff sd < -bound, inside
@@ -30,7 +34,8 @@
 //      otherwise undecided.
 //
 // Why the bound holds: every exact difference above is at most w (x) or h (y)
-// in magnitude, so each product is at most w h (1 + u)^3 and the computed d is
+// in magnitude, where w and h are the exact widths of the extent the bound is
+// taken from, so each product is at most w h (1 + u)^3 and the computed d is
 // within (3 + 16u) u * 2 w h (1 + u)^3 of the exact one (u = 2^-24, Shewchuk's
 // orient2d bound A); the rounding of w, h and area costs (1 + u)^-3 more. That
 // is below 6.001 u * area, and bound = 16 u * area. Subnormal differences are

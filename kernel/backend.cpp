@@ -50,21 +50,21 @@ const backend_entry* find(backend b) {
     return nullptr;
 }
 
+std::optional<backend> read_forced_backend() {
+    const char* value = std::getenv("OBBSAT_BACKEND");
+    if (value == nullptr || *value == '\0') {
+        return std::nullopt;
+    }
+    const auto parsed = parse_backend(value);
+    if (!parsed) {
+        throw unsupported_backend(std::string("OBBSAT_BACKEND=") + value +
+                                  " names no backend (expected auto, scalar, sse2, avx2 or avx512)");
+    }
+    return parsed;
+}
+
 backend from_environment_or_best() {
-    // Read once: the variable is a process-wide setting, and the hot path
-    // must not scan the environment on every call.
-    static const std::optional<backend> forced = []() -> std::optional<backend> {
-        const char* value = std::getenv("OBBSAT_BACKEND");
-        if (value == nullptr || *value == '\0') {
-            return std::nullopt;
-        }
-        const auto parsed = parse_backend(value);
-        if (!parsed) {
-            throw unsupported_backend(std::string("OBBSAT_BACKEND=") + value +
-                                      " names no backend (expected auto, scalar, sse2, avx2 or avx512)");
-        }
-        return parsed;
-    }();
+    const std::optional<backend> forced = forced_backend();
     if (!forced || *forced == backend::automatic) {
         return best_supported_backend();
     }
@@ -76,6 +76,13 @@ backend from_environment_or_best() {
 }
 
 }  // namespace
+
+std::optional<backend> forced_backend() {
+    // Read once: the variable is a process-wide setting, and the hot path
+    // must not scan the environment on every call.
+    static const std::optional<backend> forced = read_forced_backend();
+    return forced;
+}
 
 const char* backend_name(backend b) {
     if (b == backend::automatic) {

@@ -42,6 +42,13 @@ rect_records::rect_records(const rect* rects, std::size_t count) {
 
 rect_records::rect_records(const std::vector<rect>& rects) : rect_records(rects.data(), rects.size()) {}
 
+rect_records::rect_records(const rect_soa& rects) {
+    records_.reserve(rects.size());
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        records_.push_back(rects[i]);
+    }
+}
+
 rect_records rect_records::from_poses(const pose* poses, std::size_t count) {
     rect_records out;
     out.reserve(count);

@@ -44,6 +44,18 @@ rect_soa::rect_soa(const rect* rects, std::size_t count) {
 
 rect_soa::rect_soa(const std::vector<rect>& rects) : rect_soa(rects.data(), rects.size()) {}
 
+rect_soa rect_soa::from_coordinate_arrays(const float* const arrays[coord_count], std::size_t count) {
+    rect_soa out;
+    out.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        out.push_back(rect{{arrays[0][i], arrays[1][i]},
+                           {arrays[2][i], arrays[3][i]},
+                           {arrays[4][i], arrays[5][i]},
+                           {arrays[6][i], arrays[7][i]}});
+    }
+    return out;
+}
+
 rect_soa rect_soa::from_poses(const pose* poses, std::size_t count) {
     rect_soa out;
     out.reserve(count);

@@ -36,6 +36,10 @@ bool cpu_supports(backend b);
 /// The best backend this CPU runs, ignoring OBBSAT_BACKEND.
 backend best_supported_backend();
 
+/// The backend OBBSAT_BACKEND names (automatic for "auto"), or nothing when it
+/// is unset or empty; throws unsupported_backend when it names no backend.
+std::optional<backend> forced_backend();
+
 /// The concrete backend a request resolves to; throws unsupported_backend when
 /// the request (or OBBSAT_BACKEND) names one that is unknown or cannot run here.
 backend resolve_backend(backend requested);

@@ -12,6 +12,7 @@
 
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_soa.hpp>
 
 #include <cstddef>
 #include <new>
@@ -51,6 +52,8 @@ public:
     rect_records(const rect* rects, std::size_t count);
     /// Copies the rectangles of `rects`; throws invalid_input on a non-finite coordinate.
     explicit rect_records(const std::vector<rect>& rects);
+    /// Copies the rectangles of a structure-of-arrays store (already finite).
+    explicit rect_records(const rect_soa& rects);
 
     /// Builds the corners of each pose (see corners_of); throws on non-finite results.
     static rect_records from_poses(const pose* poses, std::size_t count);

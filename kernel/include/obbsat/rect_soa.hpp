@@ -39,6 +39,10 @@ public:
     /// Copies the rectangles of `rects`; throws invalid_input on a non-finite coordinate.
     explicit rect_soa(const std::vector<rect>& rects);
 
+    /// Copies `count` rectangles from eight coordinate arrays in coord order
+    /// (ulx, uly, urx, ury, lrx, lry, llx, lly); throws invalid_input on a non-finite value.
+    static rect_soa from_coordinate_arrays(const float* const arrays[coord_count], std::size_t count);
+
     /// Builds the corners of each pose (see corners_of); throws on non-finite results.
     static rect_soa from_poses(const pose* poses, std::size_t count);
     /// Builds the corners of each pose (see corners_of); throws on non-finite results.

@@ -1,6 +1,7 @@
 // obbsat demo: every backend this CPU runs, timed on one seeded scene, each
 // run checked byte for byte against the scalar reference before its time
 // counts for anything.
+#include "accuracy_brief.hpp"
 #include "cli_args.hpp"
 #include "commands.hpp"
 
@@ -264,6 +265,7 @@ int run_demo(const arguments& args) {
     std::vector<std::uint8_t> reference;
     double reference_seconds = 0.0;
     std::vector<std::uint8_t> verdicts(count);
+    std::vector<accuracy::timed_method> timed;  // for the accuracy lines below
     for (const demo_entry& entry : entries) {
         if (entry.is_reference) {
             reference.assign(count, 0);
@@ -291,6 +293,10 @@ int run_demo(const arguments& args) {
             reference_seconds = result.median_seconds;
         }
         const double pairs = static_cast<double>(count);
+        if (entry.store == "records" && entry.threads == 1 &&
+            entry.runner == backend_name(best_supported_backend())) {
+            timed.push_back({entry.test, pairs / result.median_seconds / 1e6});
+        }
         std::printf("%-*s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
                     method_width, method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
                     entry.threads,
@@ -301,6 +307,7 @@ int run_demo(const arguments& args) {
     }
     std::printf("\nall %zu rows agree with the scalar reference (best backend here: %s)\n",
                 entries.size(), backend_name(best_supported_backend()));
+    accuracy::print_accuracy_brief(stdout, timed);
     return exit_success;
 }
 

@@ -1,6 +1,7 @@
 // obbsat: decide which pairs of rotated rectangles collide, from the command
 // line. This file picks the subcommand and turns every failure into a message
 // on stderr and an exit status.
+#include "accuracy_commands.hpp"
 #include "atomic_output.hpp"
 #include "cli_args.hpp"
 #include "commands.hpp"
@@ -38,6 +39,10 @@ constexpr subcommand subcommands[] = {
      run_backends, print_backends_help},
     {"demo", "time every backend on a seeded scene and check they all agree", run_demo,
      print_demo_help},
+    {"gen", "write a hard-case suite family and its exact truth to files", run_gen,
+     print_gen_help},
+    {"accuracy", "score every method against the exact oracle on every suite family",
+     run_accuracy, print_accuracy_help},
 };
 
 void print_main_help(std::FILE* out) {

@@ -1,0 +1,167 @@
+#include "accuracy_report.hpp"
+
+#include <obbsat/collide.hpp>
+#include <obbsat/oracle/classify_pairs.hpp>
+#include <obbsat/rect_records.hpp>
+#include <obbsat/scene.hpp>
+#include <obbsat/suites/family.hpp>
+#include <obbsat/suites/suite.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+
+namespace obbsat::accuracy {
+
+double error_counts::error_rate() const {
+    return pairs == 0 ? 0.0 : static_cast<double>(errors()) / static_cast<double>(pairs);
+}
+
+void error_counts::add(const error_counts& other) {
+    pairs += other.pairs;
+    false_positives += other.false_positives;
+    missed_touching += other.missed_touching;
+    missed_overlapping += other.missed_overlapping;
+    slow_path_pairs += other.slow_path_pairs;
+}
+
+error_counts score_verdicts(const oracle::contact* truth, const std::uint8_t* verdicts,
+                            std::size_t count) {
+    error_counts out;
+    out.pairs = count;
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool said_collide = verdicts[i] != 0;
+        switch (truth[i]) {
+            case oracle::contact::separated: out.false_positives += said_collide; break;
+            case oracle::contact::touching: out.missed_touching += !said_collide; break;
+            case oracle::contact::overlapping: out.missed_overlapping += !said_collide; break;
+        }
+    }
+    return out;
+}
+
+namespace {
+
+double median_of(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+family_truth truth_of(suites::family f, const std::vector<oracle::contact>& truth) {
+    family_truth out;
+    out.name = suites::family_name(f);
+    out.pairs = truth.size();
+    for (const oracle::contact c : truth) {
+        out.separated += c == oracle::contact::separated;
+        out.touching += c == oracle::contact::touching;
+        out.overlapping += c == oracle::contact::overlapping;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string cpu_model_name() {
+    std::ifstream info("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(info, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            const std::size_t colon = line.find(':');
+            if (colon != std::string::npos && colon + 2 <= line.size()) {
+                return line.substr(colon + 2);
+            }
+        }
+    }
+    return "unknown";
+}
+
+std::vector<double> measure_throughput(const std::vector<method>& methods, backend use,
+                                       unsigned reps, const throughput_scene& spec) {
+    const scene world = make_scene(
+        scene_spec_for(scene_density::typical, spec.rects, spec.pairs));
+    std::vector<rect> plain;
+    plain.reserve(world.rects.size());
+    for (std::size_t i = 0; i < world.rects.size(); ++i) {
+        plain.push_back(world.rects[i]);
+    }
+    const rect_records records(plain);
+    const std::size_t count = world.pairs.size();
+    std::vector<std::uint8_t> verdicts(count);
+
+    using clock = std::chrono::steady_clock;
+    std::vector<double> speeds;
+    for (const method m : methods) {
+        collide_options options;
+        options.test = m;
+        options.use = use;
+        options.threads = spec.threads;
+        std::vector<double> seconds;
+        for (unsigned rep = 0; rep <= reps; ++rep) {
+            const clock::time_point start = clock::now();
+            collide_pairs(records, world.pairs.data(), count, verdicts.data(), options);
+            const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
+            if (rep > 0) {  // rep 0 warms caches and pages
+                seconds.push_back(elapsed);
+            }
+        }
+        speeds.push_back(static_cast<double>(count) / median_of(seconds) / 1e6);
+    }
+    return speeds;
+}
+
+accuracy_report measure_accuracy(const accuracy_settings& settings, const progress_fn& progress) {
+    accuracy_report report;
+    report.settings = settings;
+    report.used = best_supported_backend();
+    report.cpu = cpu_model_name();
+    const std::vector<method> methods = all_methods();
+    for (const method m : methods) {
+        method_result result;
+        result.test = m;
+        report.methods.push_back(result);
+    }
+
+    const std::vector<suites::family>& families = suites::all_families();
+    std::vector<oracle::contact> truth;
+    std::vector<std::uint8_t> verdicts;
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        const suites::suite s = suites::make_family(families[f], settings.seed,
+                                                    settings.pairs_per_family);
+        const std::size_t count = s.pairs.size();
+        truth.resize(count);
+        oracle::classify_pairs(s.rects.data(), s.rects.size(), s.pairs.data(), count,
+                               truth.data(), settings.threads);
+        report.families.push_back(truth_of(families[f], truth));
+
+        const rect_records records(s.rects);
+        verdicts.resize(count);
+        for (method_result& result : report.methods) {
+            std::size_t slow_path = 0;
+            collide_options options;
+            options.test = result.test;
+            options.use = report.used;
+            options.threads = settings.threads;
+            options.slow_path_pairs = &slow_path;
+            collide_pairs(records, s.pairs.data(), count, verdicts.data(), options);
+            error_counts counts = score_verdicts(truth.data(), verdicts.data(), count);
+            counts.slow_path_pairs = slow_path;
+            result.per_family.push_back(counts);
+            result.total.add(counts);
+        }
+        if (progress) {
+            progress(f + 1, families.size());
+        }
+    }
+
+    if (settings.measure_speed) {
+        const std::vector<double> speeds =
+            measure_throughput(methods, report.used, settings.timing_reps, report.timing_scene);
+        for (std::size_t i = 0; i < methods.size(); ++i) {
+            report.methods[i].mpairs_per_second = speeds[i];
+        }
+    }
+    return report;
+}
+
+}  // namespace obbsat::accuracy

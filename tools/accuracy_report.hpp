@@ -1,0 +1,103 @@
+// The accuracy report: every method's verdicts on every hard-case suite
+// family, scored against the exact oracle, and every method's speed on a
+// broadphase-like scene, so that speed can be weighed against error.
+//
+// Verdicts come from the fastest backend this CPU runs (every backend gives
+// the same verdicts, so the choice only affects how long scoring takes).
+// Errors are counted per contact class of the truth: a false positive is a
+// collision reported for a separated pair; a false negative is a pair the
+// oracle finds touching or overlapping that the method calls separated.
+#pragma once
+
+#include <obbsat/backend.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace obbsat::accuracy {
+
+/// How one method fared on a set of pairs.
+struct error_counts {
+    std::uint64_t pairs = 0;
+    std::uint64_t false_positives = 0;     ///< said collide, truth separated
+    std::uint64_t missed_touching = 0;     ///< said separated, truth touching
+    std::uint64_t missed_overlapping = 0;  ///< said separated, truth overlapping
+    std::uint64_t slow_path_pairs = 0;     ///< pairs method exact settled on its exact slow path
+
+    std::uint64_t false_negatives() const { return missed_touching + missed_overlapping; }
+    std::uint64_t errors() const { return false_positives + false_negatives(); }
+    /// errors / pairs, 0 when there are no pairs.
+    double error_rate() const;
+    /// Adds another set's counts to these.
+    void add(const error_counts& other);
+};
+
+/// The errors of `verdicts` (0 or 1 per pair) against the oracle's `truth`.
+error_counts score_verdicts(const oracle::contact* truth, const std::uint8_t* verdicts,
+                            std::size_t count);
+
+/// The oracle's view of one family's suite.
+struct family_truth {
+    std::string name;
+    std::uint64_t pairs = 0;
+    std::uint64_t separated = 0;
+    std::uint64_t touching = 0;
+    std::uint64_t overlapping = 0;
+};
+
+/// One method across every family.
+struct method_result {
+    method test = method::sat4;
+    std::vector<error_counts> per_family;  ///< in the order of accuracy_report::families
+    error_counts total;
+    double mpairs_per_second = 0.0;        ///< on the throughput scene (see accuracy_report)
+};
+
+struct accuracy_settings {
+    std::size_t pairs_per_family = 20000;
+    std::uint64_t seed = 1;
+    unsigned threads = 1;        ///< for the oracle and the scored verdicts; timing uses 1
+    unsigned timing_reps = 11;   ///< timed runs per method after a warm-up; the median counts
+    bool measure_speed = true;   ///< false leaves every mpairs_per_second at 0
+};
+
+/// The scene every method is timed on, as the report describes it.
+struct throughput_scene {
+    std::size_t rects = 131072;
+    std::size_t pairs = 262144;
+    const char* density = "typical";
+    const char* store = "rect_records";
+    const char* order = "indexed, sorted by first rectangle";
+    unsigned threads = 1;
+};
+
+struct accuracy_report {
+    accuracy_settings settings;
+    backend used = backend::scalar;      ///< the backend that produced every verdict and time
+    std::string cpu;                     ///< the CPU's model name as the OS reports it, or "unknown"
+    throughput_scene timing_scene;
+    std::vector<family_truth> families;  ///< in suites::all_families() order
+    std::vector<method_result> methods;  ///< in all_methods() order
+};
+
+/// The CPU's model name from /proc/cpuinfo, or "unknown".
+std::string cpu_model_name();
+
+/// Called after each family is scored: the family's index and the number of families.
+using progress_fn = std::function<void(std::size_t done, std::size_t total)>;
+
+/// Scores every method on every family and times every method; see the file comment.
+accuracy_report measure_accuracy(const accuracy_settings& settings,
+                                 const progress_fn& progress = nullptr);
+
+/// Mpairs/s of each method in `methods` (same order) on the throughput scene,
+/// on backend `use`, 1 thread: the median of `reps` timed runs after a warm-up.
+std::vector<double> measure_throughput(const std::vector<method>& methods, backend use,
+                                       unsigned reps, const throughput_scene& spec = {});
+
+}  // namespace obbsat::accuracy

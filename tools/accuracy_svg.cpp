@@ -1,0 +1,223 @@
+#include "accuracy_svg.hpp"
+
+#include "accuracy_text.hpp"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace obbsat::accuracy {
+
+namespace {
+
+constexpr double width = 760.0;
+constexpr double height = 500.0;
+constexpr double plot_left = 90.0;
+constexpr double plot_right = 600.0;
+constexpr double plot_top = 70.0;
+constexpr double plot_bottom = 420.0;
+constexpr double label_height = 15.0;
+// Wide enough for a label in a 12px sans-serif font: a bound, not a measure.
+constexpr double label_char_width = 7.0;
+
+std::string fixed(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", value);
+    return text;
+}
+
+std::string escaped(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string text_element(double x, double y, const char* anchor, const std::string& cls,
+                         const std::string& content, const std::string& extra = "") {
+    return "<text class=\"" + cls + "\" x=\"" + fixed(x) + "\" y=\"" + fixed(y) +
+           "\" text-anchor=\"" + anchor + "\"" + extra + ">" + escaped(content) + "</text>\n";
+}
+
+std::string line_element(double x1, double y1, double x2, double y2, const std::string& cls) {
+    return "<line class=\"" + cls + "\" x1=\"" + fixed(x1) + "\" y1=\"" + fixed(y1) + "\" x2=\"" +
+           fixed(x2) + "\" y2=\"" + fixed(y2) + "\"/>\n";
+}
+
+// A tick step of 1, 2 or 5 times a power of ten giving about five ticks up to `top`.
+double tick_step(double top) {
+    const double raw = top / 5.0;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    for (const double factor : {1.0, 2.0, 5.0}) {
+        if (factor * magnitude >= raw) {
+            return factor * magnitude;
+        }
+    }
+    return 10.0 * magnitude;
+}
+
+struct placed_label {
+    double x0, x1, y0, y1;  // the box the text covers
+};
+
+bool overlaps(const placed_label& a, const placed_label& b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+}  // namespace
+
+std::string accuracy_svg(const accuracy_report& report) {
+    // Horizontal scale: 0 .. a round number above the fastest method.
+    double fastest = 0.0;
+    for (const method_result& m : report.methods) {
+        if (std::isfinite(m.mpairs_per_second)) {
+            fastest = std::max(fastest, m.mpairs_per_second);
+        }
+    }
+    const double x_step = tick_step(fastest > 0.0 ? fastest * 1.05 : 1.0);
+    const double x_top = x_step * std::ceil((fastest > 0.0 ? fastest * 1.05 : 1.0) / x_step);
+    auto x_of = [&](double speed) {
+        const double clamped = std::isfinite(speed) ? std::clamp(speed, 0.0, x_top) : 0.0;
+        return plot_left + (plot_right - plot_left) * clamped / x_top;
+    };
+
+    // Vertical scale: decades from the floor up to the decade above the worst rate.
+    std::uint64_t pairs = 0;
+    double worst = 0.0;
+    for (const method_result& m : report.methods) {
+        pairs = std::max(pairs, m.total.pairs);
+        worst = std::max(worst, m.total.error_rate());
+    }
+    const int floor_decade =
+        static_cast<int>(std::floor(std::log10(1.0 / static_cast<double>(std::max<std::uint64_t>(pairs, 1))))) - 1;
+    const int top_decade =
+        std::max(floor_decade + 2, worst > 0.0 ? static_cast<int>(std::ceil(std::log10(worst))) : 0);
+    auto y_of_decade = [&](double decade) {
+        return plot_bottom - (plot_bottom - plot_top) * (decade - floor_decade) /
+                                 static_cast<double>(top_decade - floor_decade);
+    };
+    auto y_of = [&](double rate) {
+        return rate > 0.0 ? y_of_decade(std::log10(rate)) : y_of_decade(floor_decade);
+    };
+
+    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fixed(width) + "\" height=\"" +
+           fixed(height) + "\" viewBox=\"0 0 " + fixed(width) + " " + fixed(height) + "\">\n";
+    svg += "<style>\n"
+           "text { font-family: sans-serif; font-size: 12px; fill: #222; }\n"
+           ".title { font-size: 15px; font-weight: bold; }\n"
+           ".axis-title { font-size: 13px; }\n"
+           ".grid { stroke: #ddd; stroke-width: 1; }\n"
+           ".frame { stroke: #444; stroke-width: 1; fill: none; }\n"
+           ".floor { stroke: #2a7; stroke-width: 1.5; stroke-dasharray: 6 4; }\n"
+           ".floor-label { fill: #2a7; }\n"
+           ".point { fill: #c33; stroke: #611; stroke-width: 1; }\n"
+           ".point.zero { fill: #2a7; stroke: #153; }\n"
+           ".leader { stroke: #888; stroke-width: 0.8; }\n"
+           "</style>\n";
+    svg += "<rect x=\"0\" y=\"0\" width=\"" + fixed(width) + "\" height=\"" + fixed(height) +
+           "\" fill=\"white\"/>\n";
+
+    char title[200];
+    std::snprintf(title, sizeof title,
+                  "obbsat methods: speed against error (%" PRIu64 " hard-case pairs, %zu families)",
+                  pairs, report.families.size());
+    svg += text_element(width / 2.0, 28.0, "middle", "title", title);
+    char subtitle[200];
+    std::snprintf(subtitle, sizeof subtitle,
+                  "speed: %s scene, %zu pairs over %zu rects, %s, %u thread, %s",
+                  report.timing_scene.density, report.timing_scene.pairs, report.timing_scene.rects,
+                  report.timing_scene.store, report.timing_scene.threads, backend_name(report.used));
+    svg += text_element(width / 2.0, 48.0, "middle", "subtitle", subtitle);
+
+    // Grid and tick labels.
+    for (double x = 0.0; x <= x_top * (1.0 + 1e-9); x += x_step) {
+        svg += line_element(x_of(x), plot_top, x_of(x), plot_bottom, "grid");
+        char tick[32];
+        std::snprintf(tick, sizeof tick, "%g", x);
+        svg += text_element(x_of(x), plot_bottom + 18.0, "middle", "tick", tick);
+    }
+    for (int decade = floor_decade + 1; decade <= top_decade; ++decade) {
+        const double y = y_of_decade(decade);
+        svg += line_element(plot_left, y, plot_right, y, "grid");
+        svg += text_element(plot_left - 8.0, y + 4.0, "end", "tick", "1e" + std::to_string(decade));
+    }
+    const double floor_y = y_of(0.0);
+    svg += line_element(plot_left, floor_y, plot_right, floor_y, "floor");
+    svg += text_element(plot_left - 8.0, floor_y + 4.0, "end", "tick floor-label", "0");
+    svg += text_element(plot_right, floor_y - 6.0, "end", "floor-label",
+                        "no errors (below 1 in " + std::to_string(pairs) + ")");
+    svg += "<rect class=\"frame\" x=\"" + fixed(plot_left) + "\" y=\"" + fixed(plot_top) +
+           "\" width=\"" + fixed(plot_right - plot_left) + "\" height=\"" +
+           fixed(plot_bottom - plot_top) + "\"/>\n";
+    svg += text_element((plot_left + plot_right) / 2.0, plot_bottom + 44.0, "middle", "axis-title",
+                        "throughput, Mpairs/s (1 thread) \u2192 faster");
+    svg += text_element(24.0, (plot_top + plot_bottom) / 2.0, "middle", "axis-title",
+                        "error rate over all families (log scale) \u2192 worse",
+                        " transform=\"rotate(-90 24 " + fixed((plot_top + plot_bottom) / 2.0) + ")\"");
+
+    // Points, then labels placed so that no two overlap: each label starts
+    // beside its point and moves down a line at a time until it is clear.
+    std::vector<const method_result*> order;
+    for (const method_result& m : report.methods) {
+        order.push_back(&m);
+    }
+    std::sort(order.begin(), order.end(), [&](const method_result* a, const method_result* b) {
+        return y_of(a->total.error_rate()) < y_of(b->total.error_rate());
+    });
+    std::vector<placed_label> placed;
+    for (const method_result* m : order) {
+        const std::string name = method_name(m->test);
+        const double rate = m->total.error_rate();
+        const double px = x_of(m->mpairs_per_second);
+        const double py = y_of(rate);
+        svg += "<circle class=\"point" + std::string(rate == 0.0 ? " zero" : "") +
+               "\" data-method=\"" + escaped(name) + "\" cx=\"" + fixed(px) + "\" cy=\"" +
+               fixed(py) + "\" r=\"6\"/>\n";
+        placed.push_back(placed_label{px - 7.0, px + 7.0, py - 7.0, py + 7.0});
+    }
+    for (const method_result* m : order) {
+        const std::string name = method_name(m->test);
+        const double rate = m->total.error_rate();
+        char speed[32];
+        std::snprintf(speed, sizeof speed, "%.0f", m->mpairs_per_second);
+        const std::string content = name + " (" + format_rate(rate) + ", " + speed + " Mpairs/s)";
+        const double box_width = label_char_width * static_cast<double>(content.size());
+        const double px = x_of(m->mpairs_per_second);
+        const double py = y_of(rate);
+        const bool left = px + 10.0 + box_width > width - 8.0;
+        const double x0 = left ? px - 10.0 - box_width : px + 10.0;
+        double baseline = py + 4.0;
+        placed_label box{x0, x0 + box_width, baseline - 11.0, baseline + 3.0};
+        for (;;) {
+            const bool clear = std::none_of(placed.begin(), placed.end(), [&](const placed_label& other) {
+                return overlaps(box, other);
+            });
+            if (clear) {
+                break;
+            }
+            baseline += label_height;
+            box.y0 += label_height;
+            box.y1 += label_height;
+        }
+        placed.push_back(box);
+        if (baseline - (py + 4.0) > 1.0) {
+            svg += line_element(px, py, left ? box.x1 : box.x0, baseline - 4.0, "leader");
+        }
+        svg += text_element(left ? box.x1 : box.x0, baseline, left ? "end" : "start", "label",
+                            content, " data-method=\"" + escaped(name) + "\"");
+    }
+    svg += "</svg>\n";
+    return svg;
+}
+
+}  // namespace obbsat::accuracy

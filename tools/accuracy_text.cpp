@@ -1,0 +1,95 @@
+#include "accuracy_text.hpp"
+
+#include <cinttypes>
+
+namespace obbsat::accuracy {
+
+std::string format_rate(double rate) {
+    if (rate == 0.0) {
+        return "0";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2e", rate);
+    return text;
+}
+
+namespace {
+
+double percent(std::uint64_t part, std::uint64_t whole) {
+    return whole == 0 ? 0.0 : 100.0 * static_cast<double>(part) / static_cast<double>(whole);
+}
+
+void print_counts_row(std::FILE* out, const char* name, const error_counts& c, bool slow_path) {
+    std::fprintf(out, "  %-17s %9" PRIu64 " %8" PRIu64 " %9" PRIu64 " %11" PRIu64 "  %10s", name,
+                 c.pairs, c.false_positives, c.missed_touching, c.missed_overlapping,
+                 format_rate(c.error_rate()).c_str());
+    if (slow_path) {
+        std::fprintf(out, "  %8.3f%%", percent(c.slow_path_pairs, c.pairs));
+    }
+    std::fprintf(out, "\n");
+}
+
+}  // namespace
+
+void print_truth_table(std::FILE* out, const accuracy_report& report) {
+    std::fprintf(out, "truth (exact oracle), pairs per contact class:\n");
+    std::fprintf(out, "  %-17s %9s %10s %9s %12s\n", "family", "pairs", "separated", "touching",
+                 "overlapping");
+    family_truth all;
+    for (const family_truth& f : report.families) {
+        std::fprintf(out, "  %-17s %9" PRIu64 " %10" PRIu64 " %9" PRIu64 " %12" PRIu64 "\n",
+                     f.name.c_str(), f.pairs, f.separated, f.touching, f.overlapping);
+        all.pairs += f.pairs;
+        all.separated += f.separated;
+        all.touching += f.touching;
+        all.overlapping += f.overlapping;
+    }
+    std::fprintf(out, "  %-17s %9" PRIu64 " %10" PRIu64 " %9" PRIu64 " %12" PRIu64 "\n\n",
+                 "all families", all.pairs, all.separated, all.touching, all.overlapping);
+}
+
+void print_method_tables(std::FILE* out, const accuracy_report& report) {
+    for (const method_result& m : report.methods) {
+        const bool slow_path = m.test == method::exact;
+        std::fprintf(out, "method %s:\n", method_name(m.test));
+        std::fprintf(out, "  %-17s %9s %8s %9s %11s  %10s", "family", "pairs", "FP", "FN touch",
+                     "FN overlap", "error rate");
+        if (slow_path) {
+            std::fprintf(out, "  %9s", "slow path");
+        }
+        std::fprintf(out, "\n");
+        for (std::size_t f = 0; f < report.families.size(); ++f) {
+            print_counts_row(out, report.families[f].name.c_str(), m.per_family[f], slow_path);
+        }
+        print_counts_row(out, "all families", m.total, slow_path);
+        std::fprintf(out, "\n");
+    }
+}
+
+void print_summary(std::FILE* out, const accuracy_report& report) {
+    const throughput_scene& scene = report.timing_scene;
+    std::fprintf(out, "summary over all families");
+    if (report.settings.measure_speed) {
+        std::fprintf(out,
+                     "; Mpairs/s on a %s broadphase scene (%zu rects, %zu candidate pairs, %s,\n"
+                     "%s, %u thread, %s backend, median of %u runs)",
+                     scene.density, scene.rects, scene.pairs, scene.order, scene.store,
+                     scene.threads, backend_name(report.used), report.settings.timing_reps);
+    }
+    std::fprintf(out, ":\n");
+    std::fprintf(out, "  %-14s %9s %9s %9s %11s  %10s  %9s\n", "method", "pairs", "FP", "FN touch",
+                 "FN overlap", "error rate", "Mpairs/s");
+    for (const method_result& m : report.methods) {
+        const error_counts& c = m.total;
+        std::fprintf(out, "  %-14s %9" PRIu64 " %9" PRIu64 " %9" PRIu64 " %11" PRIu64 "  %10s",
+                     method_name(m.test), c.pairs, c.false_positives, c.missed_touching,
+                     c.missed_overlapping, format_rate(c.error_rate()).c_str());
+        if (report.settings.measure_speed) {
+            std::fprintf(out, "  %9.1f\n", m.mpairs_per_second);
+        } else {
+            std::fprintf(out, "  %9s\n", "-");
+        }
+    }
+}
+
+}  // namespace obbsat::accuracy

@@ -1,0 +1,376 @@
+// obbsat gen: one hard-case suite family written as files the collide command
+// reads, with the exact oracle's truth beside them.
+//
+// All or nothing: the suite and its truth are computed first, then the five
+// files are written and flushed to disk inside a fresh temporary directory;
+// only when all five are complete do they move into place. A DIR that does not
+// exist yet is that temporary directory renamed (one atomic step); an existing
+// DIR gets each file renamed into it (each file replaced atomically, other
+// files in DIR left alone). Any error before that removes the temporary
+// directory and leaves DIR as it was.
+#include "accuracy_commands.hpp"
+#include "atomic_output.hpp"
+#include "cli_args.hpp"
+
+#include <obbsat/oracle/classify_pairs.hpp>
+#include <obbsat/suites/family.hpp>
+#include <obbsat/suites/suite.hpp>
+
+#include <cerrno>
+#include <cinttypes>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace obbsat::cli {
+
+namespace {
+
+const char* const file_names[] = {"rects.csv", "pairs.csv", "truth_class.txt", "truth.txt",
+                                  "tags.txt"};
+
+const std::vector<option_spec>& gen_option_specs() {
+    static const std::vector<option_spec> specs = {
+        {"out", "DIR", "directory to write the five files into; created if missing (required)"},
+        {"pairs", "N", "pairs to generate (default: 10000)"},
+        {"seed", "S", "suite seed (default: 1)"},
+        {"help", "", "show this help"},
+    };
+    return specs;
+}
+
+std::string family_list() {
+    std::string known;
+    for (const suites::family f : suites::all_families()) {
+        known += known.empty() ? "" : ", ";
+        known += suites::family_name(f);
+    }
+    return known;
+}
+
+std::optional<suites::family> find_family(std::string_view name) {
+    for (const suites::family f : suites::all_families()) {
+        if (name == suites::family_name(f)) {
+            return f;
+        }
+    }
+    return std::nullopt;
+}
+
+// The words that are not options nor the values of options given as
+// "--name value", so FAMILY may stand anywhere on the line.
+struct split_words {
+    std::vector<std::string_view> positional;
+    arguments options;
+};
+
+split_words split_positional(const arguments& args) {
+    split_words out;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view word = args[i];
+        if (word.size() < 2 || word.substr(0, 2) != "--") {
+            out.positional.push_back(word);
+            continue;
+        }
+        out.options.push_back(word);
+        const bool takes_value = word != "--help" && word.find('=') == std::string_view::npos;
+        if (takes_value && i + 1 < args.size()) {
+            out.options.push_back(args[++i]);
+        }
+    }
+    return out;
+}
+
+std::string error_text(const std::string& path, const char* what, int error) {
+    return path + ": " + what + ": " + std::strerror(error);
+}
+
+// One file of the suite, written into the temporary directory; errors name
+// the path the file is meant for, as that is the one the user knows.
+class suite_file {
+public:
+    suite_file(const std::string& temp_path, std::string final_path)
+        : final_path_(std::move(final_path)) {
+        file_ = std::fopen(temp_path.c_str(), "wb");
+        if (file_ == nullptr) {
+            throw io::output_error(error_text(final_path_, "cannot create", errno));
+        }
+    }
+    ~suite_file() {
+        if (file_ != nullptr) {
+            std::fclose(file_);
+        }
+    }
+    suite_file(const suite_file&) = delete;
+    suite_file& operator=(const suite_file&) = delete;
+
+    void line(const char* text, std::size_t size) {
+        buffer_.append(text, size);
+        buffer_ += '\n';
+        if (buffer_.size() >= (std::size_t{1} << 20)) {
+            flush_buffer();
+        }
+    }
+    void line(const std::string& text) { line(text.data(), text.size()); }
+
+    // Everything on disk before anything is renamed into place.
+    void finish() {
+        flush_buffer();
+        if (std::fflush(file_) != 0) {
+            throw io::output_error(error_text(final_path_, "write error", errno));
+        }
+        if (::fsync(::fileno(file_)) != 0) {
+            throw io::output_error(error_text(final_path_, "cannot flush to disk", errno));
+        }
+        const int closed = std::fclose(file_);
+        file_ = nullptr;
+        if (closed != 0) {
+            throw io::output_error(error_text(final_path_, "write error", errno));
+        }
+    }
+
+private:
+    void flush_buffer() {
+        if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
+            throw io::output_error(error_text(final_path_, "write error", errno));
+        }
+        buffer_.clear();
+    }
+
+    std::string final_path_;
+    std::FILE* file_ = nullptr;
+    std::string buffer_;
+};
+
+// A temporary directory removed with its files unless released.
+class temp_directory {
+public:
+    explicit temp_directory(std::string path) : path_(std::move(path)) {}
+    ~temp_directory() {
+        if (path_.empty()) {
+            return;
+        }
+        for (const char* name : file_names) {
+            ::unlink((path_ + "/" + name).c_str());
+        }
+        ::rmdir(path_.c_str());
+    }
+    temp_directory(const temp_directory&) = delete;
+    temp_directory& operator=(const temp_directory&) = delete;
+
+    const std::string& path() const { return path_; }
+    void release() { path_.clear(); }
+
+private:
+    std::string path_;
+};
+
+std::string without_trailing_slashes(std::string path) {
+    while (path.size() > 1 && path.back() == '/') {
+        path.pop_back();
+    }
+    return path;
+}
+
+// The directory that will hold DIR, and DIR's last name.
+std::pair<std::string, std::string> parent_and_name(const std::string& dir) {
+    const std::size_t slash = dir.rfind('/');
+    if (slash == std::string::npos) {
+        return {".", dir};
+    }
+    return {slash == 0 ? "/" : dir.substr(0, slash), dir.substr(slash + 1)};
+}
+
+std::string make_temp_directory(const std::string& pattern, const std::string& dir) {
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    if (::mkdtemp(name.data()) == nullptr) {
+        throw io::output_error(error_text(dir, "cannot create a temporary directory for it", errno));
+    }
+    return name.data();
+}
+
+void sync_directory(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        ::fsync(fd);  // durability of the renames only; the files are complete either way
+        ::close(fd);
+    }
+}
+
+void write_suite_files(const std::string& temp, const std::string& dir, const suites::suite& s,
+                       const std::vector<oracle::contact>& truth) {
+    auto temp_path = [&](const char* name) { return temp + "/" + name; };
+    auto final_path = [&](const char* name) { return dir + "/" + name; };
+    char text[256];
+
+    {
+        suite_file rects(temp_path("rects.csv"), final_path("rects.csv"));
+        for (const rect& r : s.rects) {
+            // %a prints a float (promoted to double, exactly) as a C99 hex
+            // float that strtof reads back to the same float, subnormals too.
+            const int size = std::snprintf(
+                text, sizeof text, "%a,%a,%a,%a,%a,%a,%a,%a", static_cast<double>(r.ul.x),
+                static_cast<double>(r.ul.y), static_cast<double>(r.ur.x), static_cast<double>(r.ur.y),
+                static_cast<double>(r.lr.x), static_cast<double>(r.lr.y), static_cast<double>(r.ll.x),
+                static_cast<double>(r.ll.y));
+            rects.line(text, static_cast<std::size_t>(size));
+        }
+        rects.finish();
+    }
+    {
+        suite_file pairs(temp_path("pairs.csv"), final_path("pairs.csv"));
+        for (const pair_index& p : s.pairs) {
+            const int size = std::snprintf(text, sizeof text, "%" PRIu32 ",%" PRIu32, p.a, p.b);
+            pairs.line(text, static_cast<std::size_t>(size));
+        }
+        pairs.finish();
+    }
+    {
+        suite_file classes(temp_path("truth_class.txt"), final_path("truth_class.txt"));
+        suite_file verdicts(temp_path("truth.txt"), final_path("truth.txt"));
+        for (const oracle::contact c : truth) {
+            const char letter = oracle::contact_letter(c);
+            const char verdict = c == oracle::contact::separated ? '0' : '1';
+            classes.line(&letter, 1);
+            verdicts.line(&verdict, 1);
+        }
+        classes.finish();
+        verdicts.finish();
+    }
+    {
+        suite_file tags(temp_path("tags.txt"), final_path("tags.txt"));
+        for (std::size_t i = 0; i < s.pairs.size(); ++i) {
+            tags.line(s.tag_of(i));
+        }
+        tags.finish();
+    }
+}
+
+// Moves the complete files from `temp` into `dir`, which exists.
+void move_files_into(const std::string& temp, const std::string& dir) {
+    // Checked for every file before any moves, so that a name taken by a
+    // directory cannot leave DIR with some files new and some old.
+    for (const char* name : file_names) {
+        struct stat existing {};
+        const std::string target = dir + "/" + name;
+        if (::stat(target.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode)) {
+            throw io::output_error(target + ": is a directory, not a file name");
+        }
+    }
+    for (const char* name : file_names) {
+        const std::string target = dir + "/" + name;
+        if (::rename((temp + "/" + name).c_str(), target.c_str()) != 0) {
+            throw io::output_error(error_text(target, "cannot replace it", errno));
+        }
+    }
+}
+
+}  // namespace
+
+void print_gen_help(std::FILE* out) {
+    std::fprintf(out,
+                 "usage: obbsat gen FAMILY --out DIR [--pairs N] [--seed S]\n"
+                 "\n"
+                 "Writes N pairs of one hard-case suite family (pairs on or within a few float\n"
+                 "steps of the boundary between separated, touching and overlapping) into DIR:\n"
+                 "  rects.csv        one rect per line, ulx,uly,urx,ury,lrx,lry,llx,lly as C99\n"
+                 "                   hex floats (strtof reads them back exactly)\n"
+                 "  pairs.csv        one pair per line, i,j (0-based lines of rects.csv)\n"
+                 "  truth_class.txt  per pair, the exact oracle's S (separated), T (touching)\n"
+                 "                   or O (overlapping)\n"
+                 "  truth.txt        per pair, 1 if the rects collide (touching counts), else 0:\n"
+                 "                   what 'obbsat collide --method exact' prints\n"
+                 "  tags.txt         per pair, how it was built, e.g. corner:touch\n"
+                 "Line k of pairs.csv, truth_class.txt, truth.txt and tags.txt is pair k.\n"
+                 "The same family, N and seed give the same bytes on every machine.\n"
+                 "\n"
+                 "families: %s\n"
+                 "\n"
+                 "all or nothing: the files are written and flushed in a temporary directory\n"
+                 "beside DIR (inside it, if DIR exists) and only then moved into place; a new\n"
+                 "DIR appears whole in one rename, an existing DIR gets each of the five files\n"
+                 "replaced and keeps its other files. On an error DIR is left as it was.\n"
+                 "\n"
+                 "options:\n",
+                 family_list().c_str());
+    print_options(out, gen_option_specs());
+    std::fprintf(out,
+                 "\n"
+                 "example:\n"
+                 "  obbsat gen tiles --out tiles --pairs 50000 --seed 3\n"
+                 "  obbsat collide --rects tiles/rects.csv --pairs tiles/pairs.csv --method exact"
+                 " | cmp - tiles/truth.txt\n");
+}
+
+int run_gen(const arguments& args) {
+    const split_words words = split_positional(args);
+    const parsed_options options = parse_options(words.options, gen_option_specs());
+    if (words.positional.empty()) {
+        throw usage_error("missing FAMILY (one of " + family_list() + ")");
+    }
+    if (words.positional.size() > 1) {
+        throw usage_error("unexpected argument '" + std::string(words.positional[1]) + "'");
+    }
+    const std::string_view family_word = words.positional.front();
+    const std::optional<suites::family> family = find_family(family_word);
+    if (!family) {
+        throw usage_error("unknown family '" + std::string(family_word) + "' (known: " +
+                          family_list() + ")");
+    }
+    const std::string dir = without_trailing_slashes(std::string(options.required("out")));
+    if (dir.empty()) {
+        throw usage_error("--out: expected a directory name, got ''");
+    }
+    std::size_t pairs = 10000;
+    if (const auto v = options.value("pairs")) {
+        pairs = static_cast<std::size_t>(parse_number_option("pairs", *v, 1, 100000000));
+    }
+    std::uint64_t seed = 1;
+    if (const auto v = options.value("seed")) {
+        seed = parse_number_option("seed", *v, 0, UINT64_MAX);
+    }
+
+    struct stat existing {};
+    const bool dir_exists = ::stat(dir.c_str(), &existing) == 0;
+    if (dir_exists && !S_ISDIR(existing.st_mode)) {
+        throw io::output_error(dir + ": exists and is not a directory");
+    }
+
+    const suites::suite s = suites::make_family(*family, seed, pairs);
+    std::vector<oracle::contact> truth(s.pairs.size());
+    oracle::classify_pairs(s.rects.data(), s.rects.size(), s.pairs.data(), s.pairs.size(),
+                           truth.data());
+
+    const auto [parent, name] = parent_and_name(dir);
+    const std::string pattern = dir_exists ? dir + "/.obbsat-gen.tmp.XXXXXX"
+                                           : parent + "/." + name + ".tmp.XXXXXX";
+    temp_directory temp(make_temp_directory(pattern, dir));
+    write_suite_files(temp.path(), dir, s, truth);
+
+    if (dir_exists) {
+        move_files_into(temp.path(), dir);
+        sync_directory(dir);
+    } else {
+        // mkdtemp made it private (0700); DIR gets what mkdir would give it.
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        if (::chmod(temp.path().c_str(), static_cast<mode_t>(0777 & ~mask)) != 0 ||
+            ::rename(temp.path().c_str(), dir.c_str()) != 0) {
+            throw io::output_error(error_text(dir, "cannot create it", errno));
+        }
+        temp.release();
+        sync_directory(parent);
+    }
+    std::printf("%s: %zu pairs of family %s (seed %" PRIu64 ") over %zu rects\n", dir.c_str(),
+                s.pairs.size(), suites::family_name(*family), seed, s.rects.size());
+    return exit_success;
+}
+
+}  // namespace obbsat::cli

@@ -22,9 +22,11 @@ using arguments = std::vector<std::string_view>;
 int run_collide(const arguments& args);
 int run_backends(const arguments& args);
 int run_demo(const arguments& args);
+int run_draw(const arguments& args);
 
 void print_collide_help(std::FILE* out);
 void print_backends_help(std::FILE* out);
 void print_demo_help(std::FILE* out);
+void print_draw_help(std::FILE* out);
 
 }  // namespace obbsat::cli

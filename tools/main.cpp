@@ -43,6 +43,8 @@ constexpr subcommand subcommands[] = {
      print_gen_help},
     {"accuracy", "score every method against the exact oracle on every suite family",
      run_accuracy, print_accuracy_help},
+    {"draw", "an SVG picture of chosen pairs: verdict, axes and exact class",
+     run_draw, print_draw_help},
 };
 
 void print_main_help(std::FILE* out) {

@@ -1,0 +1,230 @@
+#include "svg_pair_contact.hpp"
+
+#include <obbsat/oracle/orientation.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace obbsat::svg {
+
+namespace {
+
+// The inset shows about this many gaps (or depths) across...
+constexpr double inset_gaps_across = 20.0;
+// ...and at least this many float ulps, so a contact without any gap still
+// shows the grid it lies on.
+constexpr double inset_min_ulps = 16.0;
+// An inset that magnifies less than this adds nothing to the main view.
+constexpr double inset_min_zoom = 4.0;
+
+std::array<point, 4> corners_of(const rect& r) { return {r.ul, r.ur, r.lr, r.ll}; }
+
+struct vec {
+    double x;
+    double y;
+};
+
+vec operator-(vec u, vec v) { return {u.x - v.x, u.y - v.y}; }
+vec operator+(vec u, vec v) { return {u.x + v.x, u.y + v.y}; }
+vec operator*(double s, vec v) { return {s * v.x, s * v.y}; }
+double dot(vec u, vec v) { return u.x * v.x + u.y * v.y; }
+double cross(vec u, vec v) { return u.x * v.y - u.y * v.x; }
+double length(vec v) { return std::hypot(v.x, v.y); }
+
+// The closest points of two outline segments, or where they meet.
+struct segment_contact {
+    vec on_a;
+    vec on_b;
+    double distance;
+    bool meet;
+    double shared_length;  // of a collinear overlap, 0 for a single point
+};
+
+// The point of segment [p, q] closest to r.
+vec closest_on_segment(vec p, vec q, vec r) {
+    const vec d = q - p;
+    const double dd = dot(d, d);
+    if (dd == 0.0) {
+        return p;
+    }
+    const double t = std::clamp(dot(r - p, d) / dd, 0.0, 1.0);
+    return p + t * d;
+}
+
+// True iff r, already known collinear with p and q, lies on the closed segment.
+bool within_segment(point p, point q, point r) {
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+}
+
+class outline_geometry {
+public:
+    explicit outline_geometry(world_point center) : center_(center) {}
+
+    vec relative(point p) const {
+        return {static_cast<double>(p.x) - center_.x, static_cast<double>(p.y) - center_.y};
+    }
+
+    // Segment [a0, a1] of A against [b0, b1] of B.
+    segment_contact between(point a0, point a1, point b0, point b1) const {
+        const int side_b0 = oracle::orientation(a0, a1, b0);
+        const int side_b1 = oracle::orientation(a0, a1, b1);
+        const int side_a0 = oracle::orientation(b0, b1, a0);
+        const int side_a1 = oracle::orientation(b0, b1, a1);
+        const vec pa0 = relative(a0), pa1 = relative(a1), pb0 = relative(b0), pb1 = relative(b1);
+        if (side_b0 * side_b1 < 0 && side_a0 * side_a1 < 0) {
+            const vec da = pa1 - pa0;
+            const vec db = pb1 - pb0;
+            const double t = cross(pb0 - pa0, db) / cross(da, db);
+            const vec at = pa0 + t * da;
+            return {at, at, 0.0, true, 0.0};
+        }
+        // Endpoints lying on the other segment: a touch, or the ends of a
+        // collinear overlap.
+        vec touching[4];
+        int count = 0;
+        if (side_b0 == 0 && within_segment(a0, a1, b0)) touching[count++] = pb0;
+        if (side_b1 == 0 && within_segment(a0, a1, b1)) touching[count++] = pb1;
+        if (side_a0 == 0 && within_segment(b0, b1, a0)) touching[count++] = pa0;
+        if (side_a1 == 0 && within_segment(b0, b1, a1)) touching[count++] = pa1;
+        if (count > 0) {
+            vec from = touching[0];
+            vec to = touching[0];
+            double longest = 0.0;
+            for (int i = 0; i < count; ++i) {
+                for (int j = i + 1; j < count; ++j) {
+                    const double d = length(touching[j] - touching[i]);
+                    if (d > longest) {
+                        longest = d;
+                        from = touching[i];
+                        to = touching[j];
+                    }
+                }
+            }
+            const vec middle = from + 0.5 * (to - from);
+            return {middle, middle, 0.0, true, longest};
+        }
+        segment_contact best{pa0, closest_on_segment(pb0, pb1, pa0), 0.0, false, 0.0};
+        best.distance = length(best.on_b - best.on_a);
+        const auto consider = [&best](vec on_a, vec on_b) {
+            const double d = length(on_b - on_a);
+            if (d < best.distance) {
+                best.on_a = on_a;
+                best.on_b = on_b;
+                best.distance = d;
+            }
+        };
+        consider(pa1, closest_on_segment(pb0, pb1, pa1));
+        consider(closest_on_segment(pa0, pa1, pb0), pb0);
+        consider(closest_on_segment(pa0, pa1, pb1), pb1);
+        return best;
+    }
+
+    world_point absolute(vec v) const { return {center_.x + v.x, center_.y + v.y}; }
+
+private:
+    world_point center_;
+};
+
+// How far the interiors overlap: the smallest overlap of the two rects'
+// extents over the normals of all eight edges (the penetration depth of two
+// convex quads), in double.
+double overlap_depth(const rect& a, const rect& b, const outline_geometry& geometry) {
+    std::array<vec, 4> ca, cb;
+    const std::array<point, 4> fa = corners_of(a), fb = corners_of(b);
+    for (std::size_t i = 0; i < 4; ++i) {
+        ca[i] = geometry.relative(fa[i]);
+        cb[i] = geometry.relative(fb[i]);
+    }
+    double depth = HUGE_VAL;
+    for (const auto* quad : {&ca, &cb}) {
+        for (std::size_t k = 0; k < 4; ++k) {
+            const vec edge = (*quad)[(k + 1) % 4] - (*quad)[k];
+            const double edge_length = length(edge);
+            if (edge_length == 0.0) {
+                continue;
+            }
+            const vec normal{-edge.y / edge_length, edge.x / edge_length};
+            double a_min = HUGE_VAL, a_max = -HUGE_VAL, b_min = HUGE_VAL, b_max = -HUGE_VAL;
+            for (std::size_t i = 0; i < 4; ++i) {
+                a_min = std::min(a_min, dot(ca[i], normal));
+                a_max = std::max(a_max, dot(ca[i], normal));
+                b_min = std::min(b_min, dot(cb[i], normal));
+                b_max = std::max(b_max, dot(cb[i], normal));
+            }
+            depth = std::min(depth, std::max(0.0, std::min(a_max - b_min, b_max - a_min)));
+        }
+    }
+    return depth == HUGE_VAL ? 0.0 : depth;
+}
+
+}  // namespace
+
+double float_spacing(double magnitude) {
+    if (!(magnitude >= 0x1p-126)) {
+        return 0x1p-149;
+    }
+    int exponent = 0;
+    std::frexp(magnitude, &exponent);
+    return std::ldexp(1.0, exponent - 24);
+}
+
+contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact) {
+    contact_view view;
+    const std::array<point, 4> fa = corners_of(a), fb = corners_of(b);
+    double x_min = HUGE_VAL, x_max = -HUGE_VAL, y_min = HUGE_VAL, y_max = -HUGE_VAL;
+    for (const auto* quad : {&fa, &fb}) {
+        for (const point p : *quad) {
+            x_min = std::min(x_min, static_cast<double>(p.x));
+            x_max = std::max(x_max, static_cast<double>(p.x));
+            y_min = std::min(y_min, static_cast<double>(p.y));
+            y_max = std::max(y_max, static_cast<double>(p.y));
+        }
+    }
+    view.center = {0.5 * x_min + 0.5 * x_max, 0.5 * y_min + 0.5 * y_max};
+    view.size = std::max(x_max - x_min, y_max - y_min);
+    if (view.size == 0.0) {
+        // Eight equal corners: show a few ulps around them.
+        view.size = inset_min_ulps *
+                    float_spacing(std::max(std::fabs(view.center.x), std::fabs(view.center.y)));
+    }
+
+    const outline_geometry geometry(view.center);
+    segment_contact best{};
+    bool first = true;
+    for (std::size_t i = 0; i < 4; ++i) {
+        for (std::size_t j = 0; j < 4; ++j) {
+            const segment_contact c =
+                geometry.between(fa[i], fa[(i + 1) % 4], fb[j], fb[(j + 1) % 4]);
+            // Among contacts, the longest shared stretch shows best.
+            const bool better = first || c.distance < best.distance ||
+                                (c.meet && !best.meet) ||
+                                (c.meet && best.meet && c.shared_length > best.shared_length);
+            if (better) {
+                best = c;
+                first = false;
+            }
+        }
+    }
+    view.closest_a = geometry.absolute(best.on_a);
+    view.closest_b = geometry.absolute(best.on_b);
+    view.outlines_meet = best.meet;
+    view.distance = best.meet ? 0.0 : best.distance;
+    view.depth = exact == oracle::contact::overlapping ? overlap_depth(a, b, geometry) : 0.0;
+
+    const double limit = grazing_fraction * view.size;
+    const bool grazing = view.outlines_meet ? view.depth < limit : view.distance < limit;
+    if (grazing) {
+        const vec middle = 0.5 * (best.on_a + best.on_b);
+        view.inset_center = geometry.absolute(middle);
+        const double measure = view.outlines_meet ? view.depth : view.distance;
+        const double ulp = float_spacing(
+            std::max(std::fabs(view.inset_center.x), std::fabs(view.inset_center.y)));
+        view.inset_span = std::max(inset_gaps_across * measure, inset_min_ulps * ulp);
+        view.has_inset = view.inset_span * inset_min_zoom <= view.size;
+    }
+    return view;
+}
+
+}  // namespace obbsat::svg

@@ -1,0 +1,571 @@
+#include "svg_pair_panel.hpp"
+
+#include "svg_pair_axes.hpp"
+#include "svg_pair_contact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace obbsat::svg {
+
+namespace {
+
+// Layout of a panel, in pixels from its top-left corner.
+constexpr double margin = 10;
+constexpr double main_left = margin;
+constexpr double main_top = 50;
+constexpr double main_size = 360;
+constexpr double main_padding = 26;  // room for corner and axis labels
+constexpr double side_left = main_left + main_size + margin;
+constexpr double side_width = panel_width - side_left - margin;
+constexpr double inset_size = side_width;
+constexpr double caption_top = main_top + main_size + 16;
+constexpr double line_height = 12;
+
+constexpr std::array<const char*, 4> corner_names = {"UL", "UR", "LR", "LL"};
+
+std::array<point, 4> corners_of(const rect& r) { return {r.ul, r.ur, r.lr, r.ll}; }
+
+const char* contact_name(oracle::contact c) {
+    switch (c) {
+        case oracle::contact::separated: return "separated";
+        case oracle::contact::touching: return "touching";
+        case oracle::contact::overlapping: return "overlapping";
+    }
+    return "unknown";
+}
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+std::string hex_float(float value) { return format("%a", static_cast<double>(value)); }
+
+std::string hex_rect(const rect& r) {
+    std::string out;
+    for (const point p : corners_of(r)) {
+        out += (out.empty() ? "" : ",") + hex_float(p.x) + "," + hex_float(p.y);
+    }
+    return out;
+}
+
+struct svg_point {
+    double x;
+    double y;
+};
+
+// A square window of the panel onto the world: `center` is drawn at the
+// window's middle, `scale` pixels per world unit, y pointing up.
+struct window {
+    world_point center;
+    double scale;
+    double left;
+    double top;
+    double size;
+
+    svg_point at(double x, double y) const {
+        return {left + 0.5 * size + (x - center.x) * scale, top + 0.5 * size - (y - center.y) * scale};
+    }
+    svg_point at(point p) const { return at(static_cast<double>(p.x), static_cast<double>(p.y)); }
+    svg_point middle() const { return {left + 0.5 * size, top + 0.5 * size}; }
+    bool contains(svg_point p) const {
+        return p.x >= left && p.x <= left + size && p.y >= top && p.y <= top + size;
+    }
+};
+
+// Geometry is cut to a little more than its window before it is written, so
+// that far-away points (an inset magnifies by up to 1e46) never reach the
+// file; the window's clip path makes the final cut.
+constexpr double cut_slack = 4;
+
+// Liang-Barsky: shortens [p, q] to the part inside the window's cut box;
+// false if nothing is left.
+bool cut_segment(const window& w, svg_point& p, svg_point& q) {
+    const double lo_x = w.left - cut_slack, hi_x = w.left + w.size + cut_slack;
+    const double lo_y = w.top - cut_slack, hi_y = w.top + w.size + cut_slack;
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    double t0 = 0.0, t1 = 1.0;
+    const double steps[4] = {-dx, dx, -dy, dy};
+    const double room[4] = {p.x - lo_x, hi_x - p.x, p.y - lo_y, hi_y - p.y};
+    for (int i = 0; i < 4; ++i) {
+        if (steps[i] == 0.0) {
+            if (room[i] < 0.0) {
+                return false;
+            }
+            continue;
+        }
+        const double t = room[i] / steps[i];
+        if (steps[i] < 0.0) {
+            t0 = std::max(t0, t);
+        } else {
+            t1 = std::min(t1, t);
+        }
+    }
+    if (t0 > t1) {
+        return false;
+    }
+    const svg_point from{p.x + t0 * dx, p.y + t0 * dy};
+    const svg_point to{p.x + t1 * dx, p.y + t1 * dy};
+    p = from;
+    q = to;
+    return true;
+}
+
+// Sutherland-Hodgman: the part of a polygon inside the window's cut box.
+std::vector<svg_point> cut_polygon(const window& w, std::vector<svg_point> polygon) {
+    const double bounds[4] = {w.left - cut_slack, w.left + w.size + cut_slack, w.top - cut_slack,
+                              w.top + w.size + cut_slack};
+    for (int side = 0; side < 4; ++side) {
+        const auto inside = [&](svg_point p) {
+            switch (side) {
+                case 0: return p.x >= bounds[0];
+                case 1: return p.x <= bounds[1];
+                case 2: return p.y >= bounds[2];
+                default: return p.y <= bounds[3];
+            }
+        };
+        const auto crossing = [&](svg_point p, svg_point q) {
+            const bool vertical_side = side < 2;
+            const double edge = bounds[side];
+            const double t = vertical_side ? (edge - p.x) / (q.x - p.x) : (edge - p.y) / (q.y - p.y);
+            return svg_point{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+        };
+        std::vector<svg_point> kept;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const svg_point p = polygon[i];
+            const svg_point q = polygon[(i + 1) % polygon.size()];
+            if (inside(p)) {
+                kept.push_back(p);
+                if (!inside(q)) {
+                    kept.push_back(crossing(p, q));
+                }
+            } else if (inside(q)) {
+                kept.push_back(crossing(p, q));
+            }
+        }
+        polygon = std::move(kept);
+        if (polygon.empty()) {
+            break;
+        }
+    }
+    return polygon;
+}
+
+std::string points_text(const std::vector<svg_point>& polygon) {
+    std::string out;
+    for (const svg_point p : polygon) {
+        out += (out.empty() ? "" : " ") + coordinate(p.x) + "," + coordinate(p.y);
+    }
+    return out;
+}
+
+void draw_segment(writer& out, const window& w, svg_point p, svg_point q, attributes style) {
+    if (!cut_segment(w, p, q)) {
+        return;
+    }
+    out.leaf("line", style.set("x1", p.x).set("y1", p.y).set("x2", q.x).set("y2", q.y));
+}
+
+// A label readable over lines: white halo behind dark text.
+void draw_label(writer& out, svg_point at, const std::string& text, double font_size,
+                const char* color, const char* anchor = "middle") {
+    out.text("text",
+             attributes()
+                 .set("x", at.x)
+                 .set("y", at.y)
+                 .set("font-size", font_size)
+                 .set("fill", color)
+                 .set("text-anchor", anchor)
+                 .set("dominant-baseline", "central")
+                 .set("stroke", "white")
+                 .set("stroke-width", 2.5)
+                 .set("paint-order", "stroke"),
+             text);
+}
+
+void clip_path(writer& out, const std::string& id, const window& w) {
+    out.open("clipPath", attributes().set("id", id));
+    out.leaf("rect", attributes().set("x", w.left).set("y", w.top).set("width", w.size).set("height", w.size));
+    out.close();
+}
+
+// A quad: translucent fill, outline, corner dots and, for corners inside the
+// window, their names placed outwards from the quad's middle.
+void draw_quad(writer& out, const window& w, const rect& r, const char* color, const char* css_class) {
+    const std::array<point, 4> corners = corners_of(r);
+    std::vector<svg_point> polygon;
+    for (const point p : corners) {
+        polygon.push_back(w.at(p));
+    }
+    out.open("g", attributes().set("class", css_class));
+    const std::vector<svg_point> fill = cut_polygon(w, polygon);
+    if (fill.size() >= 3) {
+        out.leaf("polygon", attributes()
+                                .set("points", points_text(fill))
+                                .set("fill", color)
+                                .set("fill-opacity", "0.13")
+                                .set("stroke", "none"));
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+        draw_segment(out, w, polygon[i], polygon[(i + 1) % 4],
+                     attributes().set("stroke", color).set("stroke-width", 1.6));
+    }
+    svg_point middle{0, 0};
+    for (const svg_point p : polygon) {
+        middle.x += 0.25 * p.x;
+        middle.y += 0.25 * p.y;
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+        const svg_point p = polygon[i];
+        if (!w.contains(p)) {
+            continue;
+        }
+        out.leaf("circle", attributes().set("cx", p.x).set("cy", p.y).set("r", 2.4).set("fill", color));
+        double dx = p.x - middle.x, dy = p.y - middle.y;
+        const double d = std::hypot(dx, dy);
+        if (d < 1e-9) {
+            dx = -1;
+            dy = -1;
+        } else {
+            dx /= d;
+            dy /= d;
+        }
+        draw_label(out, svg_point{p.x + 10 * dx, p.y + 10 * dy}, corner_names[i], 8, color);
+    }
+    out.close();
+}
+
+// The unit direction of an axis in the window (y flipped), or nothing for a
+// zero or non-finite axis.
+bool axis_direction(const axis_view& axis, svg_point& unit) {
+    const double length = std::hypot(axis.axis_x, axis.axis_y);
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        return false;
+    }
+    unit = {axis.axis_x / length, -axis.axis_y / length};
+    return true;
+}
+
+// Where scalar `s` of `axis` lies along the axis line through the window's
+// centre, in pixels from that centre (clamped far outside the window when
+// the scalar overflowed); false for NaN.
+bool scalar_offset(const window& w, const axis_view& axis, double s, double& offset) {
+    const double length = std::hypot(axis.axis_x, axis.axis_y);
+    if (std::isnan(s)) {
+        return false;
+    }
+    const double origin_along = ((axis.origin_x - w.center.x) * axis.axis_x +
+                                 (axis.origin_y - w.center.y) * axis.axis_y) /
+                                length;
+    const double along = s / length + origin_along;
+    offset = std::clamp(along * w.scale, -4 * w.size, 4 * w.size);
+    return !std::isnan(offset);
+}
+
+// The line where scalar `s` of `axis` is constant: one side of the gap.
+void draw_extent_end(writer& out, const window& w, const axis_view& axis, double s,
+                     const char* color) {
+    svg_point unit{};
+    double offset = 0;
+    if (!axis_direction(axis, unit) || !scalar_offset(w, axis, s, offset)) {
+        return;
+    }
+    const svg_point middle = w.middle();
+    const svg_point foot{middle.x + offset * unit.x, middle.y + offset * unit.y};
+    const svg_point across{-unit.y * 2 * w.size, unit.x * 2 * w.size};
+    draw_segment(out, w, svg_point{foot.x - across.x, foot.y - across.y},
+                 svg_point{foot.x + across.x, foot.y + across.y},
+                 attributes()
+                     .set("class", "extent-end")
+                     .set("stroke", color)
+                     .set("stroke-width", 1.2)
+                     .set("stroke-dasharray", "5 3"));
+}
+
+// The two extent ends that face each other across the gap.
+void draw_gap_lines(writer& out, const window& w, const axis_view& axis) {
+    const bool a_first = axis.a_max < axis.b_min;
+    draw_extent_end(out, w, axis, a_first ? axis.a_max : axis.a_min, color_a);
+    draw_extent_end(out, w, axis, a_first ? axis.b_min : axis.b_max, color_b);
+}
+
+void draw_bar(writer& out, const window& w, const axis_view& axis, double lo, double hi,
+              double side, const char* color, const char* css_class) {
+    svg_point unit{};
+    double from = 0, to = 0;
+    if (!axis_direction(axis, unit) || !scalar_offset(w, axis, lo, from) ||
+        !scalar_offset(w, axis, hi, to)) {
+        return;
+    }
+    const svg_point middle = w.middle();
+    const svg_point shift{-unit.y * side, unit.x * side};
+    draw_segment(out, w, svg_point{middle.x + from * unit.x + shift.x, middle.y + from * unit.y + shift.y},
+                 svg_point{middle.x + to * unit.x + shift.x, middle.y + to * unit.y + shift.y},
+                 attributes()
+                     .set("class", css_class)
+                     .set("stroke", color)
+                     .set("stroke-width", 5)
+                     .set("stroke-linecap", "butt")
+                     .set("stroke-opacity", "0.85"));
+}
+
+void draw_axis_line(writer& out, const window& w, const axis_view& axis, int slot, bool separating) {
+    svg_point unit{};
+    if (!axis_direction(axis, unit)) {
+        return;
+    }
+    const svg_point middle = w.middle();
+    const double reach = 0.5 * w.size;
+    attributes style;
+    if (separating) {
+        style.set("stroke", "#111").set("stroke-width", 2.6);
+    } else {
+        style.set("stroke", "#8a8a8a").set("stroke-width", 0.9).set("stroke-dasharray", "6 4");
+    }
+    draw_segment(out, w, svg_point{middle.x - reach * unit.x, middle.y - reach * unit.y},
+                 svg_point{middle.x + reach * unit.x, middle.y + reach * unit.y}, style);
+    // Parallel axes would put their labels on top of each other: each label
+    // sits at its own distance from the centre.
+    const double at = (0.30 + 0.045 * slot) * w.size;
+    draw_label(out, svg_point{middle.x + at * unit.x, middle.y + at * unit.y}, axis.label,
+               separating ? 13 : 10, separating ? "#111" : "#555");
+}
+
+std::string gap_text(const axis_view& axis) {
+    const double length = std::hypot(axis.axis_x, axis.axis_y);
+    const double gap = std::max(axis.b_min - axis.a_max, axis.a_min - axis.b_max) / length;
+    if (!std::isfinite(gap)) {
+        return "apart (extents overflowed)";
+    }
+    return "apart, gap " + format("%.3g", gap);
+}
+
+void draw_main_view(writer& out, const pair_drawing& pair, const method_view& axes,
+                    const contact_view& contact, const window& w, const std::string& id) {
+    out.open("g", attributes().set("class", "main-view").set("clip-path", "url(#" + id + "-main)"));
+    out.leaf("rect", attributes()
+                         .set("x", w.left)
+                         .set("y", w.top)
+                         .set("width", w.size)
+                         .set("height", w.size)
+                         .set("fill", "#fbfbfb"));
+    draw_quad(out, w, pair.a, color_a, "rect-a");
+    draw_quad(out, w, pair.b, color_b, "rect-b");
+    for (std::size_t k = 0; k < axes.axes.size(); ++k) {
+        if (static_cast<int>(k) != axes.separating) {
+            draw_axis_line(out, w, axes.axes[k], static_cast<int>(k), false);
+        }
+    }
+    if (axes.separating >= 0) {
+        const axis_view& axis = axes.axes[static_cast<std::size_t>(axes.separating)];
+        out.open("g", attributes().set("class", "separating-axis").set("data-axis", axis.label));
+        draw_gap_lines(out, w, axis);
+        draw_axis_line(out, w, axis, axes.separating, true);
+        draw_bar(out, w, axis, axis.a_min, axis.a_max, 6, color_a, "extent-a");
+        draw_bar(out, w, axis, axis.b_min, axis.b_max, -6, color_b, "extent-b");
+        out.close();
+    }
+    if (contact.has_inset) {
+        const svg_point spot = w.at(contact.inset_center.x, contact.inset_center.y);
+        out.leaf("circle", attributes()
+                               .set("class", "inset-marker")
+                               .set("cx", spot.x)
+                               .set("cy", spot.y)
+                               .set("r", 7)
+                               .set("fill", "none")
+                               .set("stroke", "#222")
+                               .set("stroke-width", 1.2));
+        draw_label(out, svg_point{spot.x + 10, spot.y - 10}, "inset", 8, "#222", "start");
+    }
+    out.close();
+    out.leaf("rect", attributes()
+                         .set("x", w.left)
+                         .set("y", w.top)
+                         .set("width", w.size)
+                         .set("height", w.size)
+                         .set("fill", "none")
+                         .set("stroke", "#bbb"));
+}
+
+void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
+                const contact_view& contact, const window& w, const window& main,
+                const std::string& id) {
+    out.open("g", attributes().set("class", "inset"));
+    out.open("g", attributes().set("clip-path", "url(#" + id + "-inset)"));
+    out.leaf("rect",
+             attributes().set("x", w.left).set("y", w.top).set("width", w.size).set("height", w.size).set("fill", "white"));
+    draw_quad(out, w, pair.a, color_a, "rect-a");
+    draw_quad(out, w, pair.b, color_b, "rect-b");
+    if (axes.separating >= 0) {
+        out.open("g", attributes().set("class", "separating-strip"));
+        draw_gap_lines(out, w, axes.axes[static_cast<std::size_t>(axes.separating)]);
+        out.close();
+    }
+    const svg_point on_a = w.at(contact.closest_a.x, contact.closest_a.y);
+    const svg_point on_b = w.at(contact.closest_b.x, contact.closest_b.y);
+    if (!contact.outlines_meet) {
+        draw_segment(out, w, on_a, on_b,
+                     attributes().set("class", "closest-gap").set("stroke", "#111").set("stroke-width", 1));
+    }
+    for (const svg_point p : {on_a, on_b}) {
+        if (w.contains(p)) {
+            out.leaf("circle", attributes().set("cx", p.x).set("cy", p.y).set("r", 1.8).set("fill", "#111"));
+        }
+    }
+    out.close();
+    out.leaf("rect", attributes()
+                         .set("x", w.left)
+                         .set("y", w.top)
+                         .set("width", w.size)
+                         .set("height", w.size)
+                         .set("fill", "none")
+                         .set("stroke", "#222")
+                         .set("stroke-width", 1.2));
+    const double zoom = w.scale / main.scale;
+    draw_label(out, svg_point{w.left + 5, w.top + 9}, "inset, zoom \xC3\x97" + format("%.3g", zoom), 9,
+               "#111", "start");
+    draw_label(out, svg_point{w.left + 5, w.top + 21}, "width " + format("%.3g", contact.inset_span), 8,
+               "#333", "start");
+    const std::string measure =
+        contact.outlines_meet
+            ? (contact.depth > 0 ? "outlines cross, depth " + format("%.3g", contact.depth) : "outlines meet")
+            : "gap " + format("%.3g", contact.distance);
+    draw_label(out, svg_point{w.left + 5, w.top + w.size - 9}, measure, 9, "#111", "start");
+    out.close();
+}
+
+void draw_legend(writer& out, const pair_drawing& pair, const method_view& axes,
+                 const contact_view& contact, double left, double top) {
+    out.open("g", attributes().set("class", "legend").set("font-size", 9.5));
+    double y = top;
+    const auto line = [&](const std::string& text, bool bold = false, const char* color = "#222") {
+        attributes style;
+        style.set("x", left).set("y", y).set("fill", color);
+        if (bold) {
+            style.set("font-weight", "bold");
+        }
+        out.text("text", style, text);
+        y += line_height;
+    };
+    line(std::string("axes of ") + method_name(pair.test) + " (" + axes.arithmetic + "):", true);
+    for (std::size_t k = 0; k < axes.axes.size(); ++k) {
+        const axis_view& axis = axes.axes[k];
+        const bool separating = static_cast<int>(k) == axes.separating;
+        std::string text = axis.label + "  " + axis.definition + ": ";
+        text += axis.overlap ? std::string("overlap") : gap_text(axis);
+        if (separating) {
+            text += "  \xE2\x86\x90 separates";
+        }
+        line(text, separating, separating ? "#111" : "#444");
+    }
+    if (!axes.note.empty()) {
+        line(axes.note, false, "#8a5a00");
+    }
+    if (contact.outlines_meet) {
+        line(contact.depth > 0 ? "outlines cross; overlap depth " + format("%.3g", contact.depth)
+                               : "outlines meet; interiors do not overlap");
+    } else {
+        line("closest outline points " + format("%.3g", contact.distance) + " apart");
+    }
+    line("pair size " + format("%.3g", contact.size) + ", y up", false, "#666");
+    out.close();
+}
+
+}  // namespace
+
+const char* verdict_word(bool collides) { return collides ? "collide" : "apart"; }
+
+void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double top) {
+    const method_view axes = view_of_method(pair.test, pair.a, pair.b, pair.collides);
+    const contact_view contact = view_of_contact(pair.a, pair.b, pair.exact);
+    const bool exact_collides = pair.exact != oracle::contact::separated;
+    const char* frame_color = pair.collides ? color_collide : color_apart;
+    const std::string id = "panel-" + std::to_string(pair.pair_number);
+
+    out.open("g", attributes()
+                      .set("id", id)
+                      .set("class", std::string("panel verdict-") + verdict_word(pair.collides))
+                      .set("transform", "translate(" + coordinate(left) + "," + coordinate(top) + ")"));
+    out.open("defs");
+    const window main{contact.center, (main_size - 2 * main_padding) / contact.size, main_left,
+                      main_top, main_size};
+    clip_path(out, id + "-main", main);
+    const window inset{contact.inset_center, inset_size / std::max(contact.inset_span, 1e-300),
+                       side_left, main_top, inset_size};
+    if (contact.has_inset) {
+        clip_path(out, id + "-inset", inset);
+    }
+    out.close();
+
+    out.leaf("rect", attributes()
+                         .set("class", "frame")
+                         .set("x", 1.5)
+                         .set("y", 1.5)
+                         .set("width", panel_width - 3)
+                         .set("height", panel_height - 3)
+                         .set("rx", 6)
+                         .set("fill", "white")
+                         .set("stroke", frame_color)
+                         .set("stroke-width", 3));
+
+    const std::string agreement =
+        pair.collides == exact_collides
+            ? "agrees with the exact answer"
+            : (pair.collides ? "DISAGREES: a false collision" : "DISAGREES: a missed collision");
+    out.open("text", attributes().set("class", "title").set("x", margin).set("y", 20).set("fill", "#111"));
+    out.text("tspan", attributes().set("font-size", 14).set("font-weight", "bold"),
+             "pair " + std::to_string(pair.pair_number) + ": " + method_name(pair.test) + " says " +
+                 verdict_word(pair.collides) + ", exact: " + contact_name(pair.exact));
+    out.text("tspan",
+             attributes()
+                 .set("x", margin)
+                 .set("dy", 17)
+                 .set("font-size", 11)
+                 .set("fill", pair.collides == exact_collides ? "#333" : "#b00000"),
+             agreement + "   (A = rect " + std::to_string(pair.rects.a) + ", B = rect " +
+                 std::to_string(pair.rects.b) + ")");
+    out.close();
+
+    // A badge in the verdict's colour, readable at a glance across a grid.
+    const double badge_width = 70;
+    out.leaf("rect", attributes()
+                         .set("x", panel_width - margin - badge_width)
+                         .set("y", 8)
+                         .set("width", badge_width)
+                         .set("height", 20)
+                         .set("rx", 4)
+                         .set("fill", frame_color));
+    out.text("text",
+             attributes()
+                 .set("x", panel_width - margin - 0.5 * badge_width)
+                 .set("y", 22)
+                 .set("font-size", 11)
+                 .set("font-weight", "bold")
+                 .set("fill", "white")
+                 .set("text-anchor", "middle"),
+             pair.collides ? "COLLIDE" : "APART");
+
+    draw_main_view(out, pair, axes, contact, main, id);
+    double legend_top = main_top + 10;
+    if (contact.has_inset) {
+        draw_inset(out, pair, axes, contact, inset, main, id);
+        legend_top = main_top + inset_size + 16;
+    }
+    draw_legend(out, pair, axes, contact, side_left, legend_top);
+
+    out.open("g", attributes().set("class", "caption").set("font-family", "monospace").set("font-size", 6.5).set("fill", "#333"));
+    out.text("text", attributes().set("x", margin).set("y", caption_top),
+             "A rect " + std::to_string(pair.rects.a) + ": " + hex_rect(pair.a));
+    out.text("text", attributes().set("x", margin).set("y", caption_top + 10),
+             "B rect " + std::to_string(pair.rects.b) + ": " + hex_rect(pair.b));
+    out.close();
+    out.close();
+}
+
+}  // namespace obbsat::svg

@@ -1,0 +1,53 @@
+// One pair drawn as a panel: both quads with their corners, the article's four
+// axes through the pair's centre, the axis that separated them (with both
+// extents as bars along it and the two facing extent ends as lines across),
+// the verdict of the method against the exact class, a zoomed inset around a
+// grazing contact, and the corner coordinates as hex floats.
+//
+// Every panel is scaled on its own so that the pair fills it, with positions
+// computed in double relative to the pair's centre: coordinates written to the
+// SVG are small finite numbers whatever the magnitude of the input.
+//
+// The SVG is meant to be read by tests too: the panel is <g id="panel-N"
+// class="panel">, its title is <text class="title">, the separating axis is
+// <g class="separating-axis">, the inset is <g class="inset">.
+#pragma once
+
+#include "svg_writer.hpp"
+
+#include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace obbsat::svg {
+
+inline constexpr double panel_width = 640;
+inline constexpr double panel_height = 446;
+
+/// Colours shared by the panels and the picture's key.
+inline constexpr const char* color_a = "#1f6fd1";
+inline constexpr const char* color_b = "#9b30c8";
+inline constexpr const char* color_collide = "#d62728";
+inline constexpr const char* color_apart = "#2a9d3a";
+
+/// Everything a panel shows about one pair.
+struct pair_drawing {
+    std::uint64_t pair_number;  ///< 0-based line of the pair file (non-comment lines)
+    pair_index rects;           ///< the rectangle indices of A and B
+    rect a;
+    rect b;
+    method test;
+    bool collides;           ///< the method's verdict, as the library gave it
+    oracle::contact exact;   ///< the exact class
+};
+
+/// "collide" or "apart".
+const char* verdict_word(bool collides);
+
+/// Draws the panel of `pair` with its top-left corner at (left, top).
+void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double top);
+
+}  // namespace obbsat::svg

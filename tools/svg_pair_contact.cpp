@@ -38,7 +38,9 @@ struct segment_contact {
     vec on_b;
     double distance;
     bool meet;
-    double shared_length;  // of a collinear overlap, 0 for a single point
+    // Length of the stretch along which the segments are this close: a
+    // collinear overlap, or parallel edges; 0 for a single point.
+    double stretch;
 };
 
 // The point of segment [p, q] closest to r.
@@ -56,6 +58,36 @@ vec closest_on_segment(vec p, vec q, vec r) {
 bool within_segment(point p, point q, point r) {
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
            r.y <= std::max(p.y, q.y);
+}
+
+// Two parallel edges are closest along a whole stretch; its middle shows the
+// gap better than the stretch's end, which is a corner where labels crowd.
+// (For the picture only: a tolerance is harmless here.)
+void centre_parallel_stretch(vec pa0, vec pa1, vec pb0, vec pb1, segment_contact& best) {
+    const vec d = pa1 - pa0;
+    const double dd = dot(d, d);
+    if (dd == 0.0) {
+        return;
+    }
+    const double t0 = dot(pb0 - pa0, d) / dd;
+    const double t1 = dot(pb1 - pa0, d) / dd;
+    const double lo = std::max(0.0, std::min(t0, t1));
+    const double hi = std::min(1.0, std::max(t0, t1));
+    if (!(hi > lo)) {
+        return;
+    }
+    const vec from = pa0 + lo * d;
+    const vec to = pa0 + hi * d;
+    const double d_from = length(closest_on_segment(pb0, pb1, from) - from);
+    const double d_to = length(closest_on_segment(pb0, pb1, to) - to);
+    const double tolerance = 1e-9 * std::max(d_from, d_to);
+    if (std::fabs(d_from - d_to) > tolerance || std::fabs(d_from - best.distance) > tolerance) {
+        return;
+    }
+    const vec middle = pa0 + (0.5 * (lo + hi)) * d;
+    best.on_a = middle;
+    best.on_b = closest_on_segment(pb0, pb1, middle);
+    best.stretch = length(to - from);
 }
 
 class outline_geometry {
@@ -118,6 +150,7 @@ public:
         consider(pa1, closest_on_segment(pb0, pb1, pa1));
         consider(closest_on_segment(pa0, pa1, pb0), pb0);
         consider(closest_on_segment(pa0, pa1, pb1), pb1);
+        centre_parallel_stretch(pa0, pa1, pb0, pb1, best);
         return best;
     }
 
@@ -197,10 +230,12 @@ contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact
         for (std::size_t j = 0; j < 4; ++j) {
             const segment_contact c =
                 geometry.between(fa[i], fa[(i + 1) % 4], fb[j], fb[(j + 1) % 4]);
-            // Among contacts, the longest shared stretch shows best.
-            const bool better = first || c.distance < best.distance ||
-                                (c.meet && !best.meet) ||
-                                (c.meet && best.meet && c.shared_length > best.shared_length);
+            // Of equally close features, the longest stretch shows best.
+            const double tolerance = 1e-9 * best.distance;
+            const bool better = first || (c.meet && !best.meet) ||
+                                (c.meet == best.meet && c.distance < best.distance - tolerance) ||
+                                (c.meet == best.meet && std::fabs(c.distance - best.distance) <= tolerance &&
+                                 c.stretch > best.stretch);
             if (better) {
                 best = c;
                 first = false;

@@ -3,6 +3,8 @@
 #include "svg_pair_axes.hpp"
 #include "svg_pair_contact.hpp"
 
+#include <obbsat/oracle/quad_region.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -35,6 +37,18 @@ const char* contact_name(oracle::contact c) {
         case oracle::contact::separated: return "separated";
         case oracle::contact::touching: return "touching";
         case oracle::contact::overlapping: return "overlapping";
+    }
+    return "unknown";
+}
+
+// How the exact oracle reads a quad (see quad_region.hpp), for a sentence.
+const char* quad_form_article(oracle::quad_form form) {
+    switch (form) {
+        case oracle::quad_form::point: return "a point";
+        case oracle::quad_form::segment: return "a segment";
+        case oracle::quad_form::convex: return "convex";
+        case oracle::quad_form::concave: return "concave (a corner pushed in)";
+        case oracle::quad_form::non_simple: return "self-crossing (its hull is used)";
     }
     return "unknown";
 }
@@ -197,7 +211,8 @@ void clip_path(writer& out, const std::string& id, const window& w) {
 
 // A quad: translucent fill, outline, corner dots and, for corners inside the
 // window, their names placed outwards from the quad's middle.
-void draw_quad(writer& out, const window& w, const rect& r, const char* color, const char* css_class) {
+void draw_quad(writer& out, const window& w, const rect& r, const char* color, const char* css_class,
+               double stroke_width) {
     const std::array<point, 4> corners = corners_of(r);
     std::vector<svg_point> polygon;
     for (const point p : corners) {
@@ -214,7 +229,7 @@ void draw_quad(writer& out, const window& w, const rect& r, const char* color, c
     }
     for (std::size_t i = 0; i < 4; ++i) {
         draw_segment(out, w, polygon[i], polygon[(i + 1) % 4],
-                     attributes().set("stroke", color).set("stroke-width", 1.6));
+                     attributes().set("stroke", color).set("stroke-width", stroke_width));
     }
     svg_point middle{0, 0};
     for (const svg_point p : polygon) {
@@ -330,20 +345,35 @@ void draw_axis_line(writer& out, const window& w, const axis_view& axis, int slo
     }
     draw_segment(out, w, svg_point{middle.x - reach * unit.x, middle.y - reach * unit.y},
                  svg_point{middle.x + reach * unit.x, middle.y + reach * unit.y}, style);
+    if (separating) {
+        // Beside the line, clear of the extent bars that run along it.
+        const double at = 0.42 * w.size;
+        const svg_point side{-unit.y, unit.x};
+        draw_label(out, svg_point{middle.x + at * unit.x + 18 * side.x, middle.y + at * unit.y + 18 * side.y},
+                   "axis " + axis.label, 11, "#111");
+        return;
+    }
     // Parallel axes would put their labels on top of each other: each label
     // sits at its own distance from the centre.
     const double at = (0.30 + 0.045 * slot) * w.size;
-    draw_label(out, svg_point{middle.x + at * unit.x, middle.y + at * unit.y}, axis.label,
-               separating ? 13 : 10, separating ? "#111" : "#555");
+    draw_label(out, svg_point{middle.x + at * unit.x, middle.y + at * unit.y}, axis.label, 10, "#555");
 }
 
-std::string gap_text(const axis_view& axis) {
+// The status of an axis in a few words: "overlap", "gap 0.5", or why the
+// extents cannot be measured (float scalars that overflowed).
+std::string axis_status(const axis_view& axis) {
+    if (axis.overlap) {
+        return "overlap";
+    }
     const double length = std::hypot(axis.axis_x, axis.axis_y);
     const double gap = std::max(axis.b_min - axis.a_max, axis.a_min - axis.b_max) / length;
-    if (!std::isfinite(gap)) {
-        return "apart (extents overflowed)";
+    if (std::isnan(gap)) {
+        return "apart (NaN scalars)";
     }
-    return "apart, gap " + format("%.3g", gap);
+    if (!std::isfinite(gap)) {
+        return "apart (scalars overflow)";
+    }
+    return "gap " + format("%.3g", gap);
 }
 
 void draw_main_view(writer& out, const pair_drawing& pair, const method_view& axes,
@@ -355,8 +385,9 @@ void draw_main_view(writer& out, const pair_drawing& pair, const method_view& ax
                          .set("width", w.size)
                          .set("height", w.size)
                          .set("fill", "#fbfbfb"));
-    draw_quad(out, w, pair.a, color_a, "rect-a");
-    draw_quad(out, w, pair.b, color_b, "rect-b");
+    // A's outline is wider, so that an edge B shares with it still shows.
+    draw_quad(out, w, pair.a, color_a, "rect-a", 3.0);
+    draw_quad(out, w, pair.b, color_b, "rect-b", 1.4);
     for (std::size_t k = 0; k < axes.axes.size(); ++k) {
         if (static_cast<int>(k) != axes.separating) {
             draw_axis_line(out, w, axes.axes[k], static_cast<int>(k), false);
@@ -400,8 +431,9 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
     out.open("g", attributes().set("clip-path", "url(#" + id + "-inset)"));
     out.leaf("rect",
              attributes().set("x", w.left).set("y", w.top).set("width", w.size).set("height", w.size).set("fill", "white"));
-    draw_quad(out, w, pair.a, color_a, "rect-a");
-    draw_quad(out, w, pair.b, color_b, "rect-b");
+    // A's outline is wider, so that an edge B shares with it still shows.
+    draw_quad(out, w, pair.a, color_a, "rect-a", 3.0);
+    draw_quad(out, w, pair.b, color_b, "rect-b", 1.4);
     if (axes.separating >= 0) {
         out.open("g", attributes().set("class", "separating-strip"));
         draw_gap_lines(out, w, axes.axes[static_cast<std::size_t>(axes.separating)]);
@@ -440,32 +472,56 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
     out.close();
 }
 
+// Words per legend line: the side column holds about this many characters.
+constexpr std::size_t legend_line_chars = 50;
+
 void draw_legend(writer& out, const pair_drawing& pair, const method_view& axes,
                  const contact_view& contact, double left, double top) {
     out.open("g", attributes().set("class", "legend").set("font-size", 9.5));
     double y = top;
     const auto line = [&](const std::string& text, bool bold = false, const char* color = "#222") {
-        attributes style;
-        style.set("x", left).set("y", y).set("fill", color);
-        if (bold) {
-            style.set("font-weight", "bold");
+        // Wrapped at spaces, so that a long note stays inside the panel.
+        std::string rest = text;
+        while (!rest.empty()) {
+            std::size_t cut = rest.size();
+            if (cut > legend_line_chars) {
+                cut = rest.rfind(' ', legend_line_chars);
+                cut = cut == std::string::npos || cut == 0 ? legend_line_chars : cut;
+            }
+            attributes style;
+            style.set("x", left).set("y", y).set("fill", color);
+            if (bold) {
+                style.set("font-weight", "bold");
+            }
+            out.text("text", style, rest.substr(0, cut));
+            y += line_height;
+            rest = cut < rest.size() ? rest.substr(rest[cut] == ' ' ? cut + 1 : cut) : std::string();
         }
-        out.text("text", style, text);
-        y += line_height;
     };
     line(std::string("axes of ") + method_name(pair.test) + " (" + axes.arithmetic + "):", true);
     for (std::size_t k = 0; k < axes.axes.size(); ++k) {
         const axis_view& axis = axes.axes[k];
         const bool separating = static_cast<int>(k) == axes.separating;
-        std::string text = axis.label + "  " + axis.definition + ": ";
-        text += axis.overlap ? std::string("overlap") : gap_text(axis);
+        std::string text = axis.label + "  " + axis.definition + "  " + axis_status(axis);
         if (separating) {
-            text += "  \xE2\x86\x90 separates";
+            text += "  \xE2\x97\x80 separates";
         }
         line(text, separating, separating ? "#111" : "#444");
     }
+    if (axes.separating >= 0) {
+        line("bars: A's and B's extents on the separating axis; dashed: their facing ends, as " +
+                 std::string(method_name(pair.test)) + " computed them",
+             false, "#666");
+    }
     if (!axes.note.empty()) {
         line(axes.note, false, "#8a5a00");
+    }
+    const oracle::quad_form form_a = oracle::region_of(pair.a).form;
+    const oracle::quad_form form_b = oracle::region_of(pair.b).form;
+    if (form_a != oracle::quad_form::convex || form_b != oracle::quad_form::convex) {
+        line(std::string("as the exact oracle reads them: A is ") + quad_form_article(form_a) +
+                 ", B is " + quad_form_article(form_b),
+             false, "#8a5a00");
     }
     if (contact.outlines_meet) {
         line(contact.depth > 0 ? "outlines cross; overlap depth " + format("%.3g", contact.depth)
@@ -521,7 +577,7 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     out.open("text", attributes().set("class", "title").set("x", margin).set("y", 20).set("fill", "#111"));
     out.text("tspan", attributes().set("font-size", 14).set("font-weight", "bold"),
              "pair " + std::to_string(pair.pair_number) + ": " + method_name(pair.test) + " says " +
-                 verdict_word(pair.collides) + ", exact: " + contact_name(pair.exact));
+                 verdict_word(pair.collides) + "; exact class: " + contact_name(pair.exact));
     out.text("tspan",
              attributes()
                  .set("x", margin)

@@ -1,0 +1,649 @@
+// obbsat draw, run as a user runs it: the SVG it writes is parsed (a small XML
+// reader below) and checked against the methods' references and the exact
+// oracle called in process; bad usage and bad input leave no file behind.
+#include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
+#include <obbsat/rect.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#ifndef OBBSAT_CLI_PATH
+#error "OBBSAT_CLI_PATH must name the obbsat program"
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+using obbsat::method;
+using obbsat::point;
+using obbsat::rect;
+
+// ---------------------------------------------------------------------------
+// Running the program.
+
+struct run_result {
+    int status;
+    std::string out;
+    std::string err;
+};
+
+std::string read_file(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream out;
+    out << in.rdbuf();
+    return out.str();
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+// A scratch directory: the program runs in work(), so that its messages name
+// the short relative paths the tests expect; its stdout and stderr are
+// captured outside work(), so that they never count as files it wrote.
+class scratch {
+public:
+    scratch() {
+        char pattern[] = "/tmp/obbsat_draw_XXXXXX";
+        if (mkdtemp(pattern) == nullptr) {
+            throw std::runtime_error("mkdtemp failed");
+        }
+        root_ = pattern;
+        fs::create_directory(work());
+        fs::create_directory(root_ / "capture");
+    }
+    ~scratch() {
+        std::error_code ignored;
+        fs::remove_all(root_, ignored);
+    }
+    scratch(const scratch&) = delete;
+    scratch& operator=(const scratch&) = delete;
+
+    fs::path work() const { return root_ / "work"; }
+    fs::path file(const std::string& name) const { return work() / name; }
+
+    run_result run(const std::string& args) const {
+        const fs::path out = root_ / "capture" / "stdout";
+        const fs::path err = root_ / "capture" / "stderr";
+        const std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND '" OBBSAT_CLI_PATH
+                                    "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
+        const int raw = std::system(command.c_str());
+        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+        return run_result{status, read_file(out), read_file(err)};
+    }
+
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(work())) {
+            names.push_back(e.path().filename().string());
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    fs::path root_;
+};
+
+// ---------------------------------------------------------------------------
+// A small XML reader: enough of XML for the SVG the program writes, and
+// strict about what it reads (balanced tags, quoted attributes, one root).
+
+struct xml_element {
+    std::string name;
+    std::map<std::string, std::string> attributes;
+    std::vector<std::size_t> children;  // indices into xml_document::elements
+    std::string text;                   // the text of the element and all its descendants
+};
+
+struct xml_document {
+    std::vector<xml_element> elements;  // elements[0] is the root
+
+    std::string attribute(std::size_t e, const std::string& name) const {
+        const auto found = elements[e].attributes.find(name);
+        return found == elements[e].attributes.end() ? std::string() : found->second;
+    }
+
+    bool has_class(std::size_t e, const std::string& css_class) const {
+        std::istringstream words(attribute(e, "class"));
+        std::string word;
+        while (words >> word) {
+            if (word == css_class) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // Every element below `e` (not `e` itself), in document order.
+    std::vector<std::size_t> descendants(std::size_t e) const {
+        std::vector<std::size_t> out;
+        for (const std::size_t child : elements[e].children) {
+            out.push_back(child);
+            const std::vector<std::size_t> below = descendants(child);
+            out.insert(out.end(), below.begin(), below.end());
+        }
+        return out;
+    }
+
+    std::vector<std::size_t> descendants_with_class(std::size_t e, const std::string& css_class) const {
+        std::vector<std::size_t> out;
+        for (const std::size_t d : descendants(e)) {
+            if (has_class(d, css_class)) {
+                out.push_back(d);
+            }
+        }
+        return out;
+    }
+};
+
+std::string decode_entities(const std::string& text) {
+    static const std::pair<const char*, char> entities[] = {
+        {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        bool replaced = false;
+        if (text[i] == '&') {
+            for (const auto& [entity, c] : entities) {
+                const std::string name(entity);
+                if (text.compare(i, name.size(), name) == 0) {
+                    out += c;
+                    i += name.size();
+                    replaced = true;
+                    break;
+                }
+            }
+            if (!replaced) {
+                throw std::runtime_error("xml: unknown entity at " + std::to_string(i));
+            }
+            continue;
+        }
+        out += text[i++];
+    }
+    return out;
+}
+
+bool is_name_char(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_' || c == ':' ||
+           c == '.';
+}
+
+// Parses `text`; throws std::runtime_error on anything unbalanced or malformed.
+xml_document parse_xml(const std::string& text) {
+    xml_document doc;
+    std::vector<std::size_t> open;
+    bool root_closed = false;
+    std::size_t i = 0;
+    const auto fail = [&](const std::string& why) {
+        throw std::runtime_error("xml: " + why + " at byte " + std::to_string(i));
+    };
+    const auto skip_blanks = [&] {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])) != 0) {
+            ++i;
+        }
+    };
+    const auto read_name = [&] {
+        const std::size_t begin = i;
+        while (i < text.size() && is_name_char(text[i])) {
+            ++i;
+        }
+        if (i == begin) {
+            fail("expected a name");
+        }
+        return text.substr(begin, i - begin);
+    };
+    while (i < text.size()) {
+        if (text[i] != '<') {
+            const std::size_t end = text.find('<', i);
+            const std::string piece = decode_entities(text.substr(i, end - i));
+            if (open.empty()) {
+                if (piece.find_first_not_of(" \t\r\n") != std::string::npos) {
+                    fail("text outside the root element");
+                }
+            }
+            for (const std::size_t e : open) {
+                doc.elements[e].text += piece;
+            }
+            i = end == std::string::npos ? text.size() : end;
+            continue;
+        }
+        if (text.compare(i, 5, "<?xml") == 0) {
+            const std::size_t end = text.find("?>", i);
+            if (end == std::string::npos || !doc.elements.empty()) {
+                fail("bad declaration");
+            }
+            i = end + 2;
+            continue;
+        }
+        if (text.compare(i, 4, "<!--") == 0) {
+            const std::size_t end = text.find("-->", i + 4);
+            if (end == std::string::npos) {
+                fail("unterminated comment");
+            }
+            i = end + 3;
+            continue;
+        }
+        if (text.compare(i, 2, "</") == 0) {
+            i += 2;
+            const std::string name = read_name();
+            skip_blanks();
+            if (i >= text.size() || text[i] != '>') {
+                fail("bad closing tag");
+            }
+            ++i;
+            if (open.empty() || doc.elements[open.back()].name != name) {
+                fail("closing tag </" + name + "> does not match");
+            }
+            open.pop_back();
+            root_closed = open.empty();
+            continue;
+        }
+        ++i;
+        if (root_closed) {
+            fail("a second root element");
+        }
+        xml_element element;
+        element.name = read_name();
+        while (true) {
+            skip_blanks();
+            if (i >= text.size()) {
+                fail("unterminated tag");
+            }
+            if (text[i] == '>' || text.compare(i, 2, "/>") == 0) {
+                break;
+            }
+            const std::string name = read_name();
+            skip_blanks();
+            if (i + 1 >= text.size() || text[i] != '=' || text[i + 1] != '"') {
+                fail("attribute " + name + " without a quoted value");
+            }
+            i += 2;
+            const std::size_t end = text.find('"', i);
+            if (end == std::string::npos) {
+                fail("unterminated attribute value");
+            }
+            if (!element.attributes.emplace(name, decode_entities(text.substr(i, end - i))).second) {
+                fail("attribute " + name + " given twice");
+            }
+            i = end + 1;
+        }
+        const bool self_closing = text[i] == '/';
+        i += self_closing ? 2 : 1;
+        const std::size_t index = doc.elements.size();
+        if (!open.empty()) {
+            doc.elements[open.back()].children.push_back(index);
+        } else if (index != 0) {
+            fail("a second root element");
+        }
+        doc.elements.push_back(element);
+        if (self_closing) {
+            root_closed = open.empty();
+        } else {
+            open.push_back(index);
+        }
+    }
+    if (!open.empty()) {
+        throw std::runtime_error("xml: <" + doc.elements[open.back()].name + "> is never closed");
+    }
+    if (doc.elements.empty()) {
+        throw std::runtime_error("xml: no element");
+    }
+    return doc;
+}
+
+// ---------------------------------------------------------------------------
+// What a drawing shows, read back from the SVG.
+
+struct panel_reading {
+    std::string id;
+    std::string title;
+    std::string caption;
+    bool frame_says_apart;
+    std::vector<std::string> separating_axes;  // data-axis of each separating-axis element
+    bool has_inset;
+    std::string inset_text;
+};
+
+std::vector<panel_reading> read_panels(const xml_document& doc) {
+    std::vector<panel_reading> panels;
+    for (const std::size_t e : doc.descendants(0)) {
+        if (doc.elements[e].name != "g" || doc.attribute(e, "id").rfind("panel-", 0) != 0) {
+            continue;
+        }
+        panel_reading panel;
+        panel.id = doc.attribute(e, "id");
+        const auto titles = doc.descendants_with_class(e, "title");
+        if (titles.size() != 1) {
+            throw std::runtime_error(panel.id + ": expected one title, found " + std::to_string(titles.size()));
+        }
+        panel.title = doc.elements[titles[0]].text;
+        for (const std::size_t c : doc.descendants_with_class(e, "caption")) {
+            panel.caption += doc.elements[c].text;
+        }
+        panel.frame_says_apart = doc.has_class(e, "verdict-apart");
+        if (panel.frame_says_apart == doc.has_class(e, "verdict-collide")) {
+            throw std::runtime_error(panel.id + ": the panel must say exactly one verdict");
+        }
+        for (const std::size_t s : doc.descendants_with_class(e, "separating-axis")) {
+            panel.separating_axes.push_back(doc.attribute(s, "data-axis"));
+        }
+        const auto insets = doc.descendants_with_class(e, "inset");
+        panel.has_inset = !insets.empty();
+        for (const std::size_t s : insets) {
+            panel.inset_text += doc.elements[s].text;
+        }
+        panels.push_back(panel);
+    }
+    return panels;
+}
+
+// Every number in a geometric attribute of the document.
+std::vector<double> geometry_numbers(const xml_document& doc) {
+    static const char* const names[] = {"x", "y", "x1", "y1", "x2", "y2", "cx", "cy", "r",
+                                        "width", "height", "dy", "points", "font-size", "stroke-width"};
+    std::vector<double> numbers;
+    for (const xml_element& element : doc.elements) {
+        for (const char* name : names) {
+            const auto found = element.attributes.find(name);
+            if (found == element.attributes.end()) {
+                continue;
+            }
+            std::string text = found->second;
+            for (char& c : text) {
+                c = c == ',' ? ' ' : c;
+            }
+            std::istringstream in(text);
+            std::string word;
+            while (in >> word) {
+                char* end = nullptr;
+                const double value = std::strtod(word.c_str(), &end);
+                if (end != word.c_str() + word.size()) {
+                    throw std::runtime_error(std::string("not a number in ") + name + ": '" + word + "'");
+                }
+                numbers.push_back(value);
+            }
+        }
+    }
+    return numbers;
+}
+
+// ---------------------------------------------------------------------------
+// Inputs.
+
+std::string hex(float v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%a", static_cast<double>(v));
+    return text;
+}
+
+std::string rect_line(const rect& r) {
+    return hex(r.ul.x) + "," + hex(r.ul.y) + "," + hex(r.ur.x) + "," + hex(r.ur.y) + "," + hex(r.lr.x) +
+           "," + hex(r.lr.y) + "," + hex(r.ll.x) + "," + hex(r.ll.y) + "\n";
+}
+
+rect box(float x0, float x1, float y0, float y1) {
+    return rect{point{x0, y1}, point{x1, y1}, point{x1, y0}, point{x0, y0}};
+}
+
+rect rotated(double cx, double cy, double w, double h, double degrees) {
+    const double radians = degrees * 3.14159265358979323846 / 180.0;
+    const double c = std::cos(radians), s = std::sin(radians);
+    const auto corner = [&](double x, double y) {
+        return point{static_cast<float>(cx + c * x - s * y), static_cast<float>(cy + s * x + c * y)};
+    };
+    return rect{corner(-w / 2, h / 2), corner(w / 2, h / 2), corner(w / 2, -h / 2), corner(-w / 2, -h / 2)};
+}
+
+// The pairs the drawing is meant for, one of each kind a person asks about.
+struct labelled_pair {
+    const char* kind;
+    rect a;
+    rect b;
+};
+
+std::vector<labelled_pair> interesting_pairs() {
+    const float far = 1e6f;
+    const float far_next = std::nextafter(far, 2e6f);
+    return {
+        {"touching tiles", box(0, 1, 0, 1), box(1, 2, 0, 1)},
+        {"crossed", box(-5, 5, -0.5f, 0.5f), box(-0.5f, 0.5f, -5, 5)},
+        {"one-ulp gap far from the origin", box(far - 10, far, far, far + 10), box(far_next, far + 10, far, far + 10)},
+        {"clearly separated, rotated", rotated(0, 0, 4, 2, 30), rotated(6, 3, 3, 1.5, -20)},
+        // A trapezoid whose slanted edge alone separates it from a small square:
+        // no article axis does, so the exact methods show an edge normal.
+        {"separated by a slanted edge", rect{point{0, 1}, point{4, 1}, point{4, 0}, point{1, 0}},
+         box(0, 0.3f, 0, 0.3f)},
+    };
+}
+
+const char* contact_name(obbsat::oracle::contact c) {
+    switch (c) {
+        case obbsat::oracle::contact::separated: return "separated";
+        case obbsat::oracle::contact::touching: return "touching";
+        case obbsat::oracle::contact::overlapping: return "overlapping";
+    }
+    return "?";
+}
+
+class draw_test : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string rects, pairs = "# i,j\n";
+        for (std::size_t i = 0; i < cases_.size(); ++i) {
+            rects += rect_line(cases_[i].a) + rect_line(cases_[i].b);
+            pairs += std::to_string(2 * i) + "," + std::to_string(2 * i + 1) + "\n";
+        }
+        write_file(s_.file("rects.csv"), rects);
+        write_file(s_.file("pairs.csv"), pairs);
+    }
+
+    // Draws `select` with `method_name`, expecting success, and reads the panels.
+    std::vector<panel_reading> draw(const std::string& select, const std::string& method_name) {
+        const run_result r = s_.run("draw --rects rects.csv --pairs pairs.csv --select " + select +
+                                    " --method " + method_name + " --out pairs.svg");
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err, "");
+        const xml_document doc = parse_xml(read_file(s_.file("pairs.svg")));
+        EXPECT_EQ(doc.elements[0].name, "svg");
+        return read_panels(doc);
+    }
+
+    const std::vector<labelled_pair> cases_ = interesting_pairs();
+    scratch s_;
+};
+
+// ---------------------------------------------------------------------------
+// What the panels say.
+
+TEST_F(draw_test, one_panel_per_pair_with_the_verdict_of_each_method_and_the_exact_class) {
+    for (const method m : obbsat::all_methods()) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        const std::vector<panel_reading> panels = draw("0-4", obbsat::method_name(m));
+        ASSERT_EQ(panels.size(), cases_.size());
+        for (std::size_t i = 0; i < cases_.size(); ++i) {
+            SCOPED_TRACE(cases_[i].kind);
+            const panel_reading& panel = panels[i];
+            EXPECT_EQ(panel.id, "panel-" + std::to_string(i));
+            const bool collides = obbsat::method_reference(m)(cases_[i].a, cases_[i].b);
+            const obbsat::oracle::contact exact = obbsat::oracle::classify(cases_[i].a, cases_[i].b);
+            const std::string verdict = collides ? "collide" : "apart";
+            EXPECT_NE(panel.title.find(std::string(obbsat::method_name(m)) + " says " + verdict + ";"),
+                      std::string::npos)
+                << panel.title;
+            EXPECT_NE(panel.title.find(std::string("exact class: ") + contact_name(exact)), std::string::npos)
+                << panel.title;
+            const bool agrees = collides == (exact != obbsat::oracle::contact::separated);
+            EXPECT_EQ(panel.title.find("agrees with the exact answer") != std::string::npos, agrees)
+                << panel.title;
+            EXPECT_EQ(panel.title.find("DISAGREES") != std::string::npos, !agrees) << panel.title;
+            EXPECT_EQ(panel.frame_says_apart, !collides);
+            // A separating axis is drawn iff the method says apart, and only one.
+            EXPECT_EQ(panel.separating_axes.size(), collides ? 0u : 1u);
+            EXPECT_NE(panel.caption.find("A rect " + std::to_string(2 * i) + ": " +
+                                         rect_line(cases_[i].a).substr(0, rect_line(cases_[i].a).size() - 1)),
+                      std::string::npos)
+                << panel.caption;
+        }
+    }
+}
+
+TEST_F(draw_test, the_exact_methods_show_an_edge_normal_when_no_article_axis_separates) {
+    for (const char* name : {"exact", "conservative"}) {
+        SCOPED_TRACE(name);
+        const std::vector<panel_reading> panels = draw("3,4", name);
+        ASSERT_EQ(panels.size(), 2u);
+        ASSERT_EQ(panels[0].separating_axes.size(), 1u);
+        EXPECT_EQ(panels[0].separating_axes[0], "1");
+        ASSERT_EQ(panels[1].separating_axes.size(), 1u);
+        EXPECT_EQ(panels[1].separating_axes[0], "n");
+    }
+    // The article's test cannot see that slanted edge: a false collision.
+    const std::vector<panel_reading> panels = draw("4", "sat4");
+    ASSERT_EQ(panels.size(), 1u);
+    EXPECT_TRUE(panels[0].separating_axes.empty());
+    EXPECT_NE(panels[0].title.find("DISAGREES: a false collision"), std::string::npos) << panels[0].title;
+}
+
+TEST_F(draw_test, a_zoomed_inset_shows_grazing_contacts_only) {
+    const std::vector<panel_reading> panels = draw("0-3", "exact");
+    ASSERT_EQ(panels.size(), 4u);
+    EXPECT_TRUE(panels[0].has_inset) << "touching tiles";
+    EXPECT_NE(panels[0].inset_text.find("outlines meet"), std::string::npos) << panels[0].inset_text;
+    EXPECT_FALSE(panels[1].has_inset) << "crossed";
+    EXPECT_TRUE(panels[2].has_inset) << "one-ulp gap";
+    EXPECT_NE(panels[2].inset_text.find("zoom"), std::string::npos) << panels[2].inset_text;
+    EXPECT_NE(panels[2].inset_text.find("gap 0.0625"), std::string::npos) << panels[2].inset_text;
+    EXPECT_FALSE(panels[3].has_inset) << "clearly separated";
+}
+
+TEST_F(draw_test, panels_follow_the_selection_and_pair_numbers_skip_comment_lines) {
+    write_file(s_.file("pairs.csv"), "# first\n2,3\n\n# second\n4,5\n0,1\n");
+    const std::vector<panel_reading> panels = draw("2,0-1", "sat4");
+    ASSERT_EQ(panels.size(), 3u);
+    EXPECT_EQ(panels[0].id, "panel-2");
+    EXPECT_EQ(panels[1].id, "panel-0");
+    EXPECT_EQ(panels[2].id, "panel-1");
+    EXPECT_NE(panels[0].title.find("A = rect 0, B = rect 1"), std::string::npos) << panels[0].title;
+    EXPECT_NE(panels[1].title.find("A = rect 2, B = rect 3"), std::string::npos) << panels[1].title;
+    EXPECT_NE(panels[2].title.find("A = rect 4, B = rect 5"), std::string::npos) << panels[2].title;
+}
+
+TEST_F(draw_test, coordinates_stay_small_and_finite_for_huge_tiny_and_degenerate_inputs) {
+    const float huge = 3e38f;
+    const float tiny = 1e-44f;  // subnormal
+    const std::vector<rect> rects = {
+        box(-huge, huge, -huge, huge),
+        box(huge / 2, huge, -1, 1),
+        box(0, tiny, 0, tiny),
+        box(tiny, 2 * tiny, 0, tiny),
+        box(5, 5, 7, 7),                                         // a point
+        box(5, 5, 7, 7),                                         // the same point
+        rect{point{0, 0}, point{1e30f, 1}, point{1e30f, 1}, point{0, 0}},  // a segment
+        box(-1e-30f, 1e30f, 2, 3),
+        rotated(1e30, -1e30, 1e25, 1e24, 10),
+        rotated(1e30 + 1e25, -1e30, 1e25, 1e24, 10),
+    };
+    std::string text;
+    for (const rect& r : rects) {
+        text += rect_line(r);
+    }
+    write_file(s_.file("rects.csv"), text);
+    write_file(s_.file("pairs.csv"), "0,1\n2,3\n4,5\n6,7\n8,9\n1,0\n");
+    for (const method m : obbsat::all_methods()) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        const std::vector<panel_reading> panels = draw("0-5", obbsat::method_name(m));
+        ASSERT_EQ(panels.size(), 6u);
+        const xml_document doc = parse_xml(read_file(s_.file("pairs.svg")));
+        const std::vector<double> numbers = geometry_numbers(doc);
+        EXPECT_GT(numbers.size(), 100u);
+        for (const double v : numbers) {
+            ASSERT_TRUE(std::isfinite(v) && std::fabs(v) <= 1e5) << v;
+        }
+    }
+}
+
+TEST(draw_xml_reader, rejects_what_a_renderer_would_reject) {
+    EXPECT_NO_THROW(parse_xml("<?xml version=\"1.0\"?>\n<svg a=\"1 &amp; 2\"><g><t>x</t></g><!-- c --></svg>\n"));
+    EXPECT_EQ(parse_xml("<svg a=\"1 &amp; 2\"/>").elements[0].attributes.at("a"), "1 & 2");
+    EXPECT_EQ(parse_xml("<svg><t>a<u>b</u>c</t></svg>").elements[1].text, "abc");
+    for (const char* bad : {"<svg><g></svg>", "<svg></g>", "<svg>", "<svg/><g/>", "<svg a=1/>",
+                            "<svg a=\"1\" a=\"2\"/>", "<svg>&nbsp;</svg>", "x<svg/>", ""}) {
+        EXPECT_THROW(parse_xml(bad), std::runtime_error) << bad;
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Help, bad usage and bad input: exit status 2, a message, no file.
+
+TEST_F(draw_test, help_lists_the_options_and_an_example) {
+    const run_result r = s_.run("draw --help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* word : {"--rects", "--pairs", "--select", "--method", "--out", "example:"}) {
+        EXPECT_NE(r.out.find(word), std::string::npos) << word;
+    }
+    const run_result top = s_.run("--help");
+    EXPECT_NE(top.out.find("draw"), std::string::npos);
+}
+
+TEST_F(draw_test, bad_usage_and_bad_input_exit_2_and_write_nothing) {
+    write_file(s_.file("keep.svg"), "old");
+    const std::vector<std::string> before = s_.entries();
+    struct bad_case {
+        std::string args;
+        std::string message;
+    };
+    const std::string files = "--rects rects.csv --pairs pairs.csv ";
+    const std::vector<bad_case> cases = {
+        {files + "--out keep.svg", "missing required option --select"},
+        {files + "--select 5 --out keep.svg", "--select: pair 5 is out of range: pairs.csv holds 5 pairs"},
+        {files + "--select 0,9-12 --out keep.svg", "--select: pair 9 is out of range"},
+        {files + "--select 3-1 --out keep.svg", "--select: range '3-1' runs backwards"},
+        {files + "--select 1,,2 --out keep.svg", "--select: '' is not a pair number"},
+        {files + "--select x --out keep.svg", "--select: 'x' is not a pair number"},
+        {files + "--select 1,0-2 --out keep.svg", "--select: pair 1 is chosen twice"},
+        {files + "--select 0-5000 --out keep.svg", "--select: more than 1024 pairs"},
+        {files + "--select 0 --method fast --out keep.svg", "--method: unknown method 'fast'"},
+        {files + "--select 0", "missing required option --out"},
+        {"--rects nothere.csv --pairs pairs.csv --select 0 --out keep.svg", "nothere.csv"},
+    };
+    for (const bad_case& c : cases) {
+        SCOPED_TRACE(c.args);
+        const run_result r = s_.run("draw " + c.args);
+        EXPECT_EQ(r.status, 2);
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_EQ(r.out, "");
+        EXPECT_EQ(s_.entries(), before);
+        EXPECT_EQ(read_file(s_.file("keep.svg")), "old");
+    }
+}
+
+TEST_F(draw_test, a_bad_line_in_either_file_is_named_by_file_and_line) {
+    write_file(s_.file("bad_rects.csv"), "0,1,1,1,1,0,0,0\n0,1,1,1,1,0,0,0\n0,1,1,1,1,0,0\n");
+    write_file(s_.file("bad_pairs.csv"), "0,1\n# fine\n0,70\n");
+    const std::vector<std::string> before = s_.entries();
+    const run_result rects = s_.run("draw --rects bad_rects.csv --pairs pairs.csv --select 0 --out out.svg");
+    EXPECT_EQ(rects.status, 2);
+    EXPECT_EQ(rects.err.rfind("obbsat: bad_rects.csv:3: ", 0), 0u) << rects.err;
+    // The bad pair line comes after the selected pair: the whole file is read.
+    const run_result pairs = s_.run("draw --rects rects.csv --pairs bad_pairs.csv --select 0 --out out.svg");
+    EXPECT_EQ(pairs.status, 2);
+    EXPECT_EQ(pairs.err.rfind("obbsat: bad_pairs.csv:3: ", 0), 0u) << pairs.err;
+    EXPECT_EQ(s_.entries(), before);
+}
+
+}  // namespace

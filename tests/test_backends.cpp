@@ -165,14 +165,21 @@ struct indexed_batch {
 
 /// The pairs of a stream batch with every rectangle at a shuffled place in
 /// one pool, so that pair i of the result is pair i of the stream and the
-/// indexed paths read scattered rectangles.
+/// indexed paths read scattered rectangles. Places are shuffled within
+/// windows of 4096 rectangles: the indices are as irregular as a full
+/// shuffle makes them for the kernels, but the reads stay in cache, so the
+/// test spends its time comparing verdicts rather than waiting for memory.
 indexed_batch scattered(const stream_batch& batch, std::uint64_t seed) {
+    constexpr std::size_t window = 4096;
     const std::size_t n = batch.a.size();
     std::vector<std::uint32_t> place(2 * n);
     std::iota(place.begin(), place.end(), 0u);
     obbsat::seeded_random random(seed);
-    for (std::size_t i = place.size(); i > 1; --i) {
-        std::swap(place[i - 1], place[random.below(i)]);
+    for (std::size_t first = 0; first < place.size(); first += window) {
+        const std::size_t size = std::min(window, place.size() - first);
+        for (std::size_t i = size; i > 1; --i) {
+            std::swap(place[first + i - 1], place[first + random.below(i)]);
+        }
     }
     std::vector<rect> pool(2 * n);
     indexed_batch out;
@@ -248,16 +255,20 @@ protected:
     /// Runs method `m` on the pairs as a stream and as indexed pairs over both
     /// stores (pair i of `indexed` is pair i of `stream`); every path must give
     /// the reference's verdicts and report the forced backend. Returns them.
+    /// `describe_pair` (default: its two rectangles) tells what stream pair i is.
     verdicts expect_every_path_matches(method m, const stream_batch& stream,
-                                       const indexed_batch& indexed, unsigned threads = 1) {
+                                       const indexed_batch& indexed, unsigned threads = 1,
+                                       pair_describer describe_pair = nullptr) {
+        if (!describe_pair) {
+            describe_pair = stream_describer(stream.a, stream.b);
+        }
         const reference_fn reference = reference_of(m);
         const verdicts expected = reference_stream(reference, stream.a, stream.b);
         const std::size_t n = expected.size();
         verdicts got(n, 0xee);
         EXPECT_EQ(obbsat::collide_stream(stream.a, stream.b, got.data(), forced(m, threads)),
                   GetParam());
-        EXPECT_TRUE(same_verdicts(expected, got.data(), stream_describer(stream.a, stream.b)))
-            << "collide_stream";
+        EXPECT_TRUE(same_verdicts(expected, got.data(), describe_pair)) << "collide_stream";
 
         std::fill(got.begin(), got.end(), std::uint8_t{0xee});
         EXPECT_EQ(obbsat::collide_pairs(indexed.rects, indexed.pairs.data(), n, got.data(),
@@ -281,6 +292,8 @@ protected:
 TEST(methods, every_method_has_a_reference_and_a_golden_digest_here) {
     for (const method m : obbsat::all_methods()) {
         EXPECT_NE(reference_of(m), nullptr) << obbsat::method_name(m);
+        // The library's own table of references names the same functions.
+        EXPECT_EQ(obbsat::method_reference(m), reference_of(m)) << obbsat::method_name(m);
         const bool listed = std::any_of(std::begin(golden_digests), std::end(golden_digests),
                                         [&](const golden_entry& e) { return e.test == m; });
         EXPECT_TRUE(listed) << obbsat::method_name(m) << " has no golden digest";
@@ -310,28 +323,37 @@ TEST_P(backend_equivalence, forced_backend_is_the_one_that_ran) {
     EXPECT_EQ(obbsat::resolve_backend(GetParam()), GetParam());
 }
 
+// Ten million random pairs through every path with sat4, the article's
+// method, and the first two million of them with every other method: the
+// other methods share sat4's loads, stores and lane steps, so what they add
+// is their own arithmetic, which two million pairs exercise amply.
 TEST_P(backend_equivalence, ten_million_random_pairs_match_reference) {
     constexpr std::size_t chunks = 10;
     constexpr std::size_t pairs_per_chunk = 1000000;
-    std::map<method, std::size_t> hits;
+    constexpr std::size_t chunks_for_other_methods = 2;
+    std::map<method, std::pair<std::size_t, std::size_t>> hits;  // method -> (hits, pairs)
     for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
         obbsat::seeded_random random(1000 + chunk);
         const stream_batch stream =
             obbsat::test_support::random_stream_batch(random, pairs_per_chunk);
         const indexed_batch indexed = scattered(stream, 2000 + chunk);
         for (const method m : obbsat::all_methods()) {
+            if (m != method::sat4 && chunk >= chunks_for_other_methods) {
+                continue;
+            }
             SCOPED_TRACE("chunk " + std::to_string(chunk) + ", method " + obbsat::method_name(m));
             const verdicts expected = expect_every_path_matches(m, stream, indexed);
-            hits[m] += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), 1));
+            hits[m].first += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), 1));
+            hits[m].second += expected.size();
             if (HasFailure()) {
                 return;
             }
         }
     }
+    EXPECT_EQ(hits[method::sat4].second, chunks * pairs_per_chunk);
     // Both verdicts must be frequent, or the comparison proves little.
     for (const auto& [m, count] : hits) {
-        const double share =
-            static_cast<double>(count) / static_cast<double>(chunks * pairs_per_chunk);
+        const double share = static_cast<double>(count.first) / static_cast<double>(count.second);
         EXPECT_GT(share, 0.10) << obbsat::method_name(m);
         EXPECT_LT(share, 0.90) << obbsat::method_name(m);
         RecordProperty(std::string("collision_share_percent_") + obbsat::method_name(m),
@@ -343,16 +365,13 @@ TEST_P(backend_equivalence, hard_pairs_match_reference) {
     const std::vector<labelled_pair> hard = obbsat::test_support::hard_pairs();
     const stream_batch stream = as_stream(hard);
     const indexed_batch indexed = scattered(stream, 77);
+    // Name the family of every mismatch, so a failure says which kind of input broke.
+    const pair_describer with_family = [&](std::size_t i) {
+        return std::string(hard[i].family) + "\n    " + stream_describer(stream.a, stream.b)(i);
+    };
     for (const method m : obbsat::all_methods()) {
         SCOPED_TRACE(obbsat::method_name(m));
-        const verdicts expected = reference_stream(reference_of(m), stream.a, stream.b);
-        verdicts got(expected.size());
-        ASSERT_EQ(obbsat::collide_stream(stream.a, stream.b, got.data(), forced(m)), GetParam());
-        // Name the family of every mismatch, so a failure says which kind of input broke.
-        EXPECT_TRUE(same_verdicts(expected, got.data(), [&](std::size_t i) {
-            return std::string(hard[i].family) + "\n    " + stream_describer(stream.a, stream.b)(i);
-        })) << "collide_stream";
-        expect_every_path_matches(m, stream, indexed);
+        expect_every_path_matches(m, stream, indexed, 1, with_family);
     }
 }
 

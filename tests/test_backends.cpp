@@ -343,7 +343,8 @@ TEST_P(backend_equivalence, ten_million_random_pairs_match_reference) {
             }
             SCOPED_TRACE("chunk " + std::to_string(chunk) + ", method " + obbsat::method_name(m));
             const verdicts expected = expect_every_path_matches(m, stream, indexed);
-            hits[m].first += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), 1));
+            hits[m].first +=
+                static_cast<std::size_t>(std::count(expected.begin(), expected.end(), 1));
             hits[m].second += expected.size();
             if (HasFailure()) {
                 return;

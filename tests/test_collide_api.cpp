@@ -361,6 +361,7 @@ TEST(collide_api, automatic_resolves_to_the_best_backend_when_not_forced) {
     if (forced != nullptr && *forced != '\0') {
         GTEST_SKIP() << "OBBSAT_BACKEND=" << forced << " is set: automatic follows it";
     }
+    EXPECT_FALSE(obbsat::forced_backend().has_value());
     EXPECT_EQ(obbsat::resolve_backend(backend::automatic), obbsat::best_supported_backend());
     const rect_soa rects = grid_of_squares(4);
     const std::vector<pair_index> pairs = {{0, 1}};
@@ -370,11 +371,48 @@ TEST(collide_api, automatic_resolves_to_the_best_backend_when_not_forced) {
     EXPECT_EQ(verdict, 1);  // squares 1.5 wide on a unit grid overlap their neighbour
 }
 
+// slow_path_pairs reports how many pairs the exact method settled on its slow
+// path: at most all of them, and 0 for every other method and for an empty batch.
+TEST(collide_api, slow_path_pairs_is_reported_for_exact_and_zero_otherwise) {
+    const obbsat::scene s =
+        obbsat::make_scene(obbsat::scene_spec_for(obbsat::scene_density::typical, 3000, 30000, 9));
+    const rect_records records(s.rects);
+    std::vector<std::uint8_t> verdicts(s.pairs.size());
+    for (const backend use : runnable_backends()) {
+        for (const obbsat::method m : obbsat::all_methods()) {
+            for (const unsigned threads : {1u, 0u}) {
+                SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " +
+                             obbsat::method_name(m) + ", " + std::to_string(threads) + " threads");
+                auto options = options_for(use, threads);
+                options.test = m;
+                std::size_t settled = 123456789;
+                options.slow_path_pairs = &settled;
+                obbsat::collide_pairs(s.rects, s.pairs.data(), s.pairs.size(), verdicts.data(),
+                                      options);
+                if (m == obbsat::method::exact) {
+                    EXPECT_LE(settled, s.pairs.size());
+                } else {
+                    EXPECT_EQ(settled, 0u);
+                }
+                settled = 123456789;
+                obbsat::collide_pairs(records, s.pairs.data(), s.pairs.size(), verdicts.data(),
+                                      options);
+                EXPECT_LE(settled, s.pairs.size());
+                settled = 123456789;
+                obbsat::collide_pairs(records, nullptr, 0, nullptr, options);
+                EXPECT_EQ(settled, 0u) << "empty batch";
+            }
+        }
+    }
+}
+
 // OBBSAT_BACKEND is read once per process, so each case runs in a fresh
 // process: a death test in the "threadsafe" style re-runs this binary for it.
 void exit_with_resolved_backend(const char* environment_value) {
     setenv("OBBSAT_BACKEND", environment_value, 1);
     try {
+        const auto forced = obbsat::forced_backend();
+        std::fprintf(stderr, "forced %s\n", forced ? obbsat::backend_name(*forced) : "nothing");
         const rect_soa rects = grid_of_squares(4);
         const std::vector<pair_index> pairs = {{0, 1}};
         std::uint8_t verdict = canary;
@@ -392,10 +430,14 @@ TEST(backend_environment, obbsat_backend_forces_the_automatic_choice) {
     for (const backend b : runnable_backends()) {
         const std::string name = obbsat::backend_name(b);
         EXPECT_EXIT(exit_with_resolved_backend(name.c_str()), testing::ExitedWithCode(0),
-                    "ran " + name + "\n");
+                    "forced " + name + "\nran " + name + "\n");
     }
+    const std::string best = obbsat::backend_name(obbsat::best_supported_backend());
     EXPECT_EXIT(exit_with_resolved_backend("auto"), testing::ExitedWithCode(0),
-                std::string("ran ") + obbsat::backend_name(obbsat::best_supported_backend()));
+                "forced auto\nran " + best + "\n");
+    // Empty is the same as unset.
+    EXPECT_EXIT(exit_with_resolved_backend(""), testing::ExitedWithCode(0),
+                "forced nothing\nran " + best + "\n");
 }
 
 TEST(backend_environment, an_unknown_obbsat_backend_is_refused_naming_it) {

@@ -95,6 +95,13 @@ TEST(rect_records, pointer_and_vector_constructors_store_packed_aligned_records)
     }
 }
 
+TEST(rect_records, from_a_rect_soa_holds_the_same_rectangles) {
+    for (const std::size_t count : {0u, 1u, 16u, 33u}) {
+        const std::vector<rect> rects = numbered_rects(count);
+        EXPECT_TRUE(holds_exactly(rect_records(obbsat::rect_soa(rects)), rects)) << count;
+    }
+}
+
 TEST(rect_records, push_back_grows_and_keeps_contents_and_alignment) {
     rect_records records;
     std::vector<rect> expected;

@@ -326,6 +326,34 @@ TEST(rect_soa, rejects_non_finite_coordinates_naming_rectangle_and_coordinate) {
     }
 }
 
+TEST(rect_soa, from_coordinate_arrays_reads_eight_arrays_in_coord_order) {
+    const std::vector<rect> rects = numbered_rects(21);
+    std::vector<float> arrays[obbsat::coord_count];
+    for (const rect& r : rects) {
+        rect copy = r;
+        for (unsigned c = 0; c < obbsat::coord_count; ++c) {
+            arrays[c].push_back(coordinate(copy, c));
+        }
+    }
+    const float* pointers[obbsat::coord_count];
+    for (unsigned c = 0; c < obbsat::coord_count; ++c) {
+        pointers[c] = arrays[c].data();
+    }
+    const rect_soa soa = rect_soa::from_coordinate_arrays(pointers, rects.size());
+    EXPECT_TRUE(holds_exactly(soa, rects));
+    EXPECT_TRUE(well_laid_out(soa));
+    EXPECT_TRUE(rect_soa::from_coordinate_arrays(pointers, 0).empty());
+    // The same finite-only rule, naming the rectangle and the coordinate.
+    arrays[static_cast<unsigned>(coord::lry)][13] = nan_value;
+    try {
+        (void)rect_soa::from_coordinate_arrays(pointers, rects.size());
+        ADD_FAILURE() << "accepted a NaN";
+    } catch (const obbsat::invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("rectangle 13"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("lry"), std::string::npos) << e.what();
+    }
+}
+
 TEST(rect_soa, from_poses_stores_corners_of_each_pose) {
     const std::vector<pose> poses = {
         {{1, 2}, {3, 4}, 0.0f}, {{-5, 7}, {0.5f, 2}, 0.7f}, {{0, 0}, {1, 1}, -2.0f}};

@@ -317,6 +317,7 @@ struct panel_reading {
     std::vector<std::string> separating_axes;  // data-axis of each separating-axis element
     bool has_inset;
     std::string inset_text;
+    std::string legend;
 };
 
 std::vector<panel_reading> read_panels(const xml_document& doc) {
@@ -334,6 +335,9 @@ std::vector<panel_reading> read_panels(const xml_document& doc) {
         panel.title = doc.elements[titles[0]].text;
         for (const std::size_t c : doc.descendants_with_class(e, "caption")) {
             panel.caption += doc.elements[c].text;
+        }
+        for (const std::size_t c : doc.descendants_with_class(e, "legend")) {
+            panel.legend += doc.elements[c].text;
         }
         panel.frame_says_apart = doc.has_class(e, "verdict-apart");
         if (panel.frame_says_apart == doc.has_class(e, "verdict-collide")) {
@@ -531,6 +535,22 @@ TEST_F(draw_test, a_zoomed_inset_shows_grazing_contacts_only) {
     EXPECT_FALSE(panels[3].has_inset) << "clearly separated";
 }
 
+TEST_F(draw_test, the_inset_appears_below_a_gap_of_one_percent_of_the_pair_size) {
+    // Unit tiles side by side: the pair is 2 + gap wide.
+    std::string rects;
+    for (const float gap : {0.018f, 0.022f, 0.0f, 1e-7f}) {
+        rects += rect_line(box(0, 1, 0, 1)) + rect_line(box(1 + gap, 2 + gap, 0, 1));
+    }
+    write_file(s_.file("rects.csv"), rects);
+    write_file(s_.file("pairs.csv"), "0,1\n2,3\n4,5\n6,7\n");
+    const std::vector<panel_reading> panels = draw("0-3", "sat4");
+    ASSERT_EQ(panels.size(), 4u);
+    EXPECT_TRUE(panels[0].has_inset) << "gap 0.9% of the pair";
+    EXPECT_FALSE(panels[1].has_inset) << "gap 1.1% of the pair";
+    EXPECT_TRUE(panels[2].has_inset) << "touching";
+    EXPECT_TRUE(panels[3].has_inset) << "gap of one ulp";
+}
+
 TEST_F(draw_test, panels_follow_the_selection_and_pair_numbers_skip_comment_lines) {
     write_file(s_.file("pairs.csv"), "# first\n2,3\n\n# second\n4,5\n0,1\n");
     const std::vector<panel_reading> panels = draw("2,0-1", "sat4");
@@ -557,17 +577,25 @@ TEST_F(draw_test, coordinates_stay_small_and_finite_for_huge_tiny_and_degenerate
         box(-1e-30f, 1e30f, 2, 3),
         rotated(1e30, -1e30, 1e25, 1e24, 10),
         rotated(1e30 + 1e25, -1e30, 1e25, 1e24, 10),
+        // sat4 separates these on axis 1 = (1e19, 0) with B's float scalars
+        // overflowing to +infinity: B's extent lies at infinity.
+        box(-5e18f, 5e18f, 0, 1),
+        box(1e20f, 2e20f, 0, 1),
     };
     std::string text;
     for (const rect& r : rects) {
         text += rect_line(r);
     }
     write_file(s_.file("rects.csv"), text);
-    write_file(s_.file("pairs.csv"), "0,1\n2,3\n4,5\n6,7\n8,9\n1,0\n");
+    write_file(s_.file("pairs.csv"), "0,1\n2,3\n4,5\n6,7\n8,9\n1,0\n10,11\n");
     for (const method m : obbsat::all_methods()) {
         SCOPED_TRACE(obbsat::method_name(m));
-        const std::vector<panel_reading> panels = draw("0-5", obbsat::method_name(m));
-        ASSERT_EQ(panels.size(), 6u);
+        const std::vector<panel_reading> panels = draw("0-6", obbsat::method_name(m));
+        ASSERT_EQ(panels.size(), 7u);
+        if (m == method::sat4) {
+            EXPECT_NE(panels[6].legend.find("apart (scalars overflow)"), std::string::npos) << panels[6].legend;
+            EXPECT_EQ(panels[6].separating_axes, std::vector<std::string>{"1"});
+        }
         const xml_document doc = parse_xml(read_file(s_.file("pairs.svg")));
         const std::vector<double> numbers = geometry_numbers(doc);
         EXPECT_GT(numbers.size(), 100u);

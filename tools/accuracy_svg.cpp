@@ -20,7 +20,7 @@ constexpr double plot_top = 70.0;
 constexpr double plot_bottom = 420.0;
 constexpr double label_height = 15.0;
 // Wide enough for a label in a 12px sans-serif font: a bound, not a measure.
-constexpr double label_char_width = 7.0;
+constexpr double label_char_width = 6.5;
 
 std::string fixed(double value) {
     char text[32];
@@ -154,8 +154,8 @@ std::string accuracy_svg(const accuracy_report& report) {
     const double floor_y = y_of(0.0);
     svg += line_element(plot_left, floor_y, plot_right, floor_y, "floor");
     svg += text_element(plot_left - 8.0, floor_y + 4.0, "end", "tick floor-label", "0");
-    svg += text_element(plot_right, floor_y - 6.0, "end", "floor-label",
-                        "no errors (below 1 in " + std::to_string(pairs) + ")");
+    const std::string floor_text = "no errors (below 1 in " + std::to_string(pairs) + ")";
+    svg += text_element(plot_left + 6.0, floor_y - 6.0, "start", "floor-label", floor_text);
     svg += "<rect class=\"frame\" x=\"" + fixed(plot_left) + "\" y=\"" + fixed(plot_top) +
            "\" width=\"" + fixed(plot_right - plot_left) + "\" height=\"" +
            fixed(plot_bottom - plot_top) + "\"/>\n";
@@ -165,52 +165,64 @@ std::string accuracy_svg(const accuracy_report& report) {
                         "error rate over all families (log scale) \u2192 worse",
                         " transform=\"rotate(-90 24 " + fixed((plot_top + plot_bottom) / 2.0) + ")\"");
 
-    // Points, then labels placed so that no two overlap: each label starts
-    // beside its point and moves down a line at a time until it is clear.
-    std::vector<const method_result*> order;
-    for (const method_result& m : report.methods) {
-        order.push_back(&m);
-    }
-    std::sort(order.begin(), order.end(), [&](const method_result* a, const method_result* b) {
-        return y_of(a->total.error_rate()) < y_of(b->total.error_rate());
-    });
+    // Points, then labels: each label takes the first place, nearest its
+    // point first, right of it before left, that overlaps no point, no
+    // other label and not the floor's caption; a label moved off its point's
+    // line gets a leader line.
     std::vector<placed_label> placed;
-    for (const method_result* m : order) {
-        const std::string name = method_name(m->test);
-        const double rate = m->total.error_rate();
-        const double px = x_of(m->mpairs_per_second);
+    placed.push_back(placed_label{plot_left + 6.0,
+                                  plot_left + 6.0 + label_char_width * static_cast<double>(floor_text.size()),
+                                  floor_y - 17.0, floor_y - 3.0});
+    for (const method_result& m : report.methods) {
+        const std::string name = method_name(m.test);
+        const double rate = m.total.error_rate();
+        const double px = x_of(m.mpairs_per_second);
         const double py = y_of(rate);
         svg += "<circle class=\"point" + std::string(rate == 0.0 ? " zero" : "") +
                "\" data-method=\"" + escaped(name) + "\" cx=\"" + fixed(px) + "\" cy=\"" +
                fixed(py) + "\" r=\"6\"/>\n";
         placed.push_back(placed_label{px - 7.0, px + 7.0, py - 7.0, py + 7.0});
     }
-    for (const method_result* m : order) {
-        const std::string name = method_name(m->test);
-        const double rate = m->total.error_rate();
+    for (const method_result& m : report.methods) {
+        const std::string name = method_name(m.test);
+        const double rate = m.total.error_rate();
         char speed[32];
-        std::snprintf(speed, sizeof speed, "%.0f", m->mpairs_per_second);
+        std::snprintf(speed, sizeof speed, "%.0f", m.mpairs_per_second);
         const std::string content = name + " (" + format_rate(rate) + ", " + speed + " Mpairs/s)";
         const double box_width = label_char_width * static_cast<double>(content.size());
-        const double px = x_of(m->mpairs_per_second);
+        const double px = x_of(m.mpairs_per_second);
         const double py = y_of(rate);
-        const bool left = px + 10.0 + box_width > width - 8.0;
-        const double x0 = left ? px - 10.0 - box_width : px + 10.0;
+        auto box_at = [&](bool left, double baseline) {
+            const double x0 = left ? px - 10.0 - box_width : px + 10.0;
+            return placed_label{x0, x0 + box_width, baseline - 11.0, baseline + 3.0};
+        };
+        auto fits = [&](const placed_label& box) {
+            return box.x0 >= plot_left + 2.0 && box.x1 <= width - 4.0 && box.y0 >= plot_top - 10.0 &&
+                   box.y1 <= plot_bottom - 1.0 &&
+                   std::none_of(placed.begin(), placed.end(),
+                                [&](const placed_label& other) { return overlaps(box, other); });
+        };
+        bool left = false;
         double baseline = py + 4.0;
-        placed_label box{x0, x0 + box_width, baseline - 11.0, baseline + 3.0};
-        for (;;) {
-            const bool clear = std::none_of(placed.begin(), placed.end(), [&](const placed_label& other) {
-                return overlaps(box, other);
-            });
-            if (clear) {
-                break;
+        bool found = false;
+        for (int step = 0; step <= 24 && !found; ++step) {
+            for (const double direction : {-1.0, 1.0}) {
+                for (const bool try_left : {false, true}) {
+                    const double candidate = py + 4.0 + direction * label_height * step;
+                    if (!found && fits(box_at(try_left, candidate))) {
+                        left = try_left;
+                        baseline = candidate;
+                        found = true;
+                    }
+                }
+                if (step == 0) {
+                    break;  // step 0 has one position per side
+                }
             }
-            baseline += label_height;
-            box.y0 += label_height;
-            box.y1 += label_height;
         }
+        const placed_label box = box_at(left, baseline);
         placed.push_back(box);
-        if (baseline - (py + 4.0) > 1.0) {
+        if (std::fabs(baseline - (py + 4.0)) > 1.0) {
             svg += line_element(px, py, left ? box.x1 : box.x0, baseline - 4.0, "leader");
         }
         svg += text_element(left ? box.x1 : box.x0, baseline, left ? "end" : "start", "label",

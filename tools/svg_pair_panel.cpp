@@ -242,18 +242,32 @@ void draw_quad(writer& out, const window& w, const rect& r, const char* color, c
             continue;
         }
         out.leaf("circle", attributes().set("cx", p.x).set("cy", p.y).set("r", 2.4).set("fill", color));
-        double dx = p.x - middle.x, dy = p.y - middle.y;
+        // Inside the quad, where a label cannot be taken for the corner of a
+        // neighbour sharing it; outside when the quad is too small to hold it.
+        double dx = middle.x - p.x, dy = middle.y - p.y;
         const double d = std::hypot(dx, dy);
+        const double step = d > 30 ? 11 : -10;
         if (d < 1e-9) {
-            dx = -1;
-            dy = -1;
+            dx = 1;
+            dy = 1;
         } else {
             dx /= d;
             dy /= d;
         }
-        draw_label(out, svg_point{p.x + 10 * dx, p.y + 10 * dy}, corner_names[i], 8, color);
+        draw_label(out, svg_point{p.x + step * dx, p.y + step * dy}, corner_names[i], 8, color);
     }
     out.close();
+}
+
+// The average of a quad's corners, in the window.
+svg_point middle_of(const window& w, const rect& r) {
+    svg_point sum{0, 0};
+    for (const point p : corners_of(r)) {
+        const svg_point q = w.at(p);
+        sum.x += 0.25 * q.x;
+        sum.y += 0.25 * q.y;
+    }
+    return sum;
 }
 
 // The unit direction of an axis in the window (y flipped), or nothing for a
@@ -330,7 +344,9 @@ void draw_bar(writer& out, const window& w, const axis_view& axis, double lo, do
                      .set("stroke-opacity", "0.85"));
 }
 
-void draw_axis_line(writer& out, const window& w, const axis_view& axis, int slot, bool separating) {
+// `avoid`: the middles of both quads, which the separating axis's label keeps away from.
+void draw_axis_line(writer& out, const window& w, const axis_view& axis, int slot, bool separating,
+                    const std::array<svg_point, 2>& avoid) {
     svg_point unit{};
     if (!axis_direction(axis, unit)) {
         return;
@@ -346,11 +362,24 @@ void draw_axis_line(writer& out, const window& w, const axis_view& axis, int slo
     draw_segment(out, w, svg_point{middle.x - reach * unit.x, middle.y - reach * unit.y},
                  svg_point{middle.x + reach * unit.x, middle.y + reach * unit.y}, style);
     if (separating) {
-        // Beside the line, clear of the extent bars that run along it.
-        const double at = 0.42 * w.size;
+        // Beside the line, clear of the extent bars that run along it, at
+        // whichever end and side lies farthest from both quads.
         const svg_point side{-unit.y, unit.x};
-        draw_label(out, svg_point{middle.x + at * unit.x + 18 * side.x, middle.y + at * unit.y + 18 * side.y},
-                   "axis " + axis.label, 11, "#111");
+        svg_point best{};
+        double best_room = -1;
+        for (const double along : {0.42, -0.42}) {
+            for (const double across : {18.0, -18.0}) {
+                const svg_point at{middle.x + along * w.size * unit.x + across * side.x,
+                                   middle.y + along * w.size * unit.y + across * side.y};
+                const double room = std::min(std::hypot(at.x - avoid[0].x, at.y - avoid[0].y),
+                                             std::hypot(at.x - avoid[1].x, at.y - avoid[1].y));
+                if (room > best_room) {
+                    best_room = room;
+                    best = at;
+                }
+            }
+        }
+        draw_label(out, best, "axis " + axis.label, 11, "#111");
         return;
     }
     // Parallel axes would put their labels on top of each other: each label
@@ -388,16 +417,17 @@ void draw_main_view(writer& out, const pair_drawing& pair, const method_view& ax
     // A's outline is wider, so that an edge B shares with it still shows.
     draw_quad(out, w, pair.a, color_a, "rect-a", 3.0);
     draw_quad(out, w, pair.b, color_b, "rect-b", 1.4);
+    const std::array<svg_point, 2> quad_middles = {middle_of(w, pair.a), middle_of(w, pair.b)};
     for (std::size_t k = 0; k < axes.axes.size(); ++k) {
         if (static_cast<int>(k) != axes.separating) {
-            draw_axis_line(out, w, axes.axes[k], static_cast<int>(k), false);
+            draw_axis_line(out, w, axes.axes[k], static_cast<int>(k), false, quad_middles);
         }
     }
     if (axes.separating >= 0) {
         const axis_view& axis = axes.axes[static_cast<std::size_t>(axes.separating)];
         out.open("g", attributes().set("class", "separating-axis").set("data-axis", axis.label));
         draw_gap_lines(out, w, axis);
-        draw_axis_line(out, w, axis, axes.separating, true);
+        draw_axis_line(out, w, axis, axes.separating, true, quad_middles);
         draw_bar(out, w, axis, axis.a_min, axis.a_max, 6, color_a, "extent-a");
         draw_bar(out, w, axis, axis.b_min, axis.b_max, -6, color_b, "extent-b");
         out.close();
@@ -462,7 +492,10 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
     const double zoom = w.scale / main.scale;
     draw_label(out, svg_point{w.left + 5, w.top + 9}, "inset, zoom \xC3\x97" + format("%.3g", zoom), 9,
                "#111", "start");
-    draw_label(out, svg_point{w.left + 5, w.top + 21}, "width " + format("%.3g", contact.inset_span), 8,
+    draw_label(out, svg_point{w.left + 5, w.top + 21}, "width " + format("%.3g", contact.inset_span) + " = " +
+                   format("%.3g", contact.inset_span / float_spacing(std::max(std::fabs(contact.inset_center.x),
+                                                                               std::fabs(contact.inset_center.y)))) +
+                   " float ulps there", 8,
                "#333", "start");
     const std::string measure =
         contact.outlines_meet

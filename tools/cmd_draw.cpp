@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -267,7 +268,13 @@ int run_draw(const arguments& args) {
         pair.exact = oracle::classify(pair.a, pair.b);
         const double left = picture_margin + static_cast<double>(i % columns) * (svg::panel_width + picture_margin);
         const double top = header_height + static_cast<double>(i / columns) * (svg::panel_height + picture_margin);
-        svg::draw_pair_panel(out, pair, left, top);
+        try {
+            svg::draw_pair_panel(out, pair, left, top);
+        } catch (const std::logic_error& e) {
+            // A replay that contradicts the library, or geometry placed outside
+            // the picture: a bug, reported with the pair that shows it.
+            throw std::logic_error("pair " + std::to_string(pair.pair_number) + ": " + e.what());
+        }
     }
     out.close();
     const std::string text = out.finish();

@@ -2,6 +2,7 @@
 
 #include "svg_pair_axes.hpp"
 #include "svg_pair_contact.hpp"
+#include "svg_window.hpp"
 
 #include <obbsat/oracle/quad_region.hpp>
 
@@ -67,108 +68,6 @@ std::string hex_rect(const rect& r) {
         out += (out.empty() ? "" : ",") + hex_float(p.x) + "," + hex_float(p.y);
     }
     return out;
-}
-
-struct svg_point {
-    double x;
-    double y;
-};
-
-// A square window of the panel onto the world: `center` is drawn at the
-// window's middle, `scale` pixels per world unit, y pointing up.
-struct window {
-    world_point center;
-    double scale;
-    double left;
-    double top;
-    double size;
-
-    svg_point at(double x, double y) const {
-        return {left + 0.5 * size + (x - center.x) * scale, top + 0.5 * size - (y - center.y) * scale};
-    }
-    svg_point at(point p) const { return at(static_cast<double>(p.x), static_cast<double>(p.y)); }
-    svg_point middle() const { return {left + 0.5 * size, top + 0.5 * size}; }
-    bool contains(svg_point p) const {
-        return p.x >= left && p.x <= left + size && p.y >= top && p.y <= top + size;
-    }
-};
-
-// Geometry is cut to a little more than its window before it is written, so
-// that far-away points (an inset magnifies by up to 1e46) never reach the
-// file; the window's clip path makes the final cut.
-constexpr double cut_slack = 4;
-
-// Liang-Barsky: shortens [p, q] to the part inside the window's cut box;
-// false if nothing is left.
-bool cut_segment(const window& w, svg_point& p, svg_point& q) {
-    const double lo_x = w.left - cut_slack, hi_x = w.left + w.size + cut_slack;
-    const double lo_y = w.top - cut_slack, hi_y = w.top + w.size + cut_slack;
-    const double dx = q.x - p.x, dy = q.y - p.y;
-    double t0 = 0.0, t1 = 1.0;
-    const double steps[4] = {-dx, dx, -dy, dy};
-    const double room[4] = {p.x - lo_x, hi_x - p.x, p.y - lo_y, hi_y - p.y};
-    for (int i = 0; i < 4; ++i) {
-        if (steps[i] == 0.0) {
-            if (room[i] < 0.0) {
-                return false;
-            }
-            continue;
-        }
-        const double t = room[i] / steps[i];
-        if (steps[i] < 0.0) {
-            t0 = std::max(t0, t);
-        } else {
-            t1 = std::min(t1, t);
-        }
-    }
-    if (t0 > t1) {
-        return false;
-    }
-    const svg_point from{p.x + t0 * dx, p.y + t0 * dy};
-    const svg_point to{p.x + t1 * dx, p.y + t1 * dy};
-    p = from;
-    q = to;
-    return true;
-}
-
-// Sutherland-Hodgman: the part of a polygon inside the window's cut box.
-std::vector<svg_point> cut_polygon(const window& w, std::vector<svg_point> polygon) {
-    const double bounds[4] = {w.left - cut_slack, w.left + w.size + cut_slack, w.top - cut_slack,
-                              w.top + w.size + cut_slack};
-    for (int side = 0; side < 4; ++side) {
-        const auto inside = [&](svg_point p) {
-            switch (side) {
-                case 0: return p.x >= bounds[0];
-                case 1: return p.x <= bounds[1];
-                case 2: return p.y >= bounds[2];
-                default: return p.y <= bounds[3];
-            }
-        };
-        const auto crossing = [&](svg_point p, svg_point q) {
-            const bool vertical_side = side < 2;
-            const double edge = bounds[side];
-            const double t = vertical_side ? (edge - p.x) / (q.x - p.x) : (edge - p.y) / (q.y - p.y);
-            return svg_point{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
-        };
-        std::vector<svg_point> kept;
-        for (std::size_t i = 0; i < polygon.size(); ++i) {
-            const svg_point p = polygon[i];
-            const svg_point q = polygon[(i + 1) % polygon.size()];
-            if (inside(p)) {
-                kept.push_back(p);
-                if (!inside(q)) {
-                    kept.push_back(crossing(p, q));
-                }
-            } else if (inside(q)) {
-                kept.push_back(crossing(p, q));
-            }
-        }
-        polygon = std::move(kept);
-        if (polygon.empty()) {
-            break;
-        }
-    }
-    return polygon;
 }
 
 std::string points_text(const std::vector<svg_point>& polygon) {

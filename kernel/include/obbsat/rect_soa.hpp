@@ -50,6 +50,7 @@ public:
 
     rect_soa(const rect_soa& other);
     rect_soa& operator=(const rect_soa& other);
+    /// Moving leaves `other` empty (size and capacity 0), as std::vector does.
     rect_soa(rect_soa&& other) noexcept;
     rect_soa& operator=(rect_soa&& other) noexcept;
     ~rect_soa() = default;

@@ -413,6 +413,7 @@ TEST(exact_arithmetic_sat4, is_the_exact_test_on_two_true_rectangles) {
         ++checked;
     }
     // integer_touching (all of it), the axis-aligned tile maps and the pairs above.
+    std::printf("  %zu pairs of two true rectangles\n", checked);
     EXPECT_GT(checked, pairs_per_family + 20000);
 }
 

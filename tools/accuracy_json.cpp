@@ -87,7 +87,8 @@ std::string accuracy_json(const accuracy_report& report, const std::string& vers
         out += "      \"families\": [\n";
         for (std::size_t f = 0; f < r.per_family.size(); ++f) {
             out += "        {\"family\": " + quoted(report.families[f].name) + ", " +
-                   counts_fields(r.per_family[f]) + "}";
+                   counts_fields(r.per_family[f]) +
+                   ", \"mpairs_per_second\": " + number(r.family_mpairs_per_second[f]) + "}";
             out += f + 1 < r.per_family.size() ? ",\n" : "\n";
         }
         out += "      ]\n    }";

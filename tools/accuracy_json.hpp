@@ -8,7 +8,9 @@
 //                           "threads", "timed_runs" },
 //     "families": [ { "name", "pairs", "separated", "touching", "overlapping" } ],
 //     "methods": [ { "name", "mpairs_per_second" (null when not measured),
-//                    "total": COUNTS, "families": [ COUNTS + "family" ] } ] }
+//                    "total": COUNTS,
+//                    "families": [ COUNTS + "family" + "mpairs_per_second" (of the
+//                                  one scoring run, "threads" threads) ] } ] }
 //   COUNTS = { "pairs", "false_positives", "false_negatives",
 //              "false_negatives_touching", "false_negatives_overlapping",
 //              "errors", "error_rate", "slow_path_pairs" }

@@ -143,7 +143,11 @@ accuracy_report measure_accuracy(const accuracy_settings& settings, const progre
             options.use = report.used;
             options.threads = settings.threads;
             options.slow_path_pairs = &slow_path;
+            const auto start = std::chrono::steady_clock::now();
             collide_pairs(records, s.pairs.data(), count, verdicts.data(), options);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            result.family_mpairs_per_second.push_back(static_cast<double>(count) / seconds / 1e6);
             error_counts counts = score_verdicts(truth.data(), verdicts.data(), count);
             counts.slow_path_pairs = slow_path;
             result.per_family.push_back(counts);

@@ -54,6 +54,9 @@ struct family_truth {
 struct method_result {
     method test = method::sat4;
     std::vector<error_counts> per_family;  ///< in the order of accuracy_report::families
+    /// Speed of the one scoring run on each family (settings.threads threads):
+    /// how much the family's boundary pairs cost the method (exact's slow path).
+    std::vector<double> family_mpairs_per_second;
     error_counts total;
     double mpairs_per_second = 0.0;        ///< on the throughput scene (see accuracy_report)
 };

@@ -19,10 +19,17 @@ double percent(std::uint64_t part, std::uint64_t whole) {
     return whole == 0 ? 0.0 : 100.0 * static_cast<double>(part) / static_cast<double>(whole);
 }
 
-void print_counts_row(std::FILE* out, const char* name, const error_counts& c, bool slow_path) {
+// `speed` < 0: no speed column (the all-families row).
+void print_counts_row(std::FILE* out, const char* name, const error_counts& c, double speed,
+                      bool slow_path) {
     std::fprintf(out, "  %-17s %9" PRIu64 " %8" PRIu64 " %9" PRIu64 " %11" PRIu64 "  %10s", name,
                  c.pairs, c.false_positives, c.missed_touching, c.missed_overlapping,
                  format_rate(c.error_rate()).c_str());
+    if (speed >= 0.0) {
+        std::fprintf(out, "  %8.1f", speed);
+    } else {
+        std::fprintf(out, "  %8s", "");
+    }
     if (slow_path) {
         std::fprintf(out, "  %8.3f%%", percent(c.slow_path_pairs, c.pairs));
     }
@@ -49,19 +56,23 @@ void print_truth_table(std::FILE* out, const accuracy_report& report) {
 }
 
 void print_method_tables(std::FILE* out, const accuracy_report& report) {
+    std::fprintf(out, "Mpairs/s per family: the one scoring run over the family's pairs, %u thread(s);\n"
+                      "boundary pairs cost method exact its slow path\n\n",
+                 report.settings.threads);
     for (const method_result& m : report.methods) {
         const bool slow_path = m.test == method::exact;
         std::fprintf(out, "method %s:\n", method_name(m.test));
-        std::fprintf(out, "  %-17s %9s %8s %9s %11s  %10s", "family", "pairs", "FP", "FN touch",
-                     "FN overlap", "error rate");
+        std::fprintf(out, "  %-17s %9s %8s %9s %11s  %10s  %8s", "family", "pairs", "FP", "FN touch",
+                     "FN overlap", "error rate", "Mpairs/s");
         if (slow_path) {
             std::fprintf(out, "  %9s", "slow path");
         }
         std::fprintf(out, "\n");
         for (std::size_t f = 0; f < report.families.size(); ++f) {
-            print_counts_row(out, report.families[f].name.c_str(), m.per_family[f], slow_path);
+            print_counts_row(out, report.families[f].name.c_str(), m.per_family[f],
+                             m.family_mpairs_per_second[f], slow_path);
         }
-        print_counts_row(out, "all families", m.total, slow_path);
+        print_counts_row(out, "all families", m.total, -1.0, slow_path);
         std::fprintf(out, "\n");
     }
 }

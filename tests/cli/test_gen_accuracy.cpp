@@ -630,6 +630,7 @@ TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed)
                                       obbsat::suites::family_name(families[f]);
             EXPECT_EQ(counts["family"].text, obbsat::suites::family_name(families[f])) << where;
             EXPECT_EQ(counts["pairs"].count(), 400u) << where;
+            EXPECT_GT(counts["mpairs_per_second"].value, 0.0) << where;
             EXPECT_EQ(counts["false_positives"].count(), fp) << where;
             EXPECT_EQ(counts["false_negatives_touching"].count(), fn_touching) << where;
             EXPECT_EQ(counts["false_negatives_overlapping"].count(), fn_overlapping) << where;

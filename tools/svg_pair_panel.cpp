@@ -24,10 +24,10 @@ constexpr double main_top = 50;
 constexpr double main_size = 360;
 constexpr double main_padding = 26;  // room for corner and axis labels
 constexpr double side_left = main_left + main_size + margin;
-constexpr double side_width = panel_width - side_left - margin;
-constexpr double inset_size = side_width;
+// The inset leaves room below it for the longest legend (13 lines).
+constexpr double inset_size = 200;
 constexpr double caption_top = main_top + main_size + 16;
-constexpr double line_height = 12;
+constexpr double line_height = 11.5;
 
 constexpr std::array<const char*, 4> corner_names = {"UL", "UR", "LR", "LL"};
 
@@ -441,9 +441,7 @@ void draw_legend(writer& out, const pair_drawing& pair, const method_view& axes,
         line(text, separating, separating ? "#111" : "#444");
     }
     if (axes.separating >= 0) {
-        line("bars: A's and B's extents on the separating axis; dashed: their facing ends, as " +
-                 std::string(method_name(pair.test)) + " computed them",
-             false, "#666");
+        line("bars: the extents on that axis; dashed: their facing ends", false, "#666");
     }
     if (!axes.note.empty()) {
         line(axes.note, false, "#8a5a00");
@@ -543,7 +541,7 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     double legend_top = main_top + 10;
     if (contact.has_inset) {
         draw_inset(out, pair, axes, contact, inset, main, id);
-        legend_top = main_top + inset_size + 16;
+        legend_top = main_top + inset_size + 14;
     }
     draw_legend(out, pair, axes, contact, side_left, legend_top);
 

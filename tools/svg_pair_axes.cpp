@@ -220,7 +220,8 @@ bool find_separating_edge_normal(const rect& a, const rect& b, axis_view& found)
 
 method_view exact_method_view(method m, const rect& a, const rect& b, bool collides) {
     method_view view;
-    view.arithmetic = "exact signs";
+    view.arithmetic = m == method::exact ? "exact signs"
+                                         : "judged by exact signs; the method certifies in float";
     const auto ends = article_axis_ends(a, b);
     for (int k = 0; k < 4; ++k) {
         const auto& [from, to] = ends[static_cast<std::size_t>(k)];

@@ -38,7 +38,7 @@ struct axis_view {
 
 /// A method's view of one pair.
 struct method_view {
-    std::string arithmetic;       ///< "float", "double" or "exact signs"
+    std::string arithmetic;       ///< how the axes were judged: "float", "double", "exact signs", ...
     std::vector<axis_view> axes;  ///< the four article axes, then an edge normal if one was needed
     int separating = -1;          ///< index in axes of the separating axis shown, -1 for none
     std::string note;             ///< a remark when the axes alone do not explain the verdict

@@ -80,12 +80,7 @@ std::vector<double> measure_throughput(const std::vector<method>& methods, backe
                                        unsigned reps, const throughput_scene& spec) {
     const scene world = make_scene(
         scene_spec_for(scene_density::typical, spec.rects, spec.pairs));
-    std::vector<rect> plain;
-    plain.reserve(world.rects.size());
-    for (std::size_t i = 0; i < world.rects.size(); ++i) {
-        plain.push_back(world.rects[i]);
-    }
-    const rect_records records(plain);
+    const rect_records records(world.rects);
     const std::size_t count = world.pairs.size();
     std::vector<std::uint8_t> verdicts(count);
 

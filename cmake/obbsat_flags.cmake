@@ -12,9 +12,17 @@ set(OBBSAT_FP_FLAGS -ffp-contract=off -fno-fast-math)
 # at load time and refuses to inline the reference's small step functions.
 set(OBBSAT_CODEGEN_FLAGS -fno-semantic-interposition)
 
+# CI turns warnings into errors (the asan preset), so a new warning fails the
+# build instead of scrolling by; off by default, as a newer compiler may warn
+# about code that an older one accepted.
+option(OBBSAT_WARNINGS_AS_ERRORS "Treat warnings in obbsat's own targets as errors" OFF)
+
 function(obbsat_strict_warnings target)
   target_compile_options(${target} PRIVATE
     -Wall -Wextra -Wconversion -Wsign-conversion -Wshadow -Wpedantic)
+  if(OBBSAT_WARNINGS_AS_ERRORS)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
 endfunction()
 
 function(obbsat_target_defaults target)

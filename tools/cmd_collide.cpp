@@ -145,6 +145,11 @@ int run_collide(const arguments& args) {
     const parsed_options options = parse_options(args, collide_option_specs());
     const std::string rects_path(options.required("rects"));
     const std::string pairs_path(options.required("pairs"));
+    // The rectangles are read to the end before the first pair, so a shared
+    // standard input would leave no pairs and pass as an empty answer.
+    if (rects_path == "-" && pairs_path == "-") {
+        throw usage_error("--rects and --pairs cannot both read standard input ('-')");
+    }
     collide_options run;
     run.test = method_option(options);
     if (const auto threads = options.value("threads")) {

@@ -197,6 +197,11 @@ void line_reader::fail(const std::string& reason) const {
     throw input_error(name_, line_number_, reason);
 }
 
+void line_reader::fail_line_too_long() const {
+    throw input_error(name_, line_number_ + 1,
+                      "line is longer than " + std::to_string(max_line_bytes_) + " bytes");
+}
+
 void line_reader::refill() {
     if (begin_ != 0) {
         std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
@@ -204,12 +209,15 @@ void line_reader::refill() {
         begin_ = 0;
     }
     if (end_ == buffer_.size()) {
-        // The whole buffer is one unfinished line: grow, up to the limit.
-        if (buffer_.size() >= max_line_bytes_) {
-            throw input_error(name_, line_number_ + 1,
-                              "line is longer than " + std::to_string(max_line_bytes_) + " bytes");
+        // The whole buffer is one unfinished line: grow, up to the longest
+        // line allowed plus its line end ("\r\n"); a full buffer of that size
+        // holds more than max_line_bytes_ of one line.
+        const std::size_t most =
+            max_line_bytes_ > SIZE_MAX - 2 ? SIZE_MAX : max_line_bytes_ + 2;
+        if (buffer_.size() >= most) {
+            fail_line_too_long();
         }
-        buffer_.resize(std::min(buffer_.size() * 2, max_line_bytes_));
+        buffer_.resize(std::min(buffer_.size() * 2, most));
     }
     const std::size_t room = buffer_.size() - end_;
     std::size_t got = 0;
@@ -253,6 +261,11 @@ bool line_reader::next(std::string_view& line) {
         line = std::string_view(base + begin_, line_end - begin_);
         if (!line.empty() && line.back() == '\r') {
             line.remove_suffix(1);
+        }
+        // A buffer larger than the limit (a large chunk size) can hold a
+        // longer line whole; the limit is the same for every chunk size.
+        if (line.size() > max_line_bytes_) {
+            fail_line_too_long();
         }
         // Spreadsheets often start a CSV file with a UTF-8 byte order mark.
         constexpr std::string_view byte_order_mark = "\xef\xbb\xbf";

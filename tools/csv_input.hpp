@@ -98,6 +98,7 @@ public:
 
 private:
     void refill();
+    [[noreturn]] void fail_line_too_long() const;
 
     std::FILE* file_ = nullptr;
     std::string_view text_;

@@ -3,6 +3,8 @@
 // coordinates at the ends of the float range. Every refusal is exit status 2
 // with one "obbsat: ..." line naming the file (and line), --out untouched;
 // every accepted extreme input gives each method's reference verdicts.
+#include "csv_input.hpp"
+
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
@@ -173,6 +175,36 @@ TEST(robustness, a_line_longer_than_16_mib_is_refused_naming_it) {
     write_file(s.file("long.csv"), unit_rect + std::string(std::size_t{17} << 20, ' ') + unit_rect);
     const run_result r = s.run("collide --rects long.csv --pairs P.csv --out v.txt");
     expect_refused(s, r, "long.csv:2: line is longer than 16777216 bytes", "17 MiB line");
+}
+
+TEST(robustness, the_line_limit_is_exact_for_every_chunk_size_and_line_end) {
+    constexpr std::size_t limit = 1024;
+    for (const std::size_t chunk : {1u, 7u, 64u, 1000u, 1025u, 1026u, 8192u}) {
+        for (const std::string line_end : {"\n", "\r\n", ""}) {
+            for (const std::size_t length : {limit - 1, limit, limit + 1, limit + 2}) {
+                const std::string text = "first\n" + std::string(length, 'x') + line_end;
+                obbsat::io::line_reader lines(std::string_view(text), "T", chunk, limit);
+                std::string_view line;
+                const std::string what = "chunk " + std::to_string(chunk) + ", line of " +
+                                         std::to_string(length) + " bytes, line end " +
+                                         std::to_string(line_end.size());
+                ASSERT_TRUE(lines.next(line)) << what;
+                EXPECT_EQ(line, "first") << what;
+                if (length <= limit) {
+                    ASSERT_TRUE(lines.next(line)) << what;
+                    EXPECT_EQ(line.size(), length) << what;
+                    EXPECT_FALSE(lines.next(line)) << what;
+                } else {
+                    try {
+                        lines.next(line);
+                        ADD_FAILURE() << what << ": no error";
+                    } catch (const obbsat::io::input_error& e) {
+                        EXPECT_EQ(std::string(e.what()), "T:2: line is longer than 1024 bytes") << what;
+                    }
+                }
+            }
+        }
+    }
 }
 
 TEST(robustness, an_unwritable_output_is_an_error_not_a_success) {

@@ -14,3 +14,4 @@
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
 #include <obbsat/scene.hpp>
+#include <obbsat/validate.hpp>

@@ -1,6 +1,8 @@
 // obbsat draw, run as a user runs it: the SVG it writes is parsed (a small XML
 // reader below) and checked against the methods' references and the exact
 // oracle called in process; bad usage and bad input leave no file behind.
+#include "program_runner.hpp"
+
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect.hpp>
@@ -20,12 +22,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
-#ifndef OBBSAT_CLI_PATH
-#error "OBBSAT_CLI_PATH must name the obbsat program"
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -33,72 +29,10 @@ using obbsat::method;
 using obbsat::point;
 using obbsat::rect;
 
-// ---------------------------------------------------------------------------
-// Running the program.
-
-struct run_result {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-std::string read_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
-
-// A scratch directory: the program runs in work(), so that its messages name
-// the short relative paths the tests expect; its stdout and stderr are
-// captured outside work(), so that they never count as files it wrote.
-class scratch {
-public:
-    scratch() {
-        char pattern[] = "/tmp/obbsat_draw_XXXXXX";
-        if (mkdtemp(pattern) == nullptr) {
-            throw std::runtime_error("mkdtemp failed");
-        }
-        root_ = pattern;
-        fs::create_directory(work());
-        fs::create_directory(root_ / "capture");
-    }
-    ~scratch() {
-        std::error_code ignored;
-        fs::remove_all(root_, ignored);
-    }
-    scratch(const scratch&) = delete;
-    scratch& operator=(const scratch&) = delete;
-
-    fs::path work() const { return root_ / "work"; }
-    fs::path file(const std::string& name) const { return work() / name; }
-
-    run_result run(const std::string& args) const {
-        const fs::path out = root_ / "capture" / "stdout";
-        const fs::path err = root_ / "capture" / "stderr";
-        const std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND '" OBBSAT_CLI_PATH
-                                    "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
-        const int raw = std::system(command.c_str());
-        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-        return run_result{status, read_file(out), read_file(err)};
-    }
-
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(work())) {
-            names.push_back(e.path().filename().string());
-        }
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path root_;
-};
+using obbsat::cli_test::read_file;
+using obbsat::cli_test::run_result;
+using obbsat::cli_test::scratch;
+using obbsat::cli_test::write_file;
 
 // ---------------------------------------------------------------------------
 // A small XML reader: enough of XML for the SVG the program writes, and

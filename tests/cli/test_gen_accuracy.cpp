@@ -4,6 +4,7 @@
 // JSON holds the counts the library's references give, and its SVG is
 // well-formed with one point per method; demo prints the short form.
 #include "csv_input.hpp"
+#include "program_runner.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
@@ -25,12 +26,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
-#ifndef OBBSAT_CLI_PATH
-#error "OBBSAT_CLI_PATH must name the obbsat program"
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,79 +34,11 @@ using obbsat::rect;
 using obbsat::oracle::contact;
 using obbsat::suites::family;
 
-struct run_result {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-std::string read_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        lines.push_back(line);
-    }
-    return lines;
-}
-
-// A scratch directory: `work` is the program's current directory, `capture`
-// holds its stdout and stderr outside `work`, so they never count as files
-// the program left behind.
-class scratch {
-public:
-    scratch() {
-        char pattern[] = "/tmp/obbsat_gen_accuracy_XXXXXX";
-        if (mkdtemp(pattern) == nullptr) {
-            throw std::runtime_error("mkdtemp failed");
-        }
-        root_ = pattern;
-        fs::create_directory(work());
-        fs::create_directory(root_ / "capture");
-    }
-    ~scratch() {
-        std::error_code ignored;
-        fs::remove_all(root_, ignored);
-    }
-    scratch(const scratch&) = delete;
-    scratch& operator=(const scratch&) = delete;
-
-    fs::path work() const { return root_ / "work"; }
-    fs::path file(const std::string& name) const { return work() / name; }
-
-    run_result run(const std::string& args) const {
-        const fs::path out = root_ / "capture" / "stdout";
-        const fs::path err = root_ / "capture" / "stderr";
-        const std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND '" OBBSAT_CLI_PATH
-                                    "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
-        const int raw = std::system(command.c_str());
-        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-        return run_result{status, read_file(out), read_file(err)};
-    }
-
-    /// Every path under work(), relative and sorted, directories included.
-    std::vector<std::string> tree() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::recursive_directory_iterator(work())) {
-            names.push_back(fs::relative(e.path(), work()).string());
-        }
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path root_;
-};
+using obbsat::cli_test::lines_of;
+using obbsat::cli_test::read_file;
+using obbsat::cli_test::run_result;
+using obbsat::cli_test::scratch;
+using obbsat::cli_test::write_file;
 
 const char* const suite_files[] = {"rects.csv", "pairs.csv", "truth_class.txt", "truth.txt", "tags.txt"};
 

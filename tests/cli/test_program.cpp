@@ -2,6 +2,7 @@
 // statuses, exact error messages, --out left untouched on error, and verdict
 // files identical for every backend this CPU runs.
 #include "csv_input.hpp"
+#include "program_runner.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
@@ -25,12 +26,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
-#ifndef OBBSAT_CLI_PATH
-#error "OBBSAT_CLI_PATH must name the obbsat program"
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,76 +35,10 @@ using obbsat::pair_index;
 using obbsat::point;
 using obbsat::rect;
 
-struct run_result {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-std::string read_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
-
-// A scratch directory: `work` is the program's current directory (so error
-// messages carry the short relative names the tests expect), `capture` holds
-// its stdout and stderr, outside `work` so they never count as stray files.
-class scratch {
-public:
-    scratch() {
-        char pattern[] = "/tmp/obbsat_cli_XXXXXX";
-        if (mkdtemp(pattern) == nullptr) {
-            throw std::runtime_error("mkdtemp failed");
-        }
-        root_ = pattern;
-        fs::create_directory(work());
-        fs::create_directory(root_ / "capture");
-    }
-    ~scratch() {
-        std::error_code ignored;
-        fs::remove_all(root_, ignored);
-    }
-    scratch(const scratch&) = delete;
-    scratch& operator=(const scratch&) = delete;
-
-    fs::path work() const { return root_ / "work"; }
-    fs::path file(const std::string& name) const { return work() / name; }
-
-    /// Runs `obbsat ARGS` in work(), OBBSAT_BACKEND unset unless `env` sets it.
-    run_result run(const std::string& args, const std::string& env = "",
-                   const std::string& input = "") const {
-        const fs::path out = root_ / "capture" / "stdout";
-        const fs::path err = root_ / "capture" / "stderr";
-        std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND " + env +
-                              " '" OBBSAT_CLI_PATH "' " + args + " > '" + out.string() + "' 2> '" +
-                              err.string() + "'";
-        if (!input.empty()) {
-            command += " < '" + input + "'";
-        }
-        const int raw = std::system(command.c_str());
-        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-        return run_result{status, read_file(out), read_file(err)};
-    }
-
-    /// The names in work(), sorted.
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(work())) {
-            names.push_back(e.path().filename().string());
-        }
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path root_;
-};
+using obbsat::cli_test::read_file;
+using obbsat::cli_test::run_result;
+using obbsat::cli_test::scratch;
+using obbsat::cli_test::write_file;
 
 const std::string unit_rect = "0,1,1,1,1,0,0,0\n";
 
@@ -293,7 +222,7 @@ TEST_F(bad_input, a_bad_line_after_the_first_chunk_still_leaves_out_untouched) {
 TEST_F(bad_input, a_bad_line_on_standard_input_is_named_stdin) {
     write_file(s.file("bad_pairs.csv"), "0,1\n1,1,1\n");
     const run_result r = s.run("collide --rects R.csv --pairs - --out v.txt", "",
-                               s.file("bad_pairs.csv").string());
+                               "< '" + s.file("bad_pairs.csv").string() + "'");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err, "obbsat: <stdin>:2: expected 2 comma-separated fields (i,j), found 3\n");
     EXPECT_EQ(read_file(s.file("v.txt")), "previous verdicts\n");
@@ -585,7 +514,7 @@ TEST_F(verdicts, standard_output_and_stdin_give_the_same_bytes) {
     ASSERT_EQ(to_stdout.status, 0) << to_stdout.err;
     EXPECT_EQ(to_stdout.out, *reference_);
     const run_result from_stdin = files_->run("collide --rects R.csv --pairs - --threads 0", "",
-                                              files_->file("P.csv").string());
+                                              "< '" + files_->file("P.csv").string() + "'");
     ASSERT_EQ(from_stdin.status, 0) << from_stdin.err;
     EXPECT_EQ(from_stdin.out, *reference_);
 }

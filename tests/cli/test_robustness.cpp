@@ -4,6 +4,7 @@
 // with one "obbsat: ..." line naming the file (and line), --out untouched;
 // every accepted extreme input gives each method's reference verdicts.
 #include "csv_input.hpp"
+#include "program_runner.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
@@ -21,12 +22,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
-#ifndef OBBSAT_CLI_PATH
-#error "OBBSAT_CLI_PATH must name the obbsat program"
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -34,73 +29,10 @@ using obbsat::backend;
 using obbsat::method;
 using obbsat::rect;
 
-struct run_result {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-std::string read_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
-
-void write_file(const fs::path& file, const std::string& bytes) {
-    std::ofstream(file, std::ios::binary) << bytes;
-}
-
-// A scratch directory the program runs in (so messages carry short names);
-// its standard output and error are captured beside it.
-class scratch {
-public:
-    scratch() {
-        char pattern[] = "/tmp/obbsat_robustness_XXXXXX";
-        if (mkdtemp(pattern) == nullptr) {
-            throw std::runtime_error("mkdtemp failed");
-        }
-        root_ = pattern;
-        fs::create_directory(work());
-    }
-    ~scratch() {
-        std::error_code ignored;
-        fs::remove_all(root_, ignored);
-    }
-    scratch(const scratch&) = delete;
-    scratch& operator=(const scratch&) = delete;
-
-    fs::path work() const { return root_ / "work"; }
-    fs::path file(const std::string& name) const { return work() / name; }
-
-    /// Runs `obbsat ARGS` in work(); `redirects` is appended to the command
-    /// line (e.g. "< file"); OBBSAT_BACKEND is unset.
-    run_result run(const std::string& args, const std::string& redirects = "") const {
-        const fs::path out = root_ / "stdout";
-        const fs::path err = root_ / "stderr";
-        const std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND '" OBBSAT_CLI_PATH
-                                    "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "' " +
-                                    redirects;
-        const int raw = std::system(command.c_str());
-        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-        return run_result{status, read_file(out), read_file(err)};
-    }
-
-    /// Files left in work() whose name starts with `prefix`.
-    std::vector<std::string> entries_starting_with(const std::string& prefix) const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(work())) {
-            const std::string name = e.path().filename().string();
-            if (name.rfind(prefix, 0) == 0) {
-                names.push_back(name);
-            }
-        }
-        return names;
-    }
-
-private:
-    fs::path root_;
-};
+using obbsat::cli_test::read_file;
+using obbsat::cli_test::run_result;
+using obbsat::cli_test::scratch;
+using obbsat::cli_test::write_file;
 
 const std::string unit_rect = "0,1,1,1,1,0,0,0\n";
 const std::string previous = "previous verdicts\n";
@@ -121,7 +53,7 @@ TEST(robustness, both_files_on_standard_input_are_refused) {
     const scratch s;
     write_file(s.file("v.txt"), previous);
     write_file(s.file("in.txt"), unit_rect + "0,0\n");
-    const run_result r = s.run("collide --rects - --pairs - --out v.txt", "< in.txt");
+    const run_result r = s.run("collide --rects - --pairs - --out v.txt", "", "< in.txt");
     expect_refused(s, r, "collide: --rects and --pairs cannot both read standard input ('-')", "both -");
 }
 
@@ -214,7 +146,7 @@ TEST(robustness, an_unwritable_output_is_an_error_not_a_success) {
     const run_result to_file = s.run("collide --rects R.csv --pairs P.csv --out /dev/full");
     EXPECT_EQ(to_file.status, 2);
     EXPECT_EQ(to_file.err, "obbsat: /dev/full: write error: No space left on device\n");
-    const run_result to_stdout = s.run("collide --rects R.csv --pairs P.csv", "> /dev/full");
+    const run_result to_stdout = s.run("collide --rects R.csv --pairs P.csv", "", "> /dev/full");
     EXPECT_EQ(to_stdout.status, 2);
 }
 

@@ -18,4 +18,16 @@ rect corners_of(const pose& p) {
     return rect{corner(-hx, hy), corner(hx, hy), corner(hx, -hy), corner(-hx, -hy)};
 }
 
+pose pose_of(const rect& r) {
+    const double cx = (static_cast<double>(r.ul.x) + r.ur.x + r.lr.x + r.ll.x) / 4.0;
+    const double cy = (static_cast<double>(r.ul.y) + r.ur.y + r.lr.y + r.ll.y) / 4.0;
+    const double wx = static_cast<double>(r.ur.x) - r.ul.x;
+    const double wy = static_cast<double>(r.ur.y) - r.ul.y;
+    const double hx = static_cast<double>(r.ur.x) - r.lr.x;
+    const double hy = static_cast<double>(r.ur.y) - r.lr.y;
+    return pose{point{static_cast<float>(cx), static_cast<float>(cy)},
+                point{static_cast<float>(std::hypot(wx, wy) / 2.0), static_cast<float>(std::hypot(hx, hy) / 2.0)},
+                static_cast<float>(std::atan2(wy, wx))};
+}
+
 }  // namespace obbsat

@@ -4,6 +4,7 @@
 #include "accuracy_brief.hpp"
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "demo_box2d.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
@@ -17,6 +18,7 @@
 #include <cinttypes>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -135,6 +137,32 @@ std::vector<backend> runnable_backends() {
         }
     }
     return runnable;
+}
+
+// Box2D's narrow phase on the same pairs, and the speedup of the best sat4
+// rows over it; `sat4_seconds` holds the best backend's records rows at 1
+// and 2 threads (0 where not timed).
+void print_box2d_comparison(const scene& world, unsigned reps, const std::vector<std::uint8_t>& sat4,
+                            const double sat4_seconds[2]) {
+    if (sat4.empty()) {
+        return;
+    }
+    const std::optional<peer_timing> box2d = time_box2d(world.rects, world.pairs, reps, sat4);
+    if (!box2d) {
+        std::printf("Box2D: not found when this program was built (Debian: libbox2d-dev); no peer comparison\n");
+        return;
+    }
+    const double pairs = static_cast<double>(world.pairs.size());
+    std::printf("Box2D 2.4 b2CollidePolygons, 1 thread: %.1f Mpairs/s (%.2f ns/pair), same verdict as sat4 "
+                "on %.2f%% of pairs\n",
+                pairs / box2d->median_seconds / 1e6, box2d->median_seconds / pairs * 1e9,
+                100.0 * box2d->agreement);
+    for (unsigned t = 0; t < 2; ++t) {
+        if (sat4_seconds[t] > 0.0) {
+            std::printf("  sat4 %s records, %u thread%s: %.1fx Box2D\n", backend_name(best_supported_backend()),
+                        t + 1, t == 0 ? "" : "s", box2d->median_seconds / sat4_seconds[t]);
+        }
+    }
 }
 
 // Every row the demo times, the reference of each method first.
@@ -266,6 +294,8 @@ int run_demo(const arguments& args) {
     double reference_seconds = 0.0;
     std::vector<std::uint8_t> verdicts(count);
     std::vector<accuracy::timed_method> timed;  // for the accuracy lines below
+    std::vector<std::uint8_t> sat4_verdicts;    // for the Box2D comparison below
+    double best_sat4_seconds[2] = {0.0, 0.0};   // best backend, records, 1 and 2 threads
     for (const demo_entry& entry : entries) {
         if (entry.is_reference) {
             reference.assign(count, 0);
@@ -297,6 +327,13 @@ int run_demo(const arguments& args) {
             entry.runner == backend_name(best_supported_backend())) {
             timed.push_back({entry.test, pairs / result.median_seconds / 1e6});
         }
+        if (entry.test == method::sat4 && entry.is_reference) {
+            sat4_verdicts = verdicts;
+        }
+        if (entry.test == method::sat4 && entry.store == "records" && entry.threads <= 2 &&
+            entry.runner == backend_name(best_supported_backend())) {
+            best_sat4_seconds[entry.threads - 1] = result.median_seconds;
+        }
         std::printf("%-*s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
                     method_width, method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
                     entry.threads,
@@ -307,6 +344,7 @@ int run_demo(const arguments& args) {
     }
     std::printf("\nall %zu rows agree with the scalar reference (best backend here: %s)\n",
                 entries.size(), backend_name(best_supported_backend()));
+    print_box2d_comparison(world, settings.reps, sat4_verdicts, best_sat4_seconds);
     accuracy::print_accuracy_brief(stdout, timed);
     return exit_success;
 }

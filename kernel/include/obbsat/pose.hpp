@@ -17,4 +17,9 @@ struct pose {
 /// LR = c + R(hx, -hy), LL = c + R(-hx, -hy), computed in double, rounded once.
 rect corners_of(const pose& p);
 
+/// A pose that reproduces the corners of `r` to within rounding when `r` is a
+/// rectangle: center = mean of the corners, half width = |UR - UL| / 2, half
+/// height = |UR - LR| / 2, angle = direction of UR - UL; computed in double.
+pose pose_of(const rect& r);
+
 }  // namespace obbsat

@@ -106,4 +106,39 @@ void print_options(std::FILE* out, const std::vector<option_spec>& specs) {
     }
 }
 
+std::string method_list() {
+    std::string known;
+    for (const method m : all_methods()) {
+        known += known.empty() ? "" : ", ";
+        known += method_name(m);
+    }
+    return known;
+}
+
+method method_option(const parsed_options& options) {
+    const auto name = options.value("method");
+    if (!name) {
+        return method::sat4;
+    }
+    const auto parsed = parse_method(*name);
+    if (!parsed) {
+        throw usage_error("--method: unknown method '" + std::string(*name) + "' (expected " +
+                          method_list() + ")");
+    }
+    return *parsed;
+}
+
+backend backend_option(const parsed_options& options) {
+    const auto name = options.value("backend");
+    if (!name) {
+        return backend::automatic;
+    }
+    const auto parsed = parse_backend(*name);
+    if (!parsed) {
+        throw usage_error("--backend: unknown backend '" + std::string(*name) +
+                          "' (expected auto, scalar, sse2, avx2 or avx512)");
+    }
+    return *parsed;
+}
+
 }  // namespace obbsat::cli

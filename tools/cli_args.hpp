@@ -2,6 +2,9 @@
 // once, as "--name value" or "--name=value"; flags take no value.
 #pragma once
 
+#include <obbsat/backend.hpp>
+#include <obbsat/method.hpp>
+
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -52,5 +55,14 @@ std::uint64_t parse_number_option(std::string_view option, std::string_view text
 
 /// Prints one aligned line per option.
 void print_options(std::FILE* out, const std::vector<option_spec>& specs);
+
+/// "sat4, sat4_centered, ...": every method this build offers, for help and errors.
+std::string method_list();
+
+/// The --method option (default sat4); throws usage_error naming the known methods.
+method method_option(const parsed_options& options);
+
+/// The --backend option (default auto); throws usage_error naming the known backends.
+backend backend_option(const parsed_options& options);
 
 }  // namespace obbsat::cli

@@ -30,16 +30,6 @@ namespace {
 // negligible, small enough that 100M pairs run in a few tens of MB.
 constexpr std::size_t pairs_per_chunk = std::size_t{1} << 20;
 
-// "sat4, sat4_centered, ...": every method this build offers.
-std::string method_list() {
-    std::string known;
-    for (const method m : all_methods()) {
-        known += known.empty() ? "" : ", ";
-        known += method_name(m);
-    }
-    return known;
-}
-
 const std::vector<option_spec>& collide_option_specs() {
     static const std::string method_help = "collision test: " + method_list() + " (default: sat4)";
     static const std::vector<option_spec> specs = {
@@ -52,32 +42,6 @@ const std::vector<option_spec>& collide_option_specs() {
         {"help", "", "show this help"},
     };
     return specs;
-}
-
-backend backend_option(const parsed_options& options) {
-    const auto name = options.value("backend");
-    if (!name) {
-        return backend::automatic;
-    }
-    const auto parsed = parse_backend(*name);
-    if (!parsed) {
-        throw usage_error("--backend: unknown backend '" + std::string(*name) +
-                          "' (expected auto, scalar, sse2, avx2 or avx512)");
-    }
-    return *parsed;
-}
-
-method method_option(const parsed_options& options) {
-    const auto name = options.value("method");
-    if (!name) {
-        return method::sat4;
-    }
-    const auto parsed = parse_method(*name);
-    if (!parsed) {
-        throw usage_error("--method: unknown method '" + std::string(*name) + "' (expected " +
-                          method_list() + ")");
-    }
-    return *parsed;
 }
 
 // Where verdict text goes: the atomic file of --out, or standard output.

@@ -92,11 +92,7 @@ demo_settings settings_from(const parsed_options& options) {
         } else if (const auto m = parse_method(*v)) {
             s.methods = {*m};
         } else {
-            std::string known;
-            for (const method each : all_methods()) {
-                known += std::string(method_name(each)) + ", ";
-            }
-            throw usage_error("--method: expected " + known + "or all, got '" + std::string(*v) +
+            throw usage_error("--method: expected " + method_list() + ", or all, got '" + std::string(*v) +
                               "'");
         }
     }

@@ -34,15 +34,6 @@ constexpr std::size_t pairs_per_chunk = std::size_t{1} << 16;
 constexpr double picture_margin = 10;
 constexpr double header_height = 40;
 
-std::string method_list() {
-    std::string known;
-    for (const method m : all_methods()) {
-        known += known.empty() ? "" : ", ";
-        known += method_name(m);
-    }
-    return known;
-}
-
 const std::vector<option_spec>& draw_option_specs() {
     static const std::string method_help = "collision test: " + method_list() + " (default: sat4)";
     static const std::vector<option_spec> specs = {
@@ -101,32 +92,6 @@ std::vector<std::uint64_t> parse_selection(std::string_view text) {
         begin = comma + 1;
     }
     return chosen;
-}
-
-method method_option(const parsed_options& options) {
-    const auto name = options.value("method");
-    if (!name) {
-        return method::sat4;
-    }
-    const auto parsed = parse_method(*name);
-    if (!parsed) {
-        throw usage_error("--method: unknown method '" + std::string(*name) + "' (expected " +
-                          method_list() + ")");
-    }
-    return *parsed;
-}
-
-backend backend_option(const parsed_options& options) {
-    const auto name = options.value("backend");
-    if (!name) {
-        return backend::automatic;
-    }
-    const auto parsed = parse_backend(*name);
-    if (!parsed) {
-        throw usage_error("--backend: unknown backend '" + std::string(*name) +
-                          "' (expected auto, scalar, sse2, avx2 or avx512)");
-    }
-    return *parsed;
 }
 
 // The chosen pairs, in the order of `chosen`, read from the whole pair file

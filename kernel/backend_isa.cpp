@@ -4,6 +4,8 @@
 // ISA's compiler flags; it defines <name>_kernels().
 #include "batch_kernel.hpp"
 #include "certified_lanes.hpp"
+#include "conservative_lanes.hpp"
+#include "fused_multiply_add.hpp"
 #include "kernel_table.hpp"
 #include "sat4_centered_lanes.hpp"
 #include "sat4_double_lanes.hpp"
@@ -20,6 +22,26 @@ namespace obbsat::detail {
 
 using isa_arch = xsimd::OBBSAT_ISA_ARCH;
 
+namespace {
+
+void fused_multiply_add_lanes(const float* x, const float* y, const float* z, std::size_t count, float* out) {
+    using batch = lanes<isa_arch>;
+    constexpr std::size_t width = batch::size;
+    for (std::size_t i = 0; i < count; i += width) {
+        alignas(64) float staged[3][width] = {};
+        const std::size_t n = count - i < width ? count - i : width;
+        std::memcpy(staged[0], x + i, n * sizeof(float));
+        std::memcpy(staged[1], y + i, n * sizeof(float));
+        std::memcpy(staged[2], z + i, n * sizeof(float));
+        const batch fused = fused_multiply_add<isa_arch>(batch::load_aligned(staged[0]), batch::load_aligned(staged[1]),
+                                                         batch::load_aligned(staged[2]));
+        fused.store_aligned(staged[0]);
+        std::memcpy(out + i, staged[0], n * sizeof(float));
+    }
+}
+
+}  // namespace
+
 const kernel_table& OBBSAT_CONCAT(OBBSAT_ISA_NAME, _kernels)() {
     // Rows in the order of obbsat::method.
     static const kernel_table table = {
@@ -32,6 +54,7 @@ const kernel_table& OBBSAT_CONCAT(OBBSAT_ISA_NAME, _kernels)() {
         {indexed_records_batch<isa_arch, sat4_lanes>, indexed_records_batch<isa_arch, sat4_centered_lanes>,
          indexed_records_batch<isa_arch, sat4_double_lanes>, indexed_records_batch<isa_arch, conservative_lanes>,
          indexed_records_batch<isa_arch, exact_lanes>},
+        fused_multiply_add_lanes,
     };
     return table;
 }

@@ -1,8 +1,8 @@
 // The certified separating-edge test on one pair per lane: the same float
 // operations, in the same order, as obbsat::ref::certify
-// (scalar_ref/include/obbsat/ref/certified.hpp states them), and the methods
-// built on it: conservative (no slow path) and exact (undecided lanes are
-// settled by the exact oracle, one pair at a time).
+// (scalar_ref/include/obbsat/ref/certified.hpp states them), and method exact
+// built on it: undecided lanes are settled by the exact oracle, one pair at a
+// time.
 #pragma once
 
 #include "lanes.hpp"
@@ -113,16 +113,6 @@ struct certified_steps {
         scan_edges(a, ea, b, bound, separating, all_blocked);
         scan_edges(b, eb, a, bound, separating, all_blocked);
         return verdict{decidable & separating, decidable & ~separating & all_blocked};
-    }
-};
-
-/// Method conservative: a lane collides unless it is proven separated.
-template <class Arch>
-struct conservative_lanes {
-    static constexpr bool has_slow_path = false;
-    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
-        const auto v = certified_steps<Arch>::certify(a, b);
-        return lane_verdicts{lane_bits(~v.separated), 0};
     }
 };
 

@@ -34,7 +34,7 @@ cpu_features probe() {
     const bool ymm_saved = (xcr0 & 0x6u) == 0x6u;           // SSE and AVX state
     const bool zmm_saved = ymm_saved && (xcr0 & 0xe0u) == 0xe0u;  // opmask, ZMM0-15 high, ZMM16-31
     f.sse2 = arch.sse2;
-    f.avx2 = arch.avx2 && ymm_saved;
+    f.avx2 = arch.avx2 && arch.fma3_avx2 && ymm_saved;
     f.avx512 = arch.avx512f && arch.avx512cd && arch.avx512dq && arch.avx512bw && zmm_saved;
 #endif
     return f;

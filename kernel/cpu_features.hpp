@@ -6,7 +6,7 @@ namespace obbsat::detail {
 
 struct cpu_features {
     bool sse2 = false;
-    bool avx2 = false;    // AVX2 instructions and the OS saves YMM state
+    bool avx2 = false;    // AVX2 and FMA3 instructions and the OS saves YMM state
     bool avx512 = false;  // AVX-512 F, CD, DQ, BW and the OS saves ZMM state
 };
 

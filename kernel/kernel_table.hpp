@@ -30,10 +30,17 @@ using indexed_fn = std::size_t (*)(const soa_view& rects, const pair_index* pair
 using indexed_records_fn = std::size_t (*)(const rect* records, const pair_index* pairs, std::size_t count,
                                     std::uint8_t* verdicts);
 
+/// out[i] = x[i] * y[i] + z[i] rounded once, as the backend's lanes compute
+/// it inside the methods that fuse (conservative). Exposed so that the SSE2
+/// emulation can be checked against std::fma directly.
+using fused_multiply_add_fn = void (*)(const float* x, const float* y, const float* z, std::size_t count,
+                                       float* out);
+
 struct kernel_table {
     stream_fn stream[method_count];
     indexed_fn indexed[method_count];
     indexed_records_fn indexed_records[method_count];
+    fused_multiply_add_fn fused_multiply_add;
 };
 
 const kernel_table& scalar_kernels();

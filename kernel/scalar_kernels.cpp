@@ -3,9 +3,12 @@
 
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/ref/certified.hpp>
+#include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
+
+#include <cmath>
 
 namespace obbsat::detail {
 
@@ -52,6 +55,12 @@ std::size_t indexed_records(const rect* records, const pair_index* pairs, std::s
     return exact_count<Reference>(count);
 }
 
+void fused_multiply_add(const float* x, const float* y, const float* z, std::size_t count, float* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = std::fma(x[i], y[i], z[i]);
+    }
+}
+
 }  // namespace
 
 const kernel_table& scalar_kernels() {
@@ -64,6 +73,7 @@ const kernel_table& scalar_kernels() {
         {indexed_records<ref::sat4>, indexed_records<ref::sat4_centered>,
          indexed_records<ref::sat4_double>, indexed_records<ref::conservative>,
          indexed_records<oracle::intersects>},
+        fused_multiply_add,
     };
     return table;
 }

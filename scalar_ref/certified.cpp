@@ -114,6 +114,4 @@ certified_verdict certify(const rect& a, const rect& b) {
     return certified_verdict{separating, !separating && all_blocked};
 }
 
-bool conservative(const rect& a, const rect& b) { return !certify(a, b).separated; }
-
 }  // namespace obbsat::ref

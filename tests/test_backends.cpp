@@ -19,6 +19,7 @@
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/ref/certified.hpp>
+#include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
@@ -74,7 +75,7 @@ constexpr golden_entry golden_digests[] = {
     {method::sat4, 0x1b45ee63ec5aa29e},
     {method::sat4_centered, 0x09b8092686886edf},
     {method::sat4_double, 0x3099c979b782180d},
-    {method::conservative, 0xbec462ebbea34d99},
+    {method::conservative, 0x59ab712fa3d1242f},
     {method::exact, 0x22608e361cc69299},
 };
 

@@ -221,7 +221,7 @@ bool find_separating_edge_normal(const rect& a, const rect& b, axis_view& found)
 method_view exact_method_view(method m, const rect& a, const rect& b, bool collides) {
     method_view view;
     view.arithmetic = m == method::exact ? "exact signs"
-                                         : "judged by exact signs; the method certifies in float";
+                                         : "judged by exact signs; the method proves a float margin";
     const auto ends = article_axis_ends(a, b);
     for (int k = 0; k < 4; ++k) {
         const auto& [from, to] = ends[static_cast<std::size_t>(k)];
@@ -235,7 +235,7 @@ method_view exact_method_view(method m, const rect& a, const rect& b, bool colli
                                        " separates the pair exactly, yet method exact says they collide");
             }
             view.note = "axis " + view.axes[static_cast<std::size_t>(article_separating)].label +
-                        " separates exactly, but the certified test could not prove it";
+                        " separates exactly, but by less than the method's margin";
         }
         return view;
     }
@@ -243,15 +243,15 @@ method_view exact_method_view(method m, const rect& a, const rect& b, bool colli
         view.separating = article_separating;
         return view;
     }
+    if (m == method::conservative) {
+        throw std::logic_error("method conservative says apart, yet no article axis separates the pair exactly");
+    }
     axis_view normal;
     if (find_separating_edge_normal(a, b, normal)) {
         view.axes.push_back(normal);
         view.separating = static_cast<int>(view.axes.size()) - 1;
         view.note = "no article axis separates; an edge normal does";
         return view;
-    }
-    if (m == method::conservative) {
-        throw std::logic_error("method conservative proved a separation that no edge normal shows");
     }
     view.note = "separated, but no axis or edge normal separates (a concave or degenerate quad)";
     return view;

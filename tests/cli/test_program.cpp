@@ -10,6 +10,7 @@
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/ref/certified.hpp>
+#include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>

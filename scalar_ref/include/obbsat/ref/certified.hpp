@@ -1,7 +1,6 @@
 // The certified separating-edge test: a float fast path that either proves
-// how two quads relate, exactly, or says it cannot. Method `conservative` is
-// this test alone; method `exact` settles the undecided pairs with the exact
-// oracle (obbsat/oracle/contact.hpp).
+// how two quads relate, exactly, or says it cannot. Method `exact` settles the
+// undecided pairs with the exact oracle (obbsat/oracle/contact.hpp).
 //
 // Ground truth: two closed convex quads are disjoint iff some edge line of one
 // has all four corners of the other strictly on its outer side. So, with every
@@ -55,9 +54,5 @@ struct certified_verdict {
 
 /// The certified separating-edge test on (a, b), as specified above.
 certified_verdict certify(const rect& a, const rect& b);
-
-/// Method conservative: false only when the pair is proven separated, so it
-/// never misses a collision.
-bool conservative(const rect& a, const rect& b);
 
 }  // namespace obbsat::ref

@@ -30,12 +30,27 @@ struct conservative_lanes {
 
     /// (K * 2^66) * c: K (1 + 2^-10) 2^-21 per lane, +inf where K >= 2^62.
     static OBBSAT_LANE_INLINE batch margin_scale(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
-        batch k = larger_magnitude(a.c[0], a.c[1]);
-        for (unsigned i = 2; i < coord_count; ++i) {
-            k = larger_magnitude(k, a.c[i]);
-        }
-        for (unsigned i = 0; i < coord_count; ++i) {
-            k = larger_magnitude(k, b.c[i]);
+        batch k;
+        if constexpr (std::is_base_of<xsimd::avx512dq, Arch>::value) {
+            k = larger_magnitude(a.c[0], a.c[1]);
+            for (unsigned i = 2; i < coord_count; ++i) {
+                k = larger_magnitude(k, a.c[i]);
+            }
+            for (unsigned i = 0; i < coord_count; ++i) {
+                k = larger_magnitude(k, b.c[i]);
+            }
+        } else {
+            batch hi = xsimd::max(a.c[0], a.c[1]);
+            batch lo = xsimd::min(a.c[0], a.c[1]);
+            for (unsigned i = 2; i < coord_count; ++i) {
+                hi = xsimd::max(hi, a.c[i]);
+                lo = xsimd::min(lo, a.c[i]);
+            }
+            for (unsigned i = 0; i < coord_count; ++i) {
+                hi = xsimd::max(hi, b.c[i]);
+                lo = xsimd::min(lo, b.c[i]);
+            }
+            k = xsimd::max(hi, -lo);
         }
         return (k * batch(0x1p66f)) * batch(0x1.004p-87f);
     }

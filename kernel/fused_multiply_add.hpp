@@ -36,6 +36,22 @@ inline __m128d multiply_add_rounded_to_odd(__m128d x, __m128d y, __m128d z) {
     return _mm_castsi128_pd(_mm_add_epi64(sum_bits, step));
 }
 
+/// The lanes of a double sum whose conversion to float could differ from the
+/// once-rounded result: an exact float midpoint (the 29 bits below float
+/// precision are 1000...0) or a nonzero value in the float subnormal range.
+inline int double_rounding_risk(__m128d sum) {
+    const __m128i bits = _mm_castpd_si128(sum);
+    const __m128i below_float = _mm_and_si128(bits, _mm_set_epi32(0, 0x1fffffff, 0, 0x1fffffff));
+    const __m128i midpoint = _mm_cmpeq_epi32(below_float, _mm_set_epi32(0, 0x10000000, 0, 0x10000000));
+    const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), sum);
+    const __m128d subnormal = _mm_and_pd(_mm_cmplt_pd(magnitude, _mm_set1_pd(0x1p-126)),
+                                         _mm_cmpgt_pd(magnitude, _mm_setzero_pd()));
+    // A midpoint needs the low 32 bits to match as well as the high ones: lane
+    // k's low dword is element 2k, and the high dword's 3 bits are in 2k + 1.
+    const int midpoint_dwords = _mm_movemask_ps(_mm_castsi128_ps(midpoint));
+    return (midpoint_dwords & 0x5) | _mm_movemask_pd(subnormal);
+}
+
 template <class Arch>
 lanes<Arch> fused_multiply_add(const lanes<Arch>& x, const lanes<Arch>& y, const lanes<Arch>& z) {
     if constexpr (std::is_base_of<xsimd::avx512f, Arch>::value) {
@@ -50,9 +66,19 @@ lanes<Arch> fused_multiply_add(const lanes<Arch>& x, const lanes<Arch>& y, const
 #endif
     } else {
         const __m128 xf = x, yf = y, zf = z;
-        const __m128d low = multiply_add_rounded_to_odd(_mm_cvtps_pd(xf), _mm_cvtps_pd(yf), _mm_cvtps_pd(zf));
-        const __m128d high = multiply_add_rounded_to_odd(
-            _mm_cvtps_pd(_mm_movehl_ps(xf, xf)), _mm_cvtps_pd(_mm_movehl_ps(yf, yf)), _mm_cvtps_pd(_mm_movehl_ps(zf, zf)));
+        const __m128d x_low = _mm_cvtps_pd(xf), y_low = _mm_cvtps_pd(yf), z_low = _mm_cvtps_pd(zf);
+        const __m128d x_high = _mm_cvtps_pd(_mm_movehl_ps(xf, xf));
+        const __m128d y_high = _mm_cvtps_pd(_mm_movehl_ps(yf, yf));
+        const __m128d z_high = _mm_cvtps_pd(_mm_movehl_ps(zf, zf));
+        __m128d low = _mm_add_pd(_mm_mul_pd(x_low, y_low), z_low);
+        __m128d high = _mm_add_pd(_mm_mul_pd(x_high, y_high), z_high);
+        // Rounding the double sum to float is already the once-rounded result
+        // unless that sum sits on a float midpoint or below the normal range;
+        // only then is the sum redone rounded to odd.
+        if ((double_rounding_risk(low) | double_rounding_risk(high)) != 0) {
+            low = multiply_add_rounded_to_odd(x_low, y_low, z_low);
+            high = multiply_add_rounded_to_odd(x_high, y_high, z_high);
+        }
         return lanes<Arch>(_mm_movelh_ps(_mm_cvtpd_ps(low), _mm_cvtpd_ps(high)));
     }
 }

@@ -40,17 +40,18 @@ struct conservative_lanes {
                 k = larger_magnitude(k, b.c[i]);
             }
         } else {
-            batch hi = xsimd::max(a.c[0], a.c[1]);
-            batch lo = xsimd::min(a.c[0], a.c[1]);
-            for (unsigned i = 2; i < coord_count; ++i) {
-                hi = xsimd::max(hi, a.c[i]);
-                lo = xsimd::min(lo, a.c[i]);
+            // Non-negative floats order as their bit patterns do: the integer
+            // maximum of the magnitudes runs beside the float work.
+            using bits = xsimd::batch<std::int32_t, Arch>;
+            const bits magnitude(0x7fffffff);
+            bits largest = xsimd::bitwise_cast<bits>(a.c[0]) & magnitude;
+            for (unsigned i = 1; i < coord_count; ++i) {
+                largest = xsimd::max(largest, xsimd::bitwise_cast<bits>(a.c[i]) & magnitude);
             }
             for (unsigned i = 0; i < coord_count; ++i) {
-                hi = xsimd::max(hi, b.c[i]);
-                lo = xsimd::min(lo, b.c[i]);
+                largest = xsimd::max(largest, xsimd::bitwise_cast<bits>(b.c[i]) & magnitude);
             }
-            k = xsimd::max(hi, -lo);
+            k = xsimd::bitwise_cast<batch>(largest);
         }
         return (k * batch(0x1p66f)) * batch(0x1.004p-87f);
     }

@@ -1,7 +1,6 @@
 #include "bench_workload.hpp"
 
 #include <obbsat/oracle/contact.hpp>
-#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>

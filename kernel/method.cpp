@@ -1,6 +1,5 @@
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
-#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>

@@ -2,7 +2,6 @@
 #include "kernel_table.hpp"
 
 #include <obbsat/oracle/contact.hpp>
-#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>

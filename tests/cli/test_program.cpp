@@ -9,7 +9,6 @@
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
-#include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>

@@ -7,6 +7,7 @@
 
 #include "fused_multiply_add.hpp"
 #include "lanes.hpp"
+#include "sat4_lanes.hpp"
 
 namespace obbsat::detail {
 namespace {
@@ -63,8 +64,7 @@ struct conservative_lanes {
         for (unsigned k = 0; k < 4; ++k) {
             s[k] = fused_multiply_add<Arch>(q.x(k), ax, q.y(k) * ay);
         }
-        lo = min_pick(min_pick(min_pick(s[UL], s[UR]), s[LR]), s[LL]);
-        hi = max_pick(max_pick(max_pick(s[UL], s[UR]), s[LR]), s[LL]);
+        sat4_steps<batch>::fold(s, lo, hi);
     }
 
     static OBBSAT_LANE_INLINE mask proven_apart_on(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b,

@@ -14,7 +14,13 @@ template <class Batch>
 struct sat4_steps {
     using mask = typename Batch::batch_bool_type;
 
-    /// min and max of the four corner scalars (x * ax) + (y * ay), folded UL, UR, LR, LL.
+    /// min and max of four corner scalars, folded UL, UR, LR, LL.
+    static OBBSAT_LANE_INLINE void fold(const Batch (&s)[4], Batch& lo, Batch& hi) {
+        lo = min_pick(min_pick(min_pick(s[UL], s[UR]), s[LR]), s[LL]);
+        hi = max_pick(max_pick(max_pick(s[UL], s[UR]), s[LR]), s[LL]);
+    }
+
+    /// min and max of the four corner scalars (x * ax) + (y * ay).
     static OBBSAT_LANE_INLINE void project(const quad<Batch>& q, const Batch& ax, const Batch& ay, Batch& lo, Batch& hi) {
         Batch s[4];
         for (unsigned k = 0; k < 4; ++k) {
@@ -22,8 +28,7 @@ struct sat4_steps {
             const Batch along_y = q.y(k) * ay;
             s[k] = along_x + along_y;
         }
-        lo = min_pick(min_pick(min_pick(s[UL], s[UR]), s[LR]), s[LL]);
-        hi = max_pick(max_pick(max_pick(s[UL], s[UR]), s[LR]), s[LL]);
+        fold(s, lo, hi);
     }
 
     /// Overlap on the axis (ax, ay): minB <= maxA and maxB >= minA.

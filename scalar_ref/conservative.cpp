@@ -1,3 +1,5 @@
+#include "sat4_steps.hpp"
+
 #include <obbsat/ref/conservative.hpp>
 
 #include <cmath>
@@ -33,7 +35,8 @@ extent project_rect_fused(const rect& r, point axis) {
     const float ur = fused_scalar_on_axis(r.ur, axis);
     const float lr = fused_scalar_on_axis(r.lr, axis);
     const float ll = fused_scalar_on_axis(r.ll, axis);
-    return extent{min_pick(min_pick(min_pick(ul, ur), lr), ll), max_pick(max_pick(max_pick(ul, ur), lr), ll)};
+    const steps::extent<float> e = steps::fold_extent(ul, ur, lr, ll);
+    return extent{e.min, e.max};
 }
 
 float conservative_margin(point axis, float scale) {

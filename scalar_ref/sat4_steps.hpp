@@ -56,14 +56,17 @@ Real max_pick(Real u, Real v) {
     return (u > v) ? u : v;
 }
 
+/// min and max of the four corner scalars, folded UL, UR, LR, LL with the picks.
 template <class Real>
-extent<Real> project(const quad<Real>& q, vec2<Real> axis) {
-    const Real ul = scalar_on_axis(q.corner[UL], axis);
-    const Real ur = scalar_on_axis(q.corner[UR], axis);
-    const Real lr = scalar_on_axis(q.corner[LR], axis);
-    const Real ll = scalar_on_axis(q.corner[LL], axis);
+extent<Real> fold_extent(Real ul, Real ur, Real lr, Real ll) {
     return extent<Real>{min_pick(min_pick(min_pick(ul, ur), lr), ll),
                         max_pick(max_pick(max_pick(ul, ur), lr), ll)};
+}
+
+template <class Real>
+extent<Real> project(const quad<Real>& q, vec2<Real> axis) {
+    return fold_extent(scalar_on_axis(q.corner[UL], axis), scalar_on_axis(q.corner[UR], axis),
+                       scalar_on_axis(q.corner[LR], axis), scalar_on_axis(q.corner[LL], axis));
 }
 
 template <class Real>

@@ -19,17 +19,7 @@ constexpr std::uint64_t scene_seed = 1;
 constexpr std::uint64_t shuffle_seed = 2;
 
 bool reference_collides(obbsat::method test, const obbsat::rect& a, const obbsat::rect& b) {
-    // No default: a new method must name its scalar reference here before the
-    // benchmarks can check it (the compiler warns about a missing case).
-    switch (test) {
-        case obbsat::method::sat4: return obbsat::ref::sat4(a, b);
-        case obbsat::method::sat4_centered: return obbsat::ref::sat4_centered(a, b);
-        case obbsat::method::sat4_double: return obbsat::ref::sat4_double(a, b);
-        case obbsat::method::conservative: return obbsat::ref::conservative(a, b);
-        case obbsat::method::exact: return obbsat::oracle::intersects(a, b);
-    }
-    throw std::logic_error(std::string("no scalar reference for method ") +
-                           obbsat::method_name(test));
+    return obbsat::method_reference(test)(a, b);
 }
 
 std::vector<obbsat::pair_index> seeded_shuffle(std::vector<obbsat::pair_index> pairs,

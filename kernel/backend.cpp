@@ -1,5 +1,6 @@
 // The dispatcher: the table of backends in priority order, ending at the
 // scalar path, and the choice among them. Compiled at the baseline ISA.
+#include "backend_catalogue.hpp"
 #include "backend_registry.hpp"
 #include "cpu_features.hpp"
 
@@ -22,24 +23,19 @@ struct backend_entry {
     const detail::kernel_table& (*table)();
 };
 
-#if !OBBSAT_WITH_X86_KERNELS
-// Never called: entries that are not compiled in are never resolved.
-const detail::kernel_table& missing_table() { return detail::scalar_kernels(); }
-#endif
+// Without x86 kernels only the scalar row is compiled; the SIMD rows stay in
+// the registry (their names parse) but never resolve.
+template <class Row>
+constexpr backend_entry entry_of(Row) {
+    if constexpr (Row::simd && !OBBSAT_WITH_X86_KERNELS) {
+        return backend_entry{Row::id, Row::name, Row::lanes, false, [] { return false; }, nullptr};
+    } else {
+        return backend_entry{Row::id, Row::name, Row::lanes, true, Row::runs_here, detail::kernels_of<Row>};
+    }
+}
 
 // Best first; the scalar path is last and runs everywhere.
-const backend_entry registry[] = {
-#if OBBSAT_WITH_X86_KERNELS
-    {backend::avx512, "avx512", 16, true, [] { return detail::this_cpu().avx512; }, detail::avx512_kernels},
-    {backend::avx2, "avx2", 8, true, [] { return detail::this_cpu().avx2; }, detail::avx2_kernels},
-    {backend::sse2, "sse2", 4, true, [] { return detail::this_cpu().sse2; }, detail::sse2_kernels},
-#else
-    {backend::avx512, "avx512", 16, false, [] { return false; }, missing_table},
-    {backend::avx2, "avx2", 8, false, [] { return false; }, missing_table},
-    {backend::sse2, "sse2", 4, false, [] { return false; }, missing_table},
-#endif
-    {backend::scalar, "scalar", 1, true, [] { return true; }, detail::scalar_kernels},
-};
+constexpr auto registry = detail::backend_catalogue::map([](auto row) { return entry_of(row); });
 
 const backend_entry* find(backend b) {
     for (const auto& e : registry) {
@@ -57,8 +53,13 @@ std::optional<backend> read_forced_backend() {
     }
     const auto parsed = parse_backend(value);
     if (!parsed) {
-        throw unsupported_backend(std::string("OBBSAT_BACKEND=") + value +
-                                  " names no backend (expected auto, scalar, sse2, avx2 or avx512)");
+        // "auto, scalar, sse2, avx2 or avx512": the registry from its end.
+        std::string expected = "auto";
+        for (std::size_t k = registry.size(); k-- > 0;) {
+            expected += std::string(k == 0 ? " or " : ", ") + registry[k].name;
+        }
+        throw unsupported_backend(std::string("OBBSAT_BACKEND=") + value + " names no backend (expected " +
+                                  expected + ")");
     }
     return parsed;
 }
@@ -153,7 +154,7 @@ namespace detail {
 
 const kernel_table& kernels_for(backend resolved) {
     const backend_entry* e = find(resolved);
-    return e ? e->table() : scalar_kernels();
+    return e != nullptr && e->compiled ? e->table() : kernels_of<scalar_backend>();
 }
 
 }  // namespace detail

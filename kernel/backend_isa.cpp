@@ -1,18 +1,21 @@
 // The batch kernels of one instruction set. This file is compiled once per
-// SIMD backend (see cmake/obbsat_isa.cmake) with OBBSAT_ISA_ARCH set to the
-// xsimd architecture and OBBSAT_ISA_NAME to the backend's name, and with that
-// ISA's compiler flags; it defines <name>_kernels().
+// SIMD row of backend_catalogue.hpp (see cmake/obbsat_isa.cmake) with
+// OBBSAT_ISA_NAME set to the backend's name and with that ISA's compiler
+// flags; it defines kernels_of<that backend>(), one row per method of
+// method_catalogue.hpp.
+#include "backend_catalogue.hpp"
 #include "batch_kernel.hpp"
 #include "certified_lanes.hpp"
 #include "conservative_lanes.hpp"
 #include "fused_multiply_add.hpp"
 #include "kernel_table.hpp"
+#include "method_catalogue.hpp"
 #include "sat4_centered_lanes.hpp"
 #include "sat4_double_lanes.hpp"
 #include "sat4_lanes.hpp"
 
-#ifndef OBBSAT_ISA_ARCH
-#error "OBBSAT_ISA_ARCH must name the xsimd architecture of this translation unit"
+#ifndef OBBSAT_ISA_NAME
+#error "OBBSAT_ISA_NAME must name the backend of this translation unit"
 #endif
 
 #define OBBSAT_CONCAT_INNER(a, b) a##b
@@ -20,7 +23,9 @@
 
 namespace obbsat::detail {
 
-using isa_arch = xsimd::OBBSAT_ISA_ARCH;
+using this_backend = OBBSAT_CONCAT(OBBSAT_ISA_NAME, _backend);
+using isa_arch = this_backend::arch;
+static_assert(lanes<isa_arch>::size == this_backend::lanes, "the catalogue's lane width is the arch's");
 
 namespace {
 
@@ -40,22 +45,27 @@ void fused_multiply_add_lanes(const float* x, const float* y, const float* z, st
     }
 }
 
+/// The entry points of one catalogue row, instantiated for this ISA.
+template <class Row>
+constexpr method_kernels kernels_of_row() {
+    using corners = typename Row::corners;
+    static_assert(corners::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
+                  "a method's lanes and its catalogue row agree on the slow path");
+    return method_kernels{stream_batch<isa_arch, corners::template lanes>,
+                          indexed_batch<isa_arch, corners::template lanes>,
+                          indexed_records_batch<isa_arch, corners::template lanes>};
+}
+
+template <class... Rows>
+constexpr kernel_table table_of(type_list<Rows...>) {
+    return kernel_table{{kernels_of_row<Rows>()...}, fused_multiply_add_lanes};
+}
+
 }  // namespace
 
-const kernel_table& OBBSAT_CONCAT(OBBSAT_ISA_NAME, _kernels)() {
-    // Rows in the order of obbsat::method.
-    static const kernel_table table = {
-        {stream_batch<isa_arch, sat4_lanes>, stream_batch<isa_arch, sat4_centered_lanes>,
-         stream_batch<isa_arch, sat4_double_lanes>, stream_batch<isa_arch, conservative_lanes>,
-         stream_batch<isa_arch, exact_lanes>},
-        {indexed_batch<isa_arch, sat4_lanes>, indexed_batch<isa_arch, sat4_centered_lanes>,
-         indexed_batch<isa_arch, sat4_double_lanes>, indexed_batch<isa_arch, conservative_lanes>,
-         indexed_batch<isa_arch, exact_lanes>},
-        {indexed_records_batch<isa_arch, sat4_lanes>, indexed_records_batch<isa_arch, sat4_centered_lanes>,
-         indexed_records_batch<isa_arch, sat4_double_lanes>, indexed_records_batch<isa_arch, conservative_lanes>,
-         indexed_records_batch<isa_arch, exact_lanes>},
-        fused_multiply_add_lanes,
-    };
+template <>
+const kernel_table& kernels_of<this_backend>() {
+    static const kernel_table table = table_of(method_catalogue{});
     return table;
 }
 

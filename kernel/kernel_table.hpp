@@ -36,18 +36,25 @@ using indexed_records_fn = std::size_t (*)(const rect* records, const pair_index
 using fused_multiply_add_fn = void (*)(const float* x, const float* y, const float* z, std::size_t count,
                                        float* out);
 
-struct kernel_table {
-    stream_fn stream[method_count];
-    indexed_fn indexed[method_count];
-    indexed_records_fn indexed_records[method_count];
-    fused_multiply_add_fn fused_multiply_add;
+/// One method's entry points on one backend.
+struct method_kernels {
+    stream_fn stream;
+    indexed_fn indexed;
+    indexed_records_fn indexed_records;
 };
 
-const kernel_table& scalar_kernels();
-#if OBBSAT_WITH_X86_KERNELS
-const kernel_table& sse2_kernels();
-const kernel_table& avx2_kernels();
-const kernel_table& avx512_kernels();
-#endif
+struct kernel_table {
+    method_kernels methods[method_count];  ///< row k is obbsat::method k (method_catalogue.hpp)
+    fused_multiply_add_fn fused_multiply_add;
+
+    /// The entry points of `m`, which the caller has checked with is_method.
+    const method_kernels& of(method m) const { return methods[static_cast<unsigned>(m)]; }
+};
+
+/// The table of one backend of backend_catalogue.hpp: defined by
+/// scalar_kernels.cpp for the scalar path and by backend_isa.cpp, once per
+/// SIMD instruction set, for the others.
+template <class Backend>
+const kernel_table& kernels_of();
 
 }  // namespace obbsat::detail

@@ -1,61 +1,51 @@
+// The public facts of each method, read off the method catalogue.
+#include "method_catalogue.hpp"
+
 #include <obbsat/method.hpp>
-#include <obbsat/oracle/contact.hpp>
-#include <obbsat/ref/conservative.hpp>
-#include <obbsat/ref/sat4.hpp>
-#include <obbsat/ref/sat4_centered.hpp>
-#include <obbsat/ref/sat4_double.hpp>
 
 namespace obbsat {
 
 namespace {
 
-struct method_entry {
+struct method_facts {
     method id;
     const char* name;
+    method_guarantee guarantee;
     reference_fn reference;
 };
 
-const method_entry methods[method_count] = {
-    {method::sat4, "sat4", ref::sat4},
-    {method::sat4_centered, "sat4_centered", ref::sat4_centered},
-    {method::sat4_double, "sat4_double", ref::sat4_double},
-    {method::conservative, "conservative", ref::conservative},
-    {method::exact, "exact", oracle::intersects},
-};
+constexpr auto facts = detail::method_catalogue::map([](auto row) {
+    using row_type = decltype(row);
+    return method_facts{row_type::id, row_type::name, row_type::guarantee, row_type::corners::reference};
+});
 
 }  // namespace
 
-const char* method_name(method m) {
-    for (const auto& e : methods) {
-        if (e.id == m) {
-            return e.name;
-        }
-    }
-    return "unknown";
-}
+bool is_method(method m) { return static_cast<unsigned>(m) < method_count; }
+
+const char* method_name(method m) { return is_method(m) ? facts[static_cast<unsigned>(m)].name : "unknown"; }
 
 std::optional<method> parse_method(std::string_view name) {
-    for (const auto& e : methods) {
-        if (name == e.name) {
-            return e.id;
+    for (const auto& f : facts) {
+        if (name == f.name) {
+            return f.id;
         }
     }
     return std::nullopt;
 }
 
 reference_fn method_reference(method m) {
-    for (const auto& e : methods) {
-        if (e.id == m) {
-            return e.reference;
-        }
-    }
-    return nullptr;
+    return is_method(m) ? facts[static_cast<unsigned>(m)].reference : nullptr;
+}
+
+method_guarantee guarantee_of(method m) {
+    return is_method(m) ? facts[static_cast<unsigned>(m)].guarantee : method_guarantee::none;
 }
 
 std::vector<method> all_methods() {
     std::vector<method> out;
-    for (const auto& e : methods) {
-        out.push_back(e.id);
+    for (const auto& f : facts) {
+        out.push_back(f.id);
     }
     return out;
 }

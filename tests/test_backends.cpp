@@ -78,18 +78,6 @@ constexpr golden_entry golden_digests[] = {
     {method::exact, 0x22608e361cc69299},
 };
 
-/// The scalar reference that defines `m`, or nullptr for a method this file does not know yet.
-reference_fn reference_of(method m) {
-    switch (m) {
-        case method::sat4: return obbsat::ref::sat4;
-        case method::sat4_centered: return obbsat::ref::sat4_centered;
-        case method::sat4_double: return obbsat::ref::sat4_double;
-        case method::conservative: return obbsat::ref::conservative;
-        case method::exact: return obbsat::oracle::intersects;
-    }
-    return nullptr;
-}
-
 std::uint64_t golden_digest_of(method m) {
     for (const golden_entry& e : golden_digests) {
         if (e.test == m) {
@@ -262,7 +250,7 @@ protected:
         if (!describe_pair) {
             describe_pair = stream_describer(stream.a, stream.b);
         }
-        const reference_fn reference = reference_of(m);
+        const reference_fn reference = obbsat::method_reference(m);
         const verdicts expected = reference_stream(reference, stream.a, stream.b);
         const std::size_t n = expected.size();
         verdicts got(n, 0xee);
@@ -291,9 +279,7 @@ protected:
 
 TEST(methods, every_method_has_a_reference_and_a_golden_digest_here) {
     for (const method m : obbsat::all_methods()) {
-        EXPECT_NE(reference_of(m), nullptr) << obbsat::method_name(m);
-        // The library's own table of references names the same functions.
-        EXPECT_EQ(obbsat::method_reference(m), reference_of(m)) << obbsat::method_name(m);
+        EXPECT_NE(obbsat::method_reference(m), nullptr) << obbsat::method_name(m);
         const bool listed = std::any_of(std::begin(golden_digests), std::end(golden_digests),
                                         [&](const golden_entry& e) { return e.test == m; });
         EXPECT_TRUE(listed) << obbsat::method_name(m) << " has no golden digest";
@@ -387,7 +373,7 @@ TEST_P(backend_equivalence, labelled_shared_cases_match_reference) {
         const rect_records records(family.rects);
         for (const method m : obbsat::all_methods()) {
             SCOPED_TRACE("family " + name + ", method " + obbsat::method_name(m));
-            const verdicts expected = reference_indexed(reference_of(m), rects, family.pairs);
+            const verdicts expected = reference_indexed(obbsat::method_reference(m), rects, family.pairs);
             verdicts got(family.pairs.size());
             ASSERT_EQ(obbsat::collide_pairs(rects, family.pairs.data(), family.pairs.size(),
                                             got.data(), forced(m)),
@@ -418,7 +404,7 @@ TEST_P(backend_equivalence, every_batch_length_up_to_three_vectors_and_one) {
         }
     };
     for (const method m : obbsat::all_methods()) {
-        const reference_fn reference = reference_of(m);
+        const reference_fn reference = obbsat::method_reference(m);
         for (std::size_t count = 0; count <= 3 * lanes + 1; ++count) {
             for (std::size_t start = 0; start < 8; ++start) {
                 SCOPED_TRACE(std::string(obbsat::method_name(m)) + ", count " +
@@ -526,7 +512,7 @@ TEST(golden, reference_reproduces_golden_digests) {
     const obbsat::scene s = golden_scene();
     const stream_batch hard = as_stream(obbsat::test_support::hard_pairs());
     for (const method m : obbsat::all_methods()) {
-        const reference_fn reference = reference_of(m);
+        const reference_fn reference = obbsat::method_reference(m);
         ASSERT_NE(reference, nullptr) << obbsat::method_name(m);
         const std::uint64_t digest = digest_of(reference_indexed(reference, s.rects, s.pairs),
                                                reference_stream(reference, hard.a, hard.b));

@@ -1,5 +1,7 @@
 // Methods: the collision tests obbsat offers. Each has a scalar reference in
 // scalar_ref/ that defines it, and every backend follows that definition.
+// Inside the library every table indexed by method is derived from one list,
+// kernel/method_catalogue.hpp, checked at compile time against this enum.
 #pragma once
 
 #include <obbsat/rect.hpp>
@@ -20,6 +22,19 @@ enum class method {
 
 /// The number of methods, for tables indexed by method.
 inline constexpr unsigned method_count = 5;
+
+/// What a method promises about its verdicts, against the exact answer.
+enum class method_guarantee {
+    none,                ///< float arithmetic: may err either way near the boundary
+    no_false_negatives,  ///< never calls a colliding pair apart
+    exact,               ///< always the exact answer, touching included
+};
+
+/// The guarantee of `m`.
+method_guarantee guarantee_of(method m);
+
+/// True iff `m` names a method (an enumerator of obbsat::method).
+bool is_method(method m);
 
 /// The name of a method, as the CLI spells it.
 const char* method_name(method m);

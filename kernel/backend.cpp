@@ -130,6 +130,9 @@ backend best_supported_backend() {
 }
 
 backend resolve_backend(backend requested) {
+    // A garbage OBBSAT_BACKEND is an error at every entry point, also when
+    // the caller names a backend (which then wins over a valid variable).
+    (void)forced_backend();
     if (requested == backend::automatic) {
         return from_environment_or_best();
     }

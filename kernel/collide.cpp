@@ -79,14 +79,23 @@ void check_indices(std::size_t rect_count, const pair_index* pairs, std::size_t 
     }
 }
 
+/// The entry points of options.test on backend `ran`; throws invalid_input
+/// when options.test holds a value that names no method.
+const detail::method_kernels& kernels_of(backend ran, const collide_options& options) {
+    if (!is_method(options.test)) {
+        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
+                            ", which names no method");
+    }
+    return detail::kernels_for(ran).of(options.test);
+}
+
 }  // namespace
 
 backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
     check_indices(rects.size(), pairs, count);
-    const detail::indexed_fn kernel =
-        detail::kernels_for(ran).indexed[static_cast<unsigned>(options.test)];
+    const detail::indexed_fn kernel = kernels_of(ran, options).indexed;
     const detail::soa_view view = detail::view_of(rects);
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(view, pairs + begin, end - begin, verdicts + begin);
@@ -98,8 +107,7 @@ backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::s
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
     check_indices(rects.size(), pairs, count);
-    const detail::indexed_records_fn kernel =
-        detail::kernels_for(ran).indexed_records[static_cast<unsigned>(options.test)];
+    const detail::indexed_records_fn kernel = kernels_of(ran, options).indexed_records;
     const rect* records = rects.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(records, pairs + begin, end - begin, verdicts + begin);
@@ -155,8 +163,7 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
                             " rectangles in A, " + std::to_string(b.size()) + " in B");
     }
     const backend ran = resolve_backend(options.use);
-    const detail::stream_fn kernel =
-        detail::kernels_for(ran).stream[static_cast<unsigned>(options.test)];
+    const detail::stream_fn kernel = kernels_of(ran, options).stream;
     const detail::soa_view va = detail::view_of(a);
     const detail::soa_view vb = detail::view_of(b);
     split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {

@@ -203,6 +203,41 @@ TEST(collide_api, a_backend_this_cpu_lacks_is_refused_and_nothing_is_written) {
     }
 }
 
+TEST(collide_api, a_test_value_that_names_no_method_is_refused_and_nothing_is_written) {
+    const rect_soa rects = grid_of_squares(20);
+    const rect_records records(grid_rects(20));
+    const std::vector<pair_index> pairs = {{0, 1}, {2, 3}};
+    for (const unsigned bad : {obbsat::method_count, obbsat::method_count + 1, 255u, 0xffffffffu}) {
+        for (const backend use : runnable_backends()) {
+            SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", test " + std::to_string(bad));
+            obbsat::collide_options options = options_for(use, 1);
+            options.test = static_cast<obbsat::method>(bad);
+            std::vector<std::uint8_t> verdicts(pairs.size(), canary);
+            const std::string what = message_of(
+                [&] { obbsat::collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), options); });
+            EXPECT_NE(what.find("collide_options::test holds " + std::to_string(bad) + ", which names no method"),
+                      std::string::npos)
+                << what;
+            EXPECT_THROW(obbsat::collide_pairs(records, pairs.data(), pairs.size(), verdicts.data(), options),
+                         obbsat::invalid_input);
+            EXPECT_THROW(obbsat::collide_stream(rects, rects, verdicts.data(), options), obbsat::invalid_input);
+            EXPECT_THROW((void)obbsat::colliding_pairs(records, pairs, options), obbsat::invalid_input);
+            EXPECT_TRUE(untouched(verdicts));
+        }
+        EXPECT_FALSE(obbsat::is_method(static_cast<obbsat::method>(bad)));
+        EXPECT_STREQ(obbsat::method_name(static_cast<obbsat::method>(bad)), "unknown");
+        EXPECT_EQ(obbsat::method_reference(static_cast<obbsat::method>(bad)), nullptr);
+    }
+}
+
+TEST(collide_api, method_guarantees_are_stated_per_method) {
+    EXPECT_EQ(obbsat::guarantee_of(obbsat::method::exact), obbsat::method_guarantee::exact);
+    EXPECT_EQ(obbsat::guarantee_of(obbsat::method::conservative), obbsat::method_guarantee::no_false_negatives);
+    for (const obbsat::method m : {obbsat::method::sat4, obbsat::method::sat4_centered, obbsat::method::sat4_double}) {
+        EXPECT_EQ(obbsat::guarantee_of(m), obbsat::method_guarantee::none) << obbsat::method_name(m);
+    }
+}
+
 TEST(collide_api, colliding_pairs_are_exactly_the_hits_in_input_order) {
     obbsat::scene s =
         obbsat::make_scene(obbsat::scene_spec_for(obbsat::scene_density::typical, 3000, 30000, 3));
@@ -408,15 +443,19 @@ TEST(collide_api, slow_path_pairs_is_reported_for_exact_and_zero_otherwise) {
 
 // OBBSAT_BACKEND is read once per process, so each case runs in a fresh
 // process: a death test in the "threadsafe" style re-runs this binary for it.
-void exit_with_resolved_backend(const char* environment_value) {
+void exit_with_resolved_backend(const char* environment_value, backend requested = backend::automatic) {
     setenv("OBBSAT_BACKEND", environment_value, 1);
     try {
-        const auto forced = obbsat::forced_backend();
-        std::fprintf(stderr, "forced %s\n", forced ? obbsat::backend_name(*forced) : "nothing");
         const rect_soa rects = grid_of_squares(4);
         const std::vector<pair_index> pairs = {{0, 1}};
         std::uint8_t verdict = canary;
-        const backend ran = obbsat::collide_pairs(rects, pairs.data(), 1, &verdict);
+        obbsat::collide_options options;
+        options.use = requested;
+        // The call comes first: the variable must be checked by the entry
+        // point itself, not only by forced_backend().
+        const backend ran = obbsat::collide_pairs(rects, pairs.data(), 1, &verdict, options);
+        const auto forced = obbsat::forced_backend();
+        std::fprintf(stderr, "forced %s\n", forced ? obbsat::backend_name(*forced) : "nothing");
         std::fprintf(stderr, "ran %s\n", obbsat::backend_name(ran));
         std::exit(verdict == 1 ? 0 : 2);
     } catch (const obbsat::unsupported_backend& e) {
@@ -444,6 +483,24 @@ TEST(backend_environment, an_unknown_obbsat_backend_is_refused_naming_it) {
     testing::FLAGS_gtest_death_test_style = "threadsafe";
     EXPECT_EXIT(exit_with_resolved_backend("avx1024"), testing::ExitedWithCode(3),
                 "unsupported_backend: OBBSAT_BACKEND=avx1024 names no backend");
+}
+
+TEST(backend_environment, an_unknown_obbsat_backend_is_refused_when_a_backend_is_named_too) {
+    testing::FLAGS_gtest_death_test_style = "threadsafe";
+    for (const backend b : runnable_backends()) {
+        EXPECT_EXIT(exit_with_resolved_backend("avx1024", b), testing::ExitedWithCode(3),
+                    "unsupported_backend: OBBSAT_BACKEND=avx1024 names no backend \\(expected auto, scalar, "
+                    "sse2, avx2 or avx512\\)");
+    }
+}
+
+TEST(backend_environment, a_named_backend_wins_over_a_valid_obbsat_backend) {
+    testing::FLAGS_gtest_death_test_style = "threadsafe";
+    for (const backend b : runnable_backends()) {
+        const std::string name = obbsat::backend_name(b);
+        EXPECT_EXIT(exit_with_resolved_backend("scalar", b), testing::ExitedWithCode(0),
+                    "forced scalar\nran " + name + "\n");
+    }
 }
 
 TEST(backend_environment, an_obbsat_backend_this_cpu_lacks_is_refused) {

@@ -51,16 +51,7 @@ std::string method_list() {
 }
 
 // The scalar reference of each method, from scalar_ref/, called in process.
-bool reference_collides(method m, const rect& a, const rect& b) {
-    switch (m) {
-        case method::sat4: return obbsat::ref::sat4(a, b);
-        case method::sat4_centered: return obbsat::ref::sat4_centered(a, b);
-        case method::sat4_double: return obbsat::ref::sat4_double(a, b);
-        case method::conservative: return obbsat::ref::conservative(a, b);
-        case method::exact: return obbsat::oracle::intersects(a, b);
-    }
-    throw std::logic_error("no reference for this method");
-}
+bool reference_collides(method m, const rect& a, const rect& b) { return obbsat::method_reference(m)(a, b); }
 
 // ---------------------------------------------------------------------------
 // Help, version and usage errors.
@@ -524,11 +515,19 @@ TEST_F(verdicts, obbsat_backend_scalar_and_an_explicit_backend_win_over_auto) {
         files_->run("collide --rects R.csv --pairs P.csv", "OBBSAT_BACKEND=scalar");
     ASSERT_EQ(forced.status, 0) << forced.err;
     EXPECT_EQ(forced.out, *reference_);
-    // An explicit --backend is a request of its own; OBBSAT_BACKEND only steers auto.
+    // An explicit --backend is a request of its own; a valid OBBSAT_BACKEND only steers auto.
     const run_result explicit_backend =
-        files_->run("collide --rects R.csv --pairs P.csv --backend scalar", "OBBSAT_BACKEND=bogus");
+        files_->run("collide --rects R.csv --pairs P.csv --backend scalar", "OBBSAT_BACKEND=sse2");
     ASSERT_EQ(explicit_backend.status, 0) << explicit_backend.err;
     EXPECT_EQ(explicit_backend.out, *reference_);
+}
+
+TEST_F(verdicts, a_garbage_obbsat_backend_is_refused_even_beside_an_explicit_backend) {
+    const run_result r = files_->run("collide --rects R.csv --pairs P.csv --backend scalar --out v.txt",
+                                     "OBBSAT_BACKEND=bogus");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("OBBSAT_BACKEND=bogus names no backend"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(files_->file("v.txt")));
 }
 
 TEST_F(verdicts, output_replaces_an_existing_file_on_success) {

@@ -6,9 +6,9 @@
 #                   obbsat::ref and, as a static library, Threads
 #   obbsat::ref     the scalar references, the specification of each method
 #   obbsat::oracle  the exact contact oracle (separated / touching / overlapping)
-# The hard-case suites (obbsat_suites, headers obbsat/suites/) stay out: they
-# exist to test obbsat itself and their interface is not meant to be kept
-# stable for users.
+# The hard-case suites (suites/, target obbsat_suites) are not part of the
+# library: their headers live outside scalar_ref/include and kernel/include,
+# so nothing here installs them.
 #
 # The version file follows 0.x rules while the major version is 0: a request
 # for 0.1 accepts 0.1.z (z >= the requested patch) and nothing else, as every
@@ -49,7 +49,7 @@ if(TARGET obbsat_cli)
   install(TARGETS obbsat_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 
-set(obbsat_header_exclusions PATTERN "suites" EXCLUDE)
+set(obbsat_header_exclusions "")
 if(NOT TARGET obbsat_oracle)
   list(APPEND obbsat_header_exclusions PATTERN "oracle" EXCLUDE)
 endif()

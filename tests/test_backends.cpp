@@ -365,7 +365,7 @@ TEST_P(backend_equivalence, hard_pairs_match_reference) {
 TEST_P(backend_equivalence, labelled_shared_cases_match_reference) {
     const auto folder = obbsat::test_support::shared_cases_folder();
     if (!folder) {
-        GTEST_SKIP() << "OBBSAT_SHARED_CASES names no case folder: nothing to compare";
+        GTEST_SKIP() << obbsat::test_support::shared_cases_missing() << ": nothing to compare";
     }
     for (const std::string& name : obbsat::test_support::case_family_names()) {
         const auto family = obbsat::test_support::read_case_family(*folder, name);

@@ -3,6 +3,7 @@
 // files identical for every backend this CPU runs.
 #include "csv_input.hpp"
 #include "program_runner.hpp"
+#include "test_support/shared_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
@@ -22,6 +23,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -616,13 +618,13 @@ INSTANTIATE_TEST_SUITE_P(every_backend, verdicts_per_backend,
 // The labelled case families, when they are beside the project: the program's
 // verdicts must be the scalar reference's on exactly the floats in the files.
 TEST(shared_cases, program_verdicts_equal_the_reference_on_every_family) {
-    const char* root = std::getenv("OBBSAT_SHARED_CASES");
-    if (root == nullptr || !fs::is_directory(root)) {
-        GTEST_SKIP() << "labelled case families not present";
+    const std::optional<std::string> root = obbsat::test_support::shared_cases_folder();
+    if (!root) {
+        GTEST_SKIP() << obbsat::test_support::shared_cases_missing();
     }
     const scratch s;
     std::size_t families = 0;
-    for (const auto& entry : fs::directory_iterator(root)) {
+    for (const auto& entry : fs::directory_iterator(*root)) {
         const fs::path rects_path = entry.path() / "rects.csv";
         const fs::path pairs_path = entry.path() / "pairs.csv";
         if (!fs::exists(rects_path) || !fs::exists(pairs_path)) {

@@ -2,6 +2,7 @@
 // computed outside the project with exact rational arithmetic. The folder
 // comes from OBBSAT_SHARED_CASES; the test is skipped where it is absent.
 #include "case_files.hpp"
+#include "test_support/shared_cases.hpp"
 
 #include <obbsat/oracle/classify_pairs.hpp>
 #include <obbsat/oracle/quad_region.hpp>
@@ -9,19 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 #include <sys/stat.h>
 
 namespace {
 
 using obbsat::oracle::contact;
-
-std::string shared_cases_folder() {
-    const char* path = std::getenv("OBBSAT_SHARED_CASES");
-    return path == nullptr ? std::string() : std::string(path);
-}
 
 bool is_directory(const std::string& path) {
     struct stat info {};
@@ -46,10 +42,13 @@ std::string folder_name(const ::testing::TestParamInfo<const char*>& param) {
 class shared_cases : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(shared_cases, oracle_agrees_with_every_label) {
-    const std::string root = shared_cases_folder();
-    const std::string folder = root + "/" + GetParam();
+    const std::optional<std::string> root = obbsat::test_support::shared_cases_folder();
+    if (!root) {
+        GTEST_SKIP() << obbsat::test_support::shared_cases_missing();
+    }
+    const std::string folder = *root + "/" + GetParam();
     if (!is_directory(folder)) {
-        GTEST_SKIP() << "no labelled cases at '" << folder << "' (set OBBSAT_SHARED_CASES)";
+        GTEST_SKIP() << "no family folder '" << folder << "' among the labelled cases";
     }
     const obbsat::test::case_folder cases = obbsat::test::read_case_folder(folder);
     ASSERT_FALSE(cases.pairs.empty());

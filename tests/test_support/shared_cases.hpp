@@ -1,7 +1,8 @@
 // Reader for the labelled case folders outside the project (rects.csv with
 // hex-float corners, pairs.csv with index pairs), found through the
-// environment variable OBBSAT_SHARED_CASES. Clones of the project do not have
-// them, so tests that use them skip when the folder is missing.
+// environment variable OBBSAT_SHARED_CASES, which CTest sets from the CMake
+// cache variable OBBSAT_SHARED_CASES_DIR. Clones of the project do not have
+// them, so tests that use them skip, naming the path, when the folder is missing.
 #pragma once
 
 #include <obbsat/rect.hpp>
@@ -23,16 +24,30 @@ struct case_family {
     std::vector<pair_index> pairs;
 };
 
+/// The path in OBBSAT_SHARED_CASES, empty when it is unset.
+inline std::string shared_cases_path() {
+    const char* folder = std::getenv("OBBSAT_SHARED_CASES");
+    return folder == nullptr ? std::string() : std::string(folder);
+}
+
 /// The folder named by OBBSAT_SHARED_CASES if it holds a README.md, else nothing.
 inline std::optional<std::string> shared_cases_folder() {
-    const char* folder = std::getenv("OBBSAT_SHARED_CASES");
-    if (folder == nullptr || *folder == '\0') {
+    const std::string folder = shared_cases_path();
+    if (folder.empty() || !std::ifstream(folder + "/README.md")) {
         return std::nullopt;
     }
-    if (!std::ifstream(std::string(folder) + "/README.md")) {
-        return std::nullopt;
+    return folder;
+}
+
+/// Why a test that needs the labelled cases skips: where they were looked for.
+inline std::string shared_cases_missing() {
+    const std::string folder = shared_cases_path();
+    if (folder.empty()) {
+        return "labelled case families not found: OBBSAT_SHARED_CASES is not set "
+               "(configure with -DOBBSAT_SHARED_CASES_DIR=FOLDER)";
     }
-    return std::string(folder);
+    return "labelled case families not found at '" + folder +
+           "' (no README.md there; configure with -DOBBSAT_SHARED_CASES_DIR=FOLDER)";
 }
 
 inline std::vector<std::string> csv_fields(const std::string& line) {

@@ -4,7 +4,7 @@
 #include "accuracy_commands.hpp"
 #include "accuracy_json.hpp"
 #include "accuracy_report.hpp"
-#include "accuracy_svg.hpp"
+#include "draw/accuracy_svg.hpp"
 #include "accuracy_text.hpp"
 #include "atomic_output.hpp"
 #include "cli_args.hpp"

@@ -1,5 +1,6 @@
 #include "svg_pair_axes.hpp"
 
+#include <obbsat/oracle/orientation.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 
@@ -112,36 +113,6 @@ method_view double_method_view(const rect& a, const rect& b) {
     return view;
 }
 
-// The sign of t[0] + ... + t[count-1], exact: the terms are accumulated into a
-// nonoverlapping expansion (Knuth's two-sum, zero components dropped), whose
-// largest component, the last, carries the sign of the exact sum.
-int sign_of_exact_sum(const double* terms, int count) {
-    double parts[8];
-    int used = 0;
-    for (int t = 0; t < count; ++t) {
-        double carry = terms[t];
-        int kept = 0;
-        for (int i = 0; i < used; ++i) {
-            const double sum = carry + parts[i];
-            const double part_b = sum - carry;
-            const double part_a = sum - part_b;
-            const double error = (carry - part_a) + (parts[i] - part_b);
-            if (error != 0.0) {
-                parts[kept++] = error;
-            }
-            carry = sum;
-        }
-        if (carry != 0.0) {
-            parts[kept++] = carry;
-        }
-        used = kept;
-    }
-    if (used == 0) {
-        return 0;
-    }
-    return parts[used - 1] > 0.0 ? 1 : -1;
-}
-
 // The sign of (u_to - u_from) . (v_to - v_from), exact for all finite floats:
 // expanded, it is eight products of two floats, each exact in double (24 + 24
 // significand bits, magnitudes between 2^-298 and 2^256).
@@ -150,7 +121,7 @@ int exact_dot_sign(point u_from, point u_to, point v_from, point v_to) {
     const double vx0 = v_from.x, vy0 = v_from.y, vx1 = v_to.x, vy1 = v_to.y;
     const double terms[8] = {ux1 * vx1, -(ux1 * vx0), -(ux0 * vx1), ux0 * vx0,
                              uy1 * vy1, -(uy1 * vy0), -(uy0 * vy1), uy0 * vy0};
-    return sign_of_exact_sum(terms, 8);
+    return oracle::sign_of_exact_sum(terms, 8);
 }
 
 // True iff, on the axis to - from, every corner of one rect lies strictly

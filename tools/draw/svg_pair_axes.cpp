@@ -3,6 +3,7 @@
 #include <obbsat/oracle/orientation.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
 
 #include <array>
 #include <stdexcept>
@@ -38,6 +39,23 @@ int first_separating(const std::vector<axis_view>& axes) {
     return -1;
 }
 
+// Axis k as a float or double method computed it: the axis, both extents and
+// the method's own verdict on them.
+template <class Axis, class Extent>
+axis_view replayed_axis(int k, Axis axis, point origin, Extent extent_a, Extent extent_b, bool overlap) {
+    axis_view v = article_axis(k);
+    v.axis_x = axis.x;
+    v.axis_y = axis.y;
+    v.origin_x = origin.x;
+    v.origin_y = origin.y;
+    v.a_min = extent_a.min;
+    v.a_max = extent_a.max;
+    v.b_min = extent_b.min;
+    v.b_max = extent_b.max;
+    v.overlap = overlap;
+    return v;
+}
+
 // sat4 and sat4_centered, replayed through the reference's own steps; the
 // centered method measures from A.UL after moving every corner there in float.
 method_view float_method_view(const rect& a, const rect& b, bool centered) {
@@ -49,65 +67,26 @@ method_view float_method_view(const rect& a, const rect& b, bool centered) {
     method_view view;
     view.arithmetic = "float";
     for (int k = 0; k < 4; ++k) {
-        const point axis = axes[k];
-        const ref::extent extent_a = ref::project_rect(moved_a, axis);
-        const ref::extent extent_b = ref::project_rect(moved_b, axis);
-        axis_view v = article_axis(k);
-        v.axis_x = axis.x;
-        v.axis_y = axis.y;
-        v.origin_x = origin.x;
-        v.origin_y = origin.y;
-        v.a_min = extent_a.min;
-        v.a_max = extent_a.max;
-        v.b_min = extent_b.min;
-        v.b_max = extent_b.max;
-        v.overlap = ref::extents_overlap(extent_a, extent_b);
-        view.axes.push_back(v);
+        const ref::extent extent_a = ref::project_rect(moved_a, axes[k]);
+        const ref::extent extent_b = ref::project_rect(moved_b, axes[k]);
+        view.axes.push_back(
+            replayed_axis(k, axes[k], origin, extent_a, extent_b, ref::extents_overlap(extent_a, extent_b)));
     }
     view.separating = first_separating(view.axes);
     return view;
 }
 
-// sat4_double's steps as its header states them: axes, scalars
-// (x * ax) + (y * ay) and min/max picks folded UL, UR, LR, LL, all in double.
-struct double_extent {
-    double min;
-    double max;
-};
-
-double_extent project_in_double(const rect& r, double axis_x, double axis_y) {
-    double scalars[4];
-    const std::array<point, 4> corners = corners_of(r);
-    for (std::size_t i = 0; i < 4; ++i) {
-        const double along_x = static_cast<double>(corners[i].x) * axis_x;
-        const double along_y = static_cast<double>(corners[i].y) * axis_y;
-        scalars[i] = along_x + along_y;
-    }
-    double_extent e{scalars[0], scalars[0]};
-    for (std::size_t i = 1; i < 4; ++i) {
-        e.min = scalars[i] < e.min ? scalars[i] : e.min;
-        e.max = scalars[i] > e.max ? scalars[i] : e.max;
-    }
-    return e;
-}
-
+// sat4_double, replayed through the reference's own steps in double.
 method_view double_method_view(const rect& a, const rect& b) {
+    ref::double_axis axes[4];
+    ref::sat4_double_axes(a, b, axes);
     method_view view;
     view.arithmetic = "double";
-    const auto ends = article_axis_ends(a, b);
     for (int k = 0; k < 4; ++k) {
-        const auto& [from, to] = ends[static_cast<std::size_t>(k)];
-        axis_view v = article_axis(k);
-        v.axis_x = static_cast<double>(to.x) - static_cast<double>(from.x);
-        v.axis_y = static_cast<double>(to.y) - static_cast<double>(from.y);
-        const double_extent extent_a = project_in_double(a, v.axis_x, v.axis_y);
-        const double_extent extent_b = project_in_double(b, v.axis_x, v.axis_y);
-        v.a_min = extent_a.min;
-        v.a_max = extent_a.max;
-        v.b_min = extent_b.min;
-        v.b_max = extent_b.max;
-        v.overlap = extent_b.min <= extent_a.max && extent_b.max >= extent_a.min;
-        view.axes.push_back(v);
+        const ref::double_extent extent_a = ref::sat4_double_projection(a, axes[k]);
+        const ref::double_extent extent_b = ref::sat4_double_projection(b, axes[k]);
+        view.axes.push_back(replayed_axis(k, axes[k], point{0.0f, 0.0f}, extent_a, extent_b,
+                                          ref::double_extents_overlap(extent_a, extent_b)));
     }
     view.separating = first_separating(view.axes);
     return view;

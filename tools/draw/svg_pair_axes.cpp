@@ -39,57 +39,50 @@ int first_separating(const std::vector<axis_view>& axes) {
     return -1;
 }
 
-// Axis k as a float or double method computed it: the axis, both extents and
-// the method's own verdict on them.
-template <class Axis, class Extent>
-axis_view replayed_axis(int k, Axis axis, point origin, Extent extent_a, Extent extent_b, bool overlap) {
-    axis_view v = article_axis(k);
-    v.axis_x = axis.x;
-    v.axis_y = axis.y;
-    v.origin_x = origin.x;
-    v.origin_y = origin.y;
-    v.a_min = extent_a.min;
-    v.a_max = extent_a.max;
-    v.b_min = extent_b.min;
-    v.b_max = extent_b.max;
-    v.overlap = overlap;
-    return v;
+// A float or double method replayed on its four axes: each rect's extent by
+// the method's own projection, each axis's verdict by its own overlap test.
+// `origin` is where the method measures scalars from.
+template <class Axis, class Project, class Overlap>
+method_view replayed_view(const char* arithmetic, const Axis (&axes)[4], point origin, const rect& a,
+                          const rect& b, Project project, Overlap overlap) {
+    method_view view;
+    view.arithmetic = arithmetic;
+    for (int k = 0; k < 4; ++k) {
+        const auto extent_a = project(a, axes[k]);
+        const auto extent_b = project(b, axes[k]);
+        axis_view v = article_axis(k);
+        v.axis_x = axes[k].x;
+        v.axis_y = axes[k].y;
+        v.origin_x = origin.x;
+        v.origin_y = origin.y;
+        v.a_min = extent_a.min;
+        v.a_max = extent_a.max;
+        v.b_min = extent_b.min;
+        v.b_max = extent_b.max;
+        v.overlap = overlap(extent_a, extent_b);
+        view.axes.push_back(v);
+    }
+    view.separating = first_separating(view.axes);
+    return view;
 }
 
-// sat4 and sat4_centered, replayed through the reference's own steps; the
-// centered method measures from A.UL after moving every corner there in float.
+// sat4 and sat4_centered, through the reference's own steps; the centered
+// method measures from A.UL after moving every corner there in float.
 method_view float_method_view(const rect& a, const rect& b, bool centered) {
     const point origin = centered ? a.ul : point{0.0f, 0.0f};
     const rect moved_a = centered ? ref::moved_to_origin(a, origin) : a;
     const rect moved_b = centered ? ref::moved_to_origin(b, origin) : b;
     point axes[4];
     ref::sat4_axes(moved_a, moved_b, axes);
-    method_view view;
-    view.arithmetic = "float";
-    for (int k = 0; k < 4; ++k) {
-        const ref::extent extent_a = ref::project_rect(moved_a, axes[k]);
-        const ref::extent extent_b = ref::project_rect(moved_b, axes[k]);
-        view.axes.push_back(
-            replayed_axis(k, axes[k], origin, extent_a, extent_b, ref::extents_overlap(extent_a, extent_b)));
-    }
-    view.separating = first_separating(view.axes);
-    return view;
+    return replayed_view("float", axes, origin, moved_a, moved_b, ref::project_rect, ref::extents_overlap);
 }
 
-// sat4_double, replayed through the reference's own steps in double.
+// sat4_double, through the reference's own steps in double.
 method_view double_method_view(const rect& a, const rect& b) {
     ref::double_axis axes[4];
     ref::sat4_double_axes(a, b, axes);
-    method_view view;
-    view.arithmetic = "double";
-    for (int k = 0; k < 4; ++k) {
-        const ref::double_extent extent_a = ref::sat4_double_projection(a, axes[k]);
-        const ref::double_extent extent_b = ref::sat4_double_projection(b, axes[k]);
-        view.axes.push_back(replayed_axis(k, axes[k], point{0.0f, 0.0f}, extent_a, extent_b,
-                                          ref::double_extents_overlap(extent_a, extent_b)));
-    }
-    view.separating = first_separating(view.axes);
-    return view;
+    return replayed_view("double", axes, point{0.0f, 0.0f}, a, b, ref::sat4_double_projection,
+                         ref::double_extents_overlap);
 }
 
 // The sign of (u_to - u_from) . (v_to - v_from), exact for all finite floats:

@@ -6,6 +6,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "csv_input.hpp"
+#include "temporary_files.hpp"
 
 #include <obbsat/error.hpp>
 
@@ -128,6 +129,8 @@ int dispatch(const arguments& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before any output begins: a temporary file must not outlive a Ctrl-C.
+    obbsat::io::remove_temporaries_on_signal();
     int status = exit_internal_error;
     try {
         const arguments words(argv + 1, argv + argc);

@@ -33,6 +33,9 @@ mode_t final_mode(const std::string& target_path) {
 }  // namespace
 
 atomic_output::atomic_output(std::string target_path) : target_path_(std::move(target_path)) {
+    if (target_path_.empty()) {
+        throw output_error("the output file name is empty");
+    }
     const std::size_t slash = target_path_.rfind('/');
     const std::string base =
         slash == std::string::npos ? target_path_ : target_path_.substr(slash + 1);

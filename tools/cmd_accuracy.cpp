@@ -39,7 +39,7 @@ const std::vector<option_spec>& accuracy_option_specs() {
 }
 
 std::unique_ptr<io::atomic_output> output_for(const parsed_options& options, const char* name) {
-    const auto path = options.value(name);
+    const auto path = output_option(options, name);
     if (!path) {
         return nullptr;
     }

@@ -127,7 +127,7 @@ int run_collide(const arguments& args) {
     // unwritable --out is reported at once.
     const io::input_file rects_file(rects_path);
     const io::input_file pairs_file(pairs_path);
-    verdict_writer writer(options.value("out"));
+    verdict_writer writer(output_option(options, "out"));
 
     rect_records rects;
     {

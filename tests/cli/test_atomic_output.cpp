@@ -168,4 +168,14 @@ TEST_F(atomic_output_test, a_target_name_of_255_bytes_has_room_for_its_temporary
     }
 }
 
+TEST_F(atomic_output_test, an_empty_name_is_called_empty) {
+    try {
+        atomic_output out("");
+        ADD_FAILURE() << "no error";
+    } catch (const output_error& e) {
+        EXPECT_STREQ(e.what(), "the output file name is empty");
+    }
+    EXPECT_TRUE(entries().empty());
+}
+
 }  // namespace

@@ -283,6 +283,25 @@ TEST(robustness, output_names_up_to_255_bytes_are_written_by_every_command) {
     }
 }
 
+TEST(robustness, an_empty_output_name_is_called_empty) {
+    const scratch s;
+    write_file(s.file("R.csv"), unit_rect);
+    write_file(s.file("P.csv"), "0,0\n");
+    const std::vector<std::pair<std::string, std::string>> runs = {
+        {"collide --rects R.csv --pairs P.csv --out ''", "collide: --out: the file name is empty"},
+        {"draw --rects R.csv --pairs P.csv --select 0 --out ''", "draw: --out: the file name is empty"},
+        {"accuracy --pairs 10 --json ''", "accuracy: --json: the file name is empty"},
+        {"accuracy --pairs 10 --svg=", "accuracy: --svg: the file name is empty"},
+    };
+    for (const auto& [args, message] : runs) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err.rfind("obbsat: " + message + " (see 'obbsat ", 0), 0u) << args << "\n" << r.err;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(s.entries(), (std::vector<std::string>{"P.csv", "R.csv"})) << args;
+    }
+}
+
 // Runs obbsat with `args` in work() as a child process whose pair file,
 // P.fifo, is a named pipe held open and empty: the run waits for pairs with
 // its output already begun. Once a hidden file (the temporary output) shows

@@ -194,7 +194,7 @@ int run_draw(const arguments& args) {
     const std::string rects_path(options.required("rects"));
     const std::string pairs_path(options.required("pairs"));
     const std::vector<std::uint64_t> chosen = parse_selection(options.required("select"));
-    const std::string out_path(options.required("out"));
+    const std::string out_path(*output_option(options, "out", true));
     collide_options run;
     run.test = method_option(options);
     run.use = resolve_backend(backend_option(options));

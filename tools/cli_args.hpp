@@ -59,6 +59,9 @@ std::uint64_t parse_number_option(std::string_view option, std::string_view text
 std::optional<std::string_view> output_option(const parsed_options& options, std::string_view name,
                                               bool required = false);
 
+/// The usage error for --rects and --pairs naming one input (see io::same_input).
+usage_error same_input_error(std::string_view rects_path, std::string_view pairs_path);
+
 /// Prints one aligned line per option.
 void print_options(std::FILE* out, const std::vector<option_spec>& specs);
 

@@ -367,4 +367,31 @@ TEST(robustness, an_interrupted_run_leaves_no_temporary_file) {
     }
 }
 
+// Both inputs are read to their end, one after the other: a stream named
+// twice would give the rectangles every byte and the pairs none, and a file
+// named twice holds either rectangles or pairs, not both.
+TEST(robustness, two_names_for_standard_input_are_refused) {
+    const scratch s;
+    write_file(s.file("v.txt"), previous);
+    write_file(s.file("in.txt"), unit_rect + "0,0\n");
+    const std::vector<std::pair<std::string, std::string>> names = {
+        {"/dev/stdin", "-"}, {"-", "/dev/stdin"}, {"/dev/fd/0", "-"}, {"/proc/self/fd/0", "/dev/stdin"}};
+    for (const auto& [rects, pairs] : names) {
+        for (const std::string command : {"collide", "draw"}) {
+            const std::string args = command + " --rects " + rects + " --pairs " + pairs +
+                                     (command == "draw" ? " --select 0" : "") + " --out v.txt";
+            const std::string message = command + ": --rects '" + rects + "' and --pairs '" + pairs +
+                                        "' name the same input; rectangles and pairs need one each";
+            expect_refused(s, s.run_piped("in.txt", args), message, args + " from a pipe");
+            expect_refused(s, s.run(args, "", "< in.txt"), message, args + " from a file");
+        }
+    }
+    fs::create_symlink("in.txt", s.file("link.txt"));
+    const run_result twice = s.run("collide --rects in.txt --pairs link.txt --out v.txt");
+    expect_refused(s, twice,
+                   "collide: --rects 'in.txt' and --pairs 'link.txt' name the same input; rectangles and "
+                   "pairs need one each",
+                   "a file and a link to it");
+}
+
 }  // namespace

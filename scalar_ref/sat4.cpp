@@ -33,10 +33,11 @@ bool extents_overlap(extent a, extent b) {
 }
 
 void sat4_axes(const rect& a, const rect& b, point axes[4]) {
-    axes[0] = axis_between(a.ul, a.ur);  // A.UR - A.UL
-    axes[1] = axis_between(a.lr, a.ur);  // A.UR - A.LR
-    axes[2] = axis_between(b.ll, b.ul);  // B.UL - B.LL
-    axes[3] = axis_between(b.ur, b.ul);  // B.UL - B.UR
+    steps::vec2<float> steps_axes[4];
+    steps::article_axes(steps::quad<float>(a), steps::quad<float>(b), steps_axes);
+    for (int k = 0; k < 4; ++k) {
+        axes[k] = as_point(steps_axes[k]);
+    }
 }
 
 bool sat4(const rect& a, const rect& b) {

@@ -74,16 +74,22 @@ bool overlap(extent<Real> a, extent<Real> b) {
     return b.min <= a.max && b.max >= a.min;
 }
 
-/// The article's test: axes A.UR-A.UL, A.UR-A.LR, B.UL-B.LL, B.UL-B.UR in that
-/// order, stopping at the first one without overlap.
+/// The article's axes A.UR-A.UL, A.UR-A.LR, B.UL-B.LL, B.UL-B.UR, in the order
+/// they are tested.
+template <class Real>
+void article_axes(const quad<Real>& a, const quad<Real>& b, vec2<Real> axes[4]) {
+    axes[0] = axis_between(a.corner[UL], a.corner[UR]);
+    axes[1] = axis_between(a.corner[LR], a.corner[UR]);
+    axes[2] = axis_between(b.corner[LL], b.corner[UL]);
+    axes[3] = axis_between(b.corner[UR], b.corner[UL]);
+}
+
+/// The article's test: its four axes in order, stopping at the first one
+/// without overlap.
 template <class Real>
 bool collide(const quad<Real>& a, const quad<Real>& b) {
-    const vec2<Real> axes[4] = {
-        axis_between(a.corner[UL], a.corner[UR]),
-        axis_between(a.corner[LR], a.corner[UR]),
-        axis_between(b.corner[LL], b.corner[UL]),
-        axis_between(b.corner[UR], b.corner[UL]),
-    };
+    vec2<Real> axes[4];
+    article_axes(a, b, axes);
     for (const vec2<Real>& axis : axes) {
         if (!overlap(project(a, axis), project(b, axis))) {
             return false;

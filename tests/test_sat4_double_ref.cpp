@@ -113,4 +113,54 @@ TEST(sat4_double_ref, overflowing_float_products_are_finite_in_double) {
     EXPECT_TRUE(std::isinf(obbsat::ref::scalar_on_axis(a.ur, {4 * big, 0})));
 }
 
+// The public steps, composed as the contract lists them, are the method: the
+// drawing replays sat4_double through them and must reach the same verdict.
+TEST(sat4_double_ref, its_public_steps_composed_give_the_method) {
+    using obbsat::ref::double_axis;
+    using obbsat::ref::double_extent;
+    for (const labelled_pair& p : hard_pairs(500)) {
+        double_axis axes[4];
+        obbsat::ref::sat4_double_axes(p.a, p.b, axes);
+        bool all_overlap = true;
+        for (const double_axis axis : axes) {
+            const double_extent ea = obbsat::ref::sat4_double_projection(p.a, axis);
+            const double_extent eb = obbsat::ref::sat4_double_projection(p.b, axis);
+            all_overlap = all_overlap && obbsat::ref::double_extents_overlap(ea, eb);
+        }
+        ASSERT_EQ(all_overlap, sat4_double(p.a, p.b)) << "A " << describe(p.a) << "\nB " << describe(p.b);
+    }
+    const rect a = axis_aligned(0, 0, 4, 2);
+    const rect b = axis_aligned(1, 5, 3, 9);
+    double_axis axes[4];
+    obbsat::ref::sat4_double_axes(a, b, axes);
+    // A.UR - A.UL, A.UR - A.LR, B.UL - B.LL, B.UL - B.UR, one double subtraction each.
+    const double_axis want[4] = {
+        {static_cast<double>(a.ur.x) - a.ul.x, static_cast<double>(a.ur.y) - a.ul.y},
+        {static_cast<double>(a.ur.x) - a.lr.x, static_cast<double>(a.ur.y) - a.lr.y},
+        {static_cast<double>(b.ul.x) - b.ll.x, static_cast<double>(b.ul.y) - b.ll.y},
+        {static_cast<double>(b.ul.x) - b.ur.x, static_cast<double>(b.ul.y) - b.ur.y},
+    };
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(axes[k].x, want[k].x) << k;
+        EXPECT_EQ(axes[k].y, want[k].y) << k;
+    }
+}
+
+// The picks are min-pick(u, v) = u < v ? u : v and max-pick(u, v) = u > v ? u : v
+// folded UL, UR, LR, LL: on equal scalars each returns its second operand, so
+// of scalars that are all zero the fold keeps the last one's sign for both
+// ends. Picks with their operands swapped would keep the first one's.
+TEST(sat4_double_ref, projection_folds_the_picks_in_the_contracts_operand_order) {
+    const float z = 0.0f;
+    const rect last_negative{{z, z}, {z, z}, {z, z}, {-z, -z}};
+    const obbsat::ref::double_extent e = obbsat::ref::sat4_double_projection(last_negative, {1.0, 1.0});
+    EXPECT_EQ(e.min, 0.0);
+    EXPECT_TRUE(std::signbit(e.min));
+    EXPECT_TRUE(std::signbit(e.max));
+    const rect first_negative{{-z, -z}, {z, z}, {z, z}, {z, z}};
+    const obbsat::ref::double_extent f = obbsat::ref::sat4_double_projection(first_negative, {1.0, 1.0});
+    EXPECT_FALSE(std::signbit(f.min));
+    EXPECT_FALSE(std::signbit(f.max));
+}
+
 }  // namespace

@@ -33,6 +33,9 @@ mode_t final_mode(const std::string& target_path) {
 }  // namespace
 
 atomic_output::atomic_output(std::string target_path) : target_path_(std::move(target_path)) {
+    if (target_path_.empty()) {
+        throw output_error("the output file name is empty");
+    }
     const std::size_t slash = target_path_.rfind('/');
     const std::string base =
         slash == std::string::npos ? target_path_ : target_path_.substr(slash + 1);
@@ -68,32 +71,45 @@ void atomic_output::open_temporary(const std::string& final_path) {
     const std::size_t slash = final_path_.rfind('/');
     const std::string directory =
         slash == std::string::npos ? std::string() : final_path_.substr(0, slash + 1);
-    const std::string base =
-        slash == std::string::npos ? final_path_ : final_path_.substr(slash + 1);
 
-    const std::string pattern = directory + "." + base + ".tmp.XXXXXX";
+    const std::string pattern = temporary_pattern(directory, "out");
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
-    const int fd = ::mkstemp(name.data());
-    if (fd < 0) {
-        throw output_error(failure(target_path_, "cannot create a temporary file beside it", errno));
+    int fd = -1;
+    {
+        // Created and registered with the handled signals held, so that no
+        // signal finds the file unregistered.
+        const signals_held held;
+        fd = ::mkstemp(name.data());
+        if (fd < 0) {
+            throw output_error(failure(target_path_, "cannot create a temporary file beside it", errno));
+        }
+        temp_path_ = name.data();
+        try {
+            temp_registered_ = temporary_registration(temp_path_, temporary_registration::kind::file);
+        } catch (...) {
+            remove_temporary(fd);
+            throw;
+        }
     }
-    temp_path_ = name.data();
     if (::fchmod(fd, final_mode(final_path_)) != 0) {
         const int error = errno;
-        ::close(fd);
-        ::unlink(temp_path_.c_str());
-        temp_path_.clear();
+        remove_temporary(fd);
         throw output_error(failure(target_path_, "cannot set the temporary file's mode", error));
     }
     file_ = ::fdopen(fd, "wb");
     if (file_ == nullptr) {
         const int error = errno;
-        ::close(fd);
-        ::unlink(temp_path_.c_str());
-        temp_path_.clear();
+        remove_temporary(fd);
         throw output_error(failure(target_path_, "cannot open the temporary file", error));
     }
+}
+
+void atomic_output::remove_temporary(int fd) noexcept {
+    ::close(fd);
+    ::unlink(temp_path_.c_str());
+    temp_path_.clear();
+    temp_registered_.release();
 }
 
 atomic_output::~atomic_output() {
@@ -110,6 +126,7 @@ void atomic_output::discard() noexcept {
     if (!temp_path_.empty()) {
         ::unlink(temp_path_.c_str());
         temp_path_.clear();
+        temp_registered_.release();
     }
 }
 
@@ -152,6 +169,7 @@ void atomic_output::commit() {
         throw output_error(failure(target_path_, "cannot replace it", errno));
     }
     temp_path_.clear();
+    temp_registered_.release();
     committed_ = true;
 }
 

@@ -1,15 +1,20 @@
 // Output that appears at its path whole or not at all.
 //
 // Bytes go to a temporary file beside the target (same directory, so the final
-// rename stays within one file system and is atomic); commit() flushes it to
-// disk and renames it over the target. Until then an existing target is left
-// untouched, and if commit() is never reached the temporary file is removed.
+// rename stays within one file system and is atomic; a short name of its own,
+// see temporary_files.hpp, so that it fits wherever the target's name fits);
+// commit() flushes it to disk and renames it over the target. Until then an
+// existing target is left untouched, and if commit() is never reached the
+// temporary file is removed: by the destructor, or by the signal handler of
+// temporary_files.hpp when a signal ends the program.
 //
 // A target that is a symbolic link keeps the link: the file it names is
 // replaced. A target that exists but is not a regular file (a device such as
 // /dev/null, a named pipe) is written directly, since there is no file to
 // replace and renaming over it would remove the device.
 #pragma once
+
+#include "temporary_files.hpp"
 
 #include <cstddef>
 #include <cstdio>
@@ -47,10 +52,12 @@ private:
     void open_direct();
     void open_temporary(const std::string& final_path);
     void discard() noexcept;
+    void remove_temporary(int fd) noexcept;
 
     std::string target_path_;
     std::string final_path_;  // target_path_ with symbolic links resolved
     std::string temp_path_;
+    temporary_registration temp_registered_;
     std::FILE* file_ = nullptr;
     bool direct_ = false;
     bool committed_ = false;

@@ -91,6 +91,20 @@ std::uint64_t parse_number_option(std::string_view option, std::string_view text
     return value;
 }
 
+std::optional<std::string_view> output_option(const parsed_options& options, std::string_view name,
+                                              bool required) {
+    const auto text = required ? std::optional<std::string_view>(options.required(name)) : options.value(name);
+    if (text && text->empty()) {
+        throw usage_error(dashed(name) + ": the file name is empty");
+    }
+    return text;
+}
+
+usage_error same_input_error(std::string_view rects_path, std::string_view pairs_path) {
+    return usage_error("--rects '" + std::string(rects_path) + "' and --pairs '" + std::string(pairs_path) +
+                       "' name the same input; rectangles and pairs need one each");
+}
+
 void print_options(std::FILE* out, const std::vector<option_spec>& specs) {
     std::size_t width = 0;
     for (const option_spec& spec : specs) {

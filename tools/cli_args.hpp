@@ -53,6 +53,15 @@ parsed_options parse_options(const std::vector<std::string_view>& args,
 std::uint64_t parse_number_option(std::string_view option, std::string_view text,
                                   std::uint64_t lo, std::uint64_t hi);
 
+/// The file name given to the output option `name` (nothing when it is not
+/// given and not `required`); throws usage_error when it is required and
+/// missing, or empty.
+std::optional<std::string_view> output_option(const parsed_options& options, std::string_view name,
+                                              bool required = false);
+
+/// The usage error for --rects and --pairs naming one input (see io::same_input).
+usage_error same_input_error(std::string_view rects_path, std::string_view pairs_path);
+
 /// Prints one aligned line per option.
 void print_options(std::FILE* out, const std::vector<option_spec>& specs);
 

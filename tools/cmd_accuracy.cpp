@@ -4,7 +4,7 @@
 #include "accuracy_commands.hpp"
 #include "accuracy_json.hpp"
 #include "accuracy_report.hpp"
-#include "accuracy_svg.hpp"
+#include "draw/accuracy_svg.hpp"
 #include "accuracy_text.hpp"
 #include "atomic_output.hpp"
 #include "cli_args.hpp"
@@ -39,7 +39,7 @@ const std::vector<option_spec>& accuracy_option_specs() {
 }
 
 std::unique_ptr<io::atomic_output> output_for(const parsed_options& options, const char* name) {
-    const auto path = options.value(name);
+    const auto path = output_option(options, name);
     if (!path) {
         return nullptr;
     }

@@ -127,7 +127,11 @@ int run_collide(const arguments& args) {
     // unwritable --out is reported at once.
     const io::input_file rects_file(rects_path);
     const io::input_file pairs_file(pairs_path);
-    verdict_writer writer(options.value("out"));
+    // The same stream under two names ("-" and /dev/stdin) is caught here.
+    if (io::same_input(rects_file, pairs_file)) {
+        throw same_input_error(rects_path, pairs_path);
+    }
+    verdict_writer writer(output_option(options, "out"));
 
     rect_records rects;
     {

@@ -11,6 +11,7 @@
 #include "accuracy_commands.hpp"
 #include "atomic_output.hpp"
 #include "cli_args.hpp"
+#include "temporary_files.hpp"
 
 #include <obbsat/oracle/classify_pairs.hpp>
 #include <obbsat/suites/family.hpp>
@@ -148,10 +149,26 @@ private:
     std::string buffer_;
 };
 
-// A temporary directory removed with its files unless released.
+// A temporary directory, created from `pattern` (mkdtemp's), removed with its
+// files unless released, on an error and on a signal alike; errors name `dir`.
 class temp_directory {
 public:
-    explicit temp_directory(std::string path) : path_(std::move(path)) {}
+    temp_directory(const std::string& pattern, const std::string& dir) {
+        std::vector<char> name(pattern.begin(), pattern.end());
+        name.push_back('\0');
+        {
+            const io::signals_held held;  // no signal finds it unregistered
+            if (::mkdtemp(name.data()) == nullptr) {
+                throw io::output_error(error_text(dir, "cannot create a temporary directory for it", errno));
+            }
+            path_ = name.data();
+            registered_.emplace_back(path_, io::temporary_registration::kind::directory);
+        }
+        // Registered before they exist: removing a missing file is harmless.
+        for (const char* file : file_names) {
+            registered_.emplace_back(path_ + "/" + file, io::temporary_registration::kind::file);
+        }
+    }
     ~temp_directory() {
         if (path_.empty()) {
             return;
@@ -165,10 +182,15 @@ public:
     temp_directory& operator=(const temp_directory&) = delete;
 
     const std::string& path() const { return path_; }
-    void release() { path_.clear(); }
+    /// The directory is in place under its final name: nothing to remove.
+    void release() {
+        path_.clear();
+        registered_.clear();
+    }
 
 private:
     std::string path_;
+    std::vector<io::temporary_registration> registered_;
 };
 
 std::string without_trailing_slashes(std::string path) {
@@ -178,22 +200,13 @@ std::string without_trailing_slashes(std::string path) {
     return path;
 }
 
-// The directory that will hold DIR, and DIR's last name.
-std::pair<std::string, std::string> parent_and_name(const std::string& dir) {
+// The directory that will hold DIR.
+std::string parent_of(const std::string& dir) {
     const std::size_t slash = dir.rfind('/');
     if (slash == std::string::npos) {
-        return {".", dir};
+        return ".";
     }
-    return {slash == 0 ? "/" : dir.substr(0, slash), dir.substr(slash + 1)};
-}
-
-std::string make_temp_directory(const std::string& pattern, const std::string& dir) {
-    std::vector<char> name(pattern.begin(), pattern.end());
-    name.push_back('\0');
-    if (::mkdtemp(name.data()) == nullptr) {
-        throw io::output_error(error_text(dir, "cannot create a temporary directory for it", errno));
-    }
-    return name.data();
+    return slash == 0 ? "/" : dir.substr(0, slash);
 }
 
 void sync_directory(const std::string& path) {
@@ -348,10 +361,8 @@ int run_gen(const arguments& args) {
     oracle::classify_pairs(s.rects.data(), s.rects.size(), s.pairs.data(), s.pairs.size(),
                            truth.data());
 
-    const auto [parent, name] = parent_and_name(dir);
-    const std::string pattern = dir_exists ? dir + "/.obbsat-gen.tmp.XXXXXX"
-                                           : parent + "/." + name + ".tmp.XXXXXX";
-    temp_directory temp(make_temp_directory(pattern, dir));
+    const std::string parent = parent_of(dir);
+    temp_directory temp(io::temporary_pattern((dir_exists ? dir : parent) + "/", "gen"), dir);
     write_suite_files(temp.path(), dir, s, truth);
 
     if (dir_exists) {

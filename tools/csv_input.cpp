@@ -10,6 +10,8 @@
 #include <cstring>
 #include <utility>
 
+#include <sys/stat.h>
+
 namespace obbsat::io {
 
 namespace {
@@ -177,6 +179,13 @@ input_file::~input_file() {
     if (owned_) {
         std::fclose(file_);
     }
+}
+
+bool same_input(const input_file& a, const input_file& b) {
+    struct stat sa {};
+    struct stat sb {};
+    return ::fstat(::fileno(a.get()), &sa) == 0 && ::fstat(::fileno(b.get()), &sb) == 0 &&
+           sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 line_reader::line_reader(std::FILE* file, std::string name, std::size_t chunk_bytes,

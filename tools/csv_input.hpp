@@ -65,6 +65,10 @@ private:
     std::string name_;
 };
 
+/// True iff `a` and `b` read one and the same file (device and inode), as "-",
+/// "/dev/stdin" and "/proc/self/fd/0" do.
+bool same_input(const input_file& a, const input_file& b);
+
 /// The lines of a file or of text in memory, read in large chunks so that a
 /// line may cross a chunk boundary; memory stays bounded by the longest line.
 class line_reader {

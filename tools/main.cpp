@@ -6,7 +6,9 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "csv_input.hpp"
+#include "temporary_files.hpp"
 
+#include <obbsat/backend.hpp>
 #include <obbsat/error.hpp>
 
 #include <cerrno>
@@ -64,7 +66,8 @@ void print_main_help(std::FILE* out) {
     std::fprintf(out,
                  "\n"
                  "environment:\n"
-                 "  OBBSAT_BACKEND  forces the backend that 'auto' picks (scalar, sse2, avx2, avx512)\n"
+                 "  OBBSAT_BACKEND  forces the backend that 'auto' picks (scalar, sse2, avx2, avx512);\n"
+                 "                  any other value is an error (exit status 2) for every command\n"
                  "\n"
                  "exit status: 0 success, 1 internal error, 2 bad usage or bad input\n"
                  "\n"
@@ -117,6 +120,13 @@ int dispatch(const arguments& words) {
         return exit_success;
     }
     try {
+        // A bad OBBSAT_BACKEND is an error for every command, used or not (a
+        // command given --backend, or one that runs every backend), so that a
+        // typo never passes unnoticed. `backends` lists the backends first and
+        // reports it after, when it resolves 'auto'.
+        if (sub->name != "backends") {
+            obbsat::forced_backend();
+        }
         return sub->run(rest);
     } catch (const usage_error& e) {
         report(std::string(sub->name) + ": " + e.what() + " (see 'obbsat " + std::string(sub->name) +
@@ -128,6 +138,8 @@ int dispatch(const arguments& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before any output begins: a temporary file must not outlive a Ctrl-C.
+    obbsat::io::remove_temporaries_on_signal();
     int status = exit_internal_error;
     try {
         const arguments words(argv + 1, argv + argc);

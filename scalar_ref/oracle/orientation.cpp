@@ -1,6 +1,8 @@
 #include <obbsat/oracle/orientation.hpp>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace obbsat::oracle {
 
@@ -24,13 +26,20 @@ void two_sum(double a, double b, double& s, double& e) {
     e = (a - a_part) + (b - b_part);
 }
 
-// The sign of t[0] + ... + t[n-1], exact. The terms are accumulated into a
-// nonoverlapping expansion (components of increasing magnitude, zeros
-// dropped); such an expansion has the sign of its largest component.
-int sign_of_exact_sum(const double* terms, int n) {
-    double expansion[8];
+}  // namespace
+
+// The terms are accumulated into a nonoverlapping expansion (components of
+// increasing magnitude, zeros dropped); such an expansion has the sign of its
+// largest component. Each term adds at most one component, so `count` terms
+// fit in `count` places.
+int sign_of_exact_sum(const double* terms, int count) {
+    if (count < 0 || count > exact_sum_max_terms) {
+        throw std::invalid_argument("sign_of_exact_sum: " + std::to_string(count) +
+                                    " terms (at most " + std::to_string(exact_sum_max_terms) + ")");
+    }
+    double expansion[exact_sum_max_terms];
     int length = 0;
-    for (int t = 0; t < n; ++t) {
+    for (int t = 0; t < count; ++t) {
         double carry = terms[t];
         int kept = 0;
         for (int i = 0; i < length; ++i) {
@@ -52,8 +61,6 @@ int sign_of_exact_sum(const double* terms, int n) {
     }
     return expansion[length - 1] > 0.0 ? 1 : -1;
 }
-
-}  // namespace
 
 int orientation_exact(point p, point q, point r) {
     // (qx - px)(ry - py) - (qy - py)(rx - px) expands (the px*py terms cancel)

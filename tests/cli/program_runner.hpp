@@ -79,17 +79,13 @@ public:
     /// comes after the captures, so it may replace them.
     run_result run(const std::string& args, const std::string& env = "",
                    const std::string& redirects = "") const {
-        const std::filesystem::path out = root_ / "capture" / "stdout";
-        const std::filesystem::path err = root_ / "capture" / "stderr";
-        std::string command = "cd '" + work().string() + "' && env -u OBBSAT_BACKEND " + env +
-                              " '" OBBSAT_CLI_PATH "' " + args + " > '" + out.string() + "' 2> '" +
-                              err.string() + "'";
-        if (!redirects.empty()) {
-            command += " " + redirects;
-        }
-        const int raw = std::system(command.c_str());
-        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-        return run_result{status, read_file(out), read_file(err)};
+        return run_command("", args, env, redirects);
+    }
+
+    /// Runs `obbsat ARGS` like run(), its standard input a pipe fed with the
+    /// file `input` of work().
+    run_result run_piped(const std::string& input, const std::string& args) const {
+        return run_command("cat '" + input + "' | ", args, "", "");
     }
 
     /// The names in work(), sorted.
@@ -124,6 +120,21 @@ public:
     }
 
 private:
+    run_result run_command(const std::string& feed, const std::string& args, const std::string& env,
+                           const std::string& redirects) const {
+        const std::filesystem::path out = root_ / "capture" / "stdout";
+        const std::filesystem::path err = root_ / "capture" / "stderr";
+        std::string command = "cd '" + work().string() + "' && " + feed + "env -u OBBSAT_BACKEND " +
+                              env + " '" OBBSAT_CLI_PATH "' " + args + " > '" + out.string() + "' 2> '" +
+                              err.string() + "'";
+        if (!redirects.empty()) {
+            command += " " + redirects;
+        }
+        const int raw = std::system(command.c_str());
+        const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+        return run_result{status, read_file(out), read_file(err)};
+    }
+
     std::filesystem::path root_;
 };
 

@@ -152,4 +152,30 @@ TEST_F(atomic_output_test, writing_after_commit_is_an_error) {
     EXPECT_THROW(out.commit(), output_error);
 }
 
+TEST_F(atomic_output_test, a_target_name_of_255_bytes_has_room_for_its_temporary) {
+    for (const std::size_t length : {std::size_t{1}, std::size_t{244}, std::size_t{255}}) {
+        const std::string name(length, 'n');
+        {
+            atomic_output out(path(name));
+            EXPECT_EQ(fs::path(out.temp_path()).parent_path(), dir_);
+            EXPECT_LE(fs::path(out.temp_path()).filename().string().size(), 255u);
+            out.write("1\n", 2);
+            out.commit();
+        }
+        EXPECT_EQ(content(path(name)), "1\n");
+        EXPECT_EQ(entries(), std::vector<std::string>{name});
+        fs::remove(path(name));
+    }
+}
+
+TEST_F(atomic_output_test, an_empty_name_is_called_empty) {
+    try {
+        atomic_output out("");
+        ADD_FAILURE() << "no error";
+    } catch (const output_error& e) {
+        EXPECT_STREQ(e.what(), "the output file name is empty");
+    }
+    EXPECT_TRUE(entries().empty());
+}
+
 }  // namespace

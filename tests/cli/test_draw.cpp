@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -537,6 +538,61 @@ TEST_F(draw_test, coordinates_stay_small_and_finite_for_huge_tiny_and_degenerate
         const std::vector<double> numbers = geometry_numbers(doc);
         EXPECT_GT(numbers.size(), 100u);
         for (const double v : numbers) {
+            ASSERT_TRUE(std::isfinite(v) && std::fabs(v) <= 1e5) << v;
+        }
+    }
+}
+
+// Any four finite corners are a quadrilateral to draw: a corner far out on
+// one side of an otherwise small quad, self-crossing quads, segments and
+// points, at the ends of the float range and with subnormal coordinates, each
+// against each, with every method.
+TEST(draw_any_corners, degenerate_self_crossing_and_extreme_quads_draw_with_finite_coordinates) {
+    const float huge = 3e38f;
+    const float tiny = 1e-45f;  // the smallest subnormal
+    const std::vector<rect> rects = {
+        rect{point{1e17f, 0}, point{2, 0}, point{2, 1}, point{0, 1}},
+        rect{point{1, 0.5f}, point{3, 0.5f}, point{3, 1.5f}, point{1, 1.5f}},
+        rect{point{0, 0}, point{1, 0}, point{0, 0}, point{0, 0}},
+        rect{point{0, -1e-30f}, point{0, -1}, point{-1, 0}, point{1, 1e-30f}},
+        box(0, 0, 0, 0),
+        box(huge, huge, huge, huge),
+        box(tiny, tiny, -tiny, -tiny),
+        rect{point{-huge, -huge}, point{huge, huge}, point{huge, huge}, point{-huge, -huge}},
+        rect{point{-huge, huge}, point{huge, -huge}, point{huge, huge}, point{-huge, -huge}},
+        rect{point{0, 0}, point{tiny, 0}, point{0, tiny}, point{tiny, tiny}},
+        rect{point{huge, tiny}, point{-huge, tiny}, point{tiny, -huge}, point{tiny, huge}},
+        rect{point{-huge, 0}, point{tiny, 0}, point{tiny, tiny}, point{-huge, tiny}},
+        // A grazing contact near the origin between quads reaching 3e38: the
+        // inset magnifies it about 1e46 times, edges from far outside cross it.
+        rect{point{1e-38f, -3e38f}, point{-1e-30f, FLT_MAX}, point{-1e-30f, -tiny}, point{1e-38f, 0.5f}},
+        rect{point{1e-30f, -1}, point{1e6f, 1e6f}, point{1, -tiny}, point{-3e38f, -3e38f}},
+    };
+    std::string rect_text;
+    for (const rect& r : rects) {
+        rect_text += rect_line(r);
+    }
+    std::string pair_text;
+    std::size_t pairs = 0;
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        for (std::size_t j = 0; j < rects.size(); ++j) {
+            pair_text += std::to_string(i) + "," + std::to_string(j) + "\n";
+            ++pairs;
+        }
+    }
+    const scratch s;
+    write_file(s.file("rects.csv"), rect_text);
+    write_file(s.file("pairs.csv"), pair_text);
+    for (const method m : obbsat::all_methods()) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        const run_result r = s.run("draw --rects rects.csv --pairs pairs.csv --select 0-" +
+                                   std::to_string(pairs - 1) + " --method " + obbsat::method_name(m) +
+                                   " --out pairs.svg");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err, "");
+        const xml_document doc = parse_xml(read_file(s.file("pairs.svg")));
+        EXPECT_EQ(read_panels(doc).size(), pairs);
+        for (const double v : geometry_numbers(doc)) {
             ASSERT_TRUE(std::isfinite(v) && std::fabs(v) <= 1e5) << v;
         }
     }

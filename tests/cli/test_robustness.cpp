@@ -13,14 +13,24 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cfloat>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
+
+#include <csignal>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -46,7 +56,7 @@ void expect_refused(const scratch& s, const run_result& r, const std::string& me
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << what << "\n" << r.err;
     EXPECT_EQ(r.out, "") << what;
     EXPECT_EQ(read_file(s.file("v.txt")), previous) << what;
-    EXPECT_TRUE(s.entries_starting_with(".v.txt").empty()) << what << ": temporary output left behind";
+    EXPECT_TRUE(s.entries_starting_with(".").empty()) << what << ": temporary output left behind";
 }
 
 TEST(robustness, both_files_on_standard_input_are_refused) {
@@ -230,6 +240,158 @@ TEST(robustness, extreme_coordinates_give_every_reference_verdict_on_every_backe
         }
     }
     EXPECT_GE(runs, obbsat::all_methods().size());
+}
+
+// ---------------------------------------------------------------------------
+// Output names and interrupted runs.
+
+// Every command that writes a file takes any name the file system takes: up
+// to NAME_MAX (255) bytes, with no room left for a longer temporary name.
+TEST(robustness, output_names_up_to_255_bytes_are_written_by_every_command) {
+    const scratch s;
+    write_file(s.file("R.csv"), unit_rect + unit_rect);
+    write_file(s.file("P.csv"), "0,1\n");
+    for (const std::size_t length : {std::size_t{200}, std::size_t{244}, std::size_t{250}, std::size_t{255}}) {
+        const std::string name(length, 'v');
+        SCOPED_TRACE(std::to_string(length) + " bytes");
+        const run_result collide = s.run("collide --rects R.csv --pairs P.csv --out " + name);
+        EXPECT_EQ(collide.status, 0) << collide.err;
+        EXPECT_EQ(read_file(s.file(name)), "1\n");
+        fs::remove(s.file(name));
+
+        const run_result draw = s.run("draw --rects R.csv --pairs P.csv --select 0 --out " + name);
+        EXPECT_EQ(draw.status, 0) << draw.err;
+        EXPECT_EQ(read_file(s.file(name)).rfind("<?xml", 0), 0u);
+        fs::remove(s.file(name));
+
+        const run_result accuracy =
+            s.run("accuracy --pairs 10 --reps 1 --json " + name + " --svg " + std::string(length, 's'));
+        EXPECT_EQ(accuracy.status, 0) << accuracy.err;
+        EXPECT_EQ(read_file(s.file(name)).rfind("{", 0), 0u);
+        EXPECT_EQ(read_file(s.file(std::string(length, 's'))).rfind("<?xml", 0), 0u);
+        fs::remove(s.file(name));
+        fs::remove(s.file(std::string(length, 's')));
+
+        const run_result gen = s.run("gen tiles --pairs 10 --out " + name);
+        EXPECT_EQ(gen.status, 0) << gen.err;
+        EXPECT_TRUE(fs::is_regular_file(s.file(name) / "truth.txt"));
+        const run_result again = s.run("gen tiles --pairs 10 --out " + name);
+        EXPECT_EQ(again.status, 0) << again.err;
+        fs::remove_all(s.file(name));
+
+        EXPECT_EQ(s.entries(), (std::vector<std::string>{"P.csv", "R.csv"}));
+    }
+}
+
+TEST(robustness, an_empty_output_name_is_called_empty) {
+    const scratch s;
+    write_file(s.file("R.csv"), unit_rect);
+    write_file(s.file("P.csv"), "0,0\n");
+    const std::vector<std::pair<std::string, std::string>> runs = {
+        {"collide --rects R.csv --pairs P.csv --out ''", "collide: --out: the file name is empty"},
+        {"draw --rects R.csv --pairs P.csv --select 0 --out ''", "draw: --out: the file name is empty"},
+        {"accuracy --pairs 10 --json ''", "accuracy: --json: the file name is empty"},
+        {"accuracy --pairs 10 --svg=", "accuracy: --svg: the file name is empty"},
+    };
+    for (const auto& [args, message] : runs) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err.rfind("obbsat: " + message + " (see 'obbsat ", 0), 0u) << args << "\n" << r.err;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(s.entries(), (std::vector<std::string>{"P.csv", "R.csv"})) << args;
+    }
+}
+
+// Runs obbsat with `args` in work() as a child process whose pair file,
+// P.fifo, is a named pipe held open and empty: the run waits for pairs with
+// its output already begun. Once a hidden file (the temporary output) shows
+// in work(), the child gets `signal`; returns how it ended.
+int interrupted_run(const scratch& s, const std::vector<std::string>& args, int signal) {
+    const std::string fifo = s.file("P.fifo").string();
+    if (::mkfifo(fifo.c_str(), 0600) != 0 && errno != EEXIST) {
+        ADD_FAILURE() << "mkfifo failed";
+        return -1;
+    }
+    const int writer = ::open(fifo.c_str(), O_RDWR | O_CLOEXEC);  // never blocks, keeps the pipe open
+    std::vector<char*> argv;
+    const std::string program = OBBSAT_CLI_PATH;
+    argv.push_back(const_cast<char*>(program.c_str()));
+    for (const std::string& a : args) {
+        argv.push_back(const_cast<char*>(a.c_str()));
+    }
+    argv.push_back(nullptr);
+    const pid_t child = ::fork();
+    if (child == 0) {
+        // The test's own dispositions (an ignored SIGINT, say) must not decide the outcome.
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        const int null = ::open("/dev/null", O_WRONLY);
+        if (::chdir(s.work().c_str()) != 0 || null < 0 || ::dup2(null, 1) < 0 || ::dup2(null, 2) < 0) {
+            ::_exit(126);
+        }
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    bool began = false;
+    for (int wait = 0; wait < 2000 && !began; ++wait) {
+        began = !s.entries_starting_with(".").empty();
+        if (!began) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    EXPECT_TRUE(began) << "no temporary output appeared";
+    ::kill(child, began ? signal : SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ::close(writer);
+    ::unlink(fifo.c_str());
+    return status;
+}
+
+TEST(robustness, an_interrupted_run_leaves_no_temporary_file) {
+    const scratch s;
+    write_file(s.file("v.txt"), previous);
+    write_file(s.file("R.csv"), unit_rect);
+    for (const int signal : {SIGINT, SIGTERM}) {
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"collide", "--rects", "R.csv", "--pairs", "P.fifo", "--out", "v.txt"},
+              std::vector<std::string>{"draw", "--rects", "R.csv", "--pairs", "P.fifo", "--select", "0",
+                                       "--out", "v.txt"}}) {
+            SCOPED_TRACE(args[0] + " stopped by signal " + std::to_string(signal));
+            const int status = interrupted_run(s, args, signal);
+            // The default action of the signal ends the run, as the shell expects.
+            EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << status;
+            EXPECT_EQ(read_file(s.file("v.txt")), previous);
+            EXPECT_EQ(s.entries(), (std::vector<std::string>{"R.csv", "v.txt"}));
+        }
+    }
+}
+
+// Both inputs are read to their end, one after the other: a stream named
+// twice would give the rectangles every byte and the pairs none, and a file
+// named twice holds either rectangles or pairs, not both.
+TEST(robustness, two_names_for_standard_input_are_refused) {
+    const scratch s;
+    write_file(s.file("v.txt"), previous);
+    write_file(s.file("in.txt"), unit_rect + "0,0\n");
+    const std::vector<std::pair<std::string, std::string>> names = {
+        {"/dev/stdin", "-"}, {"-", "/dev/stdin"}, {"/dev/fd/0", "-"}, {"/proc/self/fd/0", "/dev/stdin"}};
+    for (const auto& [rects, pairs] : names) {
+        for (const std::string command : {"collide", "draw"}) {
+            const std::string args = command + " --rects " + rects + " --pairs " + pairs +
+                                     (command == "draw" ? " --select 0" : "") + " --out v.txt";
+            const std::string message = command + ": --rects '" + rects + "' and --pairs '" + pairs +
+                                        "' name the same input; rectangles and pairs need one each";
+            expect_refused(s, s.run_piped("in.txt", args), message, args + " from a pipe");
+            expect_refused(s, s.run(args, "", "< in.txt"), message, args + " from a file");
+        }
+    }
+    fs::create_symlink("in.txt", s.file("link.txt"));
+    const run_result twice = s.run("collide --rects in.txt --pairs link.txt --out v.txt");
+    expect_refused(s, twice,
+                   "collide: --rects 'in.txt' and --pairs 'link.txt' name the same input; rectangles and "
+                   "pairs need one each",
+                   "a file and a link to it");
 }
 
 }  // namespace

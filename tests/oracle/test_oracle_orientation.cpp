@@ -12,13 +12,16 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace {
 
 using obbsat::point;
 using obbsat::oracle::orientation;
 using obbsat::oracle::orientation_exact;
+using obbsat::oracle::sign_of_exact_sum;
 
 int rational_orientation(point p, point q, point r) {
     auto q_of = [](float v) { return mpq_class(static_cast<double>(v)); };
@@ -167,6 +170,39 @@ TEST(orientation, lattice_points_on_a_line_are_collinear_far_from_the_origin) {
         ASSERT_EQ(orientation(p, q, r), 0);
         ASSERT_EQ(orientation(p, q, point{r.x + 1, r.y}), k1 == 0 ? 0 : -1);
     }
+}
+
+// Sums of products of two floats, as the drawing's exact dot products build
+// them: terms that cancel to zero, to one part in 2^200, or not at all.
+TEST(sign_of_exact_sum, matches_rationals_on_cancelling_products_of_floats) {
+    obbsat::seeded_random random(9);
+    for (int i = 0; i < 20000; ++i) {
+        const int count = 1 + static_cast<int>(random.below(obbsat::oracle::exact_sum_max_terms));
+        std::vector<double> terms;
+        mpq_class exact = 0;
+        for (int t = 0; t < count; ++t) {
+            const double u = random_float(random, -140, 120);
+            const double v = random_float(random, -140, 120);
+            // Half the time a term cancels an earlier one but for a tiny rest.
+            double term = u * v;
+            if (t > 0 && (random.next() & 1u) != 0) {
+                term = -terms[random.below(static_cast<std::uint64_t>(t))];
+                if ((random.next() & 3u) == 0) {
+                    term += std::ldexp(term, -52);
+                }
+            }
+            terms.push_back(term);
+            exact += mpq_class(term);
+        }
+        ASSERT_EQ(sign_of_exact_sum(terms.data(), count), sgn(exact)) << "case " << i;
+    }
+    const double none[1] = {0.0};
+    EXPECT_EQ(sign_of_exact_sum(none, 0), 0);
+    const double tiny_rest[3] = {0x1p100, 0x1p-140, -0x1p100};
+    EXPECT_EQ(sign_of_exact_sum(tiny_rest, 3), 1);
+    const double nine[9] = {};
+    EXPECT_THROW(sign_of_exact_sum(nine, 9), std::invalid_argument);
+    EXPECT_THROW(sign_of_exact_sum(nine, -1), std::invalid_argument);
 }
 
 }  // namespace

@@ -194,13 +194,17 @@ int run_draw(const arguments& args) {
     const std::string rects_path(options.required("rects"));
     const std::string pairs_path(options.required("pairs"));
     const std::vector<std::uint64_t> chosen = parse_selection(options.required("select"));
-    const std::string out_path(options.required("out"));
+    const std::string out_path(*output_option(options, "out", true));
     collide_options run;
     run.test = method_option(options);
     run.use = resolve_backend(backend_option(options));
 
     const io::input_file rects_file(rects_path);
     const io::input_file pairs_file(pairs_path);
+    // Both are read to the end in turn: one stream named twice leaves no pairs.
+    if (io::same_input(rects_file, pairs_file)) {
+        throw same_input_error(rects_path, pairs_path);
+    }
     io::atomic_output output(out_path);
 
     rect_records rects;

@@ -1,6 +1,7 @@
 #include "accuracy_svg.hpp"
 
 #include "accuracy_text.hpp"
+#include "svg_writer.hpp"
 
 #include <algorithm>
 #include <cinttypes>
@@ -22,35 +23,14 @@ constexpr double label_height = 15.0;
 // Wide enough for a label in a 12px sans-serif font: a bound, not a measure.
 constexpr double label_char_width = 6.5;
 
-std::string fixed(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f", value);
-    return text;
+svg::attributes text_at(const std::string& css_class, double x, double y, const char* anchor) {
+    svg::attributes attrs;
+    attrs.set("class", css_class).set("x", x).set("y", y).set("text-anchor", anchor);
+    return attrs;
 }
 
-std::string escaped(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
-
-std::string text_element(double x, double y, const char* anchor, const std::string& cls,
-                         const std::string& content, const std::string& extra = "") {
-    return "<text class=\"" + cls + "\" x=\"" + fixed(x) + "\" y=\"" + fixed(y) +
-           "\" text-anchor=\"" + anchor + "\"" + extra + ">" + escaped(content) + "</text>\n";
-}
-
-std::string line_element(double x1, double y1, double x2, double y2, const std::string& cls) {
-    return "<line class=\"" + cls + "\" x1=\"" + fixed(x1) + "\" y1=\"" + fixed(y1) + "\" x2=\"" +
-           fixed(x2) + "\" y2=\"" + fixed(y2) + "\"/>\n";
+void line(svg::writer& out, double x1, double y1, double x2, double y2, const char* css_class) {
+    out.leaf("line", svg::attributes().set("class", css_class).set("x1", x1).set("y1", y1).set("x2", x2).set("y2", y2));
 }
 
 // A tick step of 1, 2 or 5 times a power of ten giving about five ticks up to `top`.
@@ -109,61 +89,62 @@ std::string accuracy_svg(const accuracy_report& report) {
         return rate > 0.0 ? y_of_decade(std::log10(rate)) : y_of_decade(floor_decade);
     };
 
-    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fixed(width) + "\" height=\"" +
-           fixed(height) + "\" viewBox=\"0 0 " + fixed(width) + " " + fixed(height) + "\">\n";
-    svg += "<style>\n"
-           "text { font-family: sans-serif; font-size: 12px; fill: #222; }\n"
-           ".title { font-size: 15px; font-weight: bold; }\n"
-           ".axis-title { font-size: 13px; }\n"
-           ".grid { stroke: #ddd; stroke-width: 1; }\n"
-           ".frame { stroke: #444; stroke-width: 1; fill: none; }\n"
-           ".floor { stroke: #2a7; stroke-width: 1.5; stroke-dasharray: 6 4; }\n"
-           ".floor-label { fill: #2a7; }\n"
-           ".point { fill: #c33; stroke: #611; stroke-width: 1; }\n"
-           ".point.zero { fill: #2a7; stroke: #153; }\n"
-           ".leader { stroke: #888; stroke-width: 0.8; }\n"
-           "</style>\n";
-    svg += "<rect x=\"0\" y=\"0\" width=\"" + fixed(width) + "\" height=\"" + fixed(height) +
-           "\" fill=\"white\"/>\n";
+    svg::writer out(width, height);
+    out.text("style", svg::attributes(),
+             "\n"
+             "text { font-family: sans-serif; font-size: 12px; fill: #222; }\n"
+             ".title { font-size: 15px; font-weight: bold; }\n"
+             ".axis-title { font-size: 13px; }\n"
+             ".grid { stroke: #ddd; stroke-width: 1; }\n"
+             ".frame { stroke: #444; stroke-width: 1; fill: none; }\n"
+             ".floor { stroke: #2a7; stroke-width: 1.5; stroke-dasharray: 6 4; }\n"
+             ".floor-label { fill: #2a7; }\n"
+             ".point { fill: #c33; stroke: #611; stroke-width: 1; }\n"
+             ".point.zero { fill: #2a7; stroke: #153; }\n"
+             ".leader { stroke: #888; stroke-width: 0.8; }\n");
+    out.leaf("rect", svg::attributes().set("x", 0.0).set("y", 0.0).set("width", width).set("height", height).set("fill", "white"));
 
     char title[200];
     std::snprintf(title, sizeof title,
                   "obbsat methods: speed against error (%" PRIu64 " hard-case pairs, %zu families)",
                   pairs, report.families.size());
-    svg += text_element(width / 2.0, 28.0, "middle", "title", title);
+    out.text("text", text_at("title", width / 2.0, 28.0, "middle"), title);
     char subtitle[200];
     std::snprintf(subtitle, sizeof subtitle,
                   "speed: %s scene, %zu pairs over %zu rects, %s, %u thread, %s",
                   report.timing_scene.density, report.timing_scene.pairs, report.timing_scene.rects,
                   report.timing_scene.store, report.timing_scene.threads, backend_name(report.used));
-    svg += text_element(width / 2.0, 48.0, "middle", "subtitle", subtitle);
+    out.text("text", text_at("subtitle", width / 2.0, 48.0, "middle"), subtitle);
 
     // Grid and tick labels.
     for (double x = 0.0; x <= x_top * (1.0 + 1e-9); x += x_step) {
-        svg += line_element(x_of(x), plot_top, x_of(x), plot_bottom, "grid");
+        line(out, x_of(x), plot_top, x_of(x), plot_bottom, "grid");
         char tick[32];
         std::snprintf(tick, sizeof tick, "%g", x);
-        svg += text_element(x_of(x), plot_bottom + 18.0, "middle", "tick", tick);
+        out.text("text", text_at("tick", x_of(x), plot_bottom + 18.0, "middle"), tick);
     }
     for (int decade = floor_decade + 1; decade <= top_decade; ++decade) {
         const double y = y_of_decade(decade);
-        svg += line_element(plot_left, y, plot_right, y, "grid");
-        svg += text_element(plot_left - 8.0, y + 4.0, "end", "tick", "1e" + std::to_string(decade));
+        line(out, plot_left, y, plot_right, y, "grid");
+        out.text("text", text_at("tick", plot_left - 8.0, y + 4.0, "end"), "1e" + std::to_string(decade));
     }
     const double floor_y = y_of(0.0);
-    svg += line_element(plot_left, floor_y, plot_right, floor_y, "floor");
-    svg += text_element(plot_left - 8.0, floor_y + 4.0, "end", "tick floor-label", "0");
+    line(out, plot_left, floor_y, plot_right, floor_y, "floor");
+    out.text("text", text_at("tick floor-label", plot_left - 8.0, floor_y + 4.0, "end"), "0");
     const std::string floor_text = "no errors (below 1 in " + std::to_string(pairs) + ")";
-    svg += text_element(plot_left + 6.0, floor_y - 6.0, "start", "floor-label", floor_text);
-    svg += "<rect class=\"frame\" x=\"" + fixed(plot_left) + "\" y=\"" + fixed(plot_top) +
-           "\" width=\"" + fixed(plot_right - plot_left) + "\" height=\"" +
-           fixed(plot_bottom - plot_top) + "\"/>\n";
-    svg += text_element((plot_left + plot_right) / 2.0, plot_bottom + 44.0, "middle", "axis-title",
-                        "throughput, Mpairs/s (1 thread) \u2192 faster");
-    svg += text_element(24.0, (plot_top + plot_bottom) / 2.0, "middle", "axis-title",
-                        "error rate over all families (log scale) \u2192 worse",
-                        " transform=\"rotate(-90 24 " + fixed((plot_top + plot_bottom) / 2.0) + ")\"");
+    out.text("text", text_at("floor-label", plot_left + 6.0, floor_y - 6.0, "start"), floor_text);
+    out.leaf("rect", svg::attributes()
+                         .set("class", "frame")
+                         .set("x", plot_left)
+                         .set("y", plot_top)
+                         .set("width", plot_right - plot_left)
+                         .set("height", plot_bottom - plot_top));
+    out.text("text", text_at("axis-title", (plot_left + plot_right) / 2.0, plot_bottom + 44.0, "middle"),
+             "throughput, Mpairs/s (1 thread) \u2192 faster");
+    out.text("text",
+             text_at("axis-title", 24.0, (plot_top + plot_bottom) / 2.0, "middle")
+                 .set("transform", "rotate(-90 24 " + svg::coordinate((plot_top + plot_bottom) / 2.0) + ")"),
+             "error rate over all families (log scale) \u2192 worse");
 
     // Points, then labels: each label takes the first place, nearest its
     // point first, right of it before left, that overlaps no point, no
@@ -178,9 +159,12 @@ std::string accuracy_svg(const accuracy_report& report) {
         const double rate = m.total.error_rate();
         const double px = x_of(m.mpairs_per_second);
         const double py = y_of(rate);
-        svg += "<circle class=\"point" + std::string(rate == 0.0 ? " zero" : "") +
-               "\" data-method=\"" + escaped(name) + "\" cx=\"" + fixed(px) + "\" cy=\"" +
-               fixed(py) + "\" r=\"6\"/>\n";
+        out.leaf("circle", svg::attributes()
+                               .set("class", rate == 0.0 ? "point zero" : "point")
+                               .set("data-method", name)
+                               .set("cx", px)
+                               .set("cy", py)
+                               .set("r", 6.0));
         placed.push_back(placed_label{px - 7.0, px + 7.0, py - 7.0, py + 7.0});
     }
     for (const method_result& m : report.methods) {
@@ -223,13 +207,12 @@ std::string accuracy_svg(const accuracy_report& report) {
         const placed_label box = box_at(left, baseline);
         placed.push_back(box);
         if (std::fabs(baseline - (py + 4.0)) > 1.0) {
-            svg += line_element(px, py, left ? box.x1 : box.x0, baseline - 4.0, "leader");
+            line(out, px, py, left ? box.x1 : box.x0, baseline - 4.0, "leader");
         }
-        svg += text_element(left ? box.x1 : box.x0, baseline, left ? "end" : "start", "label",
-                            content, " data-method=\"" + escaped(name) + "\"");
+        out.text("text", text_at("label", left ? box.x1 : box.x0, baseline, left ? "end" : "start").set("data-method", name),
+                 content);
     }
-    svg += "</svg>\n";
-    return svg;
+    return out.finish();
 }
 
 }  // namespace obbsat::accuracy

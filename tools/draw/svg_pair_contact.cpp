@@ -106,10 +106,7 @@ public:
         const int side_a1 = oracle::orientation(b0, b1, a1);
         const vec pa0 = relative(a0), pa1 = relative(a1), pb0 = relative(b0), pb1 = relative(b1);
         if (side_b0 * side_b1 < 0 && side_a0 * side_a1 < 0) {
-            const vec da = pa1 - pa0;
-            const vec db = pb1 - pb0;
-            const double t = cross(pb0 - pa0, db) / cross(da, db);
-            const vec at = pa0 + t * da;
+            const vec at = crossing(a0, a1, b0, b1);
             return {at, at, 0.0, true, 0.0};
         }
         // Endpoints lying on the other segment: a touch, or the ends of a
@@ -157,6 +154,23 @@ public:
     world_point absolute(vec v) const { return {center_.x + v.x, center_.y + v.y}; }
 
 private:
+    // Where [a0, a1] crosses [b0, b1], given that the exact signs say they
+    // cross at one point inside both. The edge vectors come from the float
+    // corners themselves: measured from the centre, a short edge beside a
+    // huge one (corners 1e17 and 1 apart) rounds to nothing, and the
+    // intersection to 0 / 0. Rounding may still put the parameter a little
+    // outside the segment, or (edges parallel after rounding) nowhere: it is
+    // kept within the segment, as the exact point is.
+    vec crossing(point a0, point a1, point b0, point b1) const {
+        const vec da = vec_of(a1) - vec_of(a0);
+        const vec db = vec_of(b1) - vec_of(b0);
+        const double t = cross(vec_of(b0) - vec_of(a0), db) / cross(da, db);
+        const double inside = t >= 0.0 ? std::min(t, 1.0) : 0.0;  // NaN counts as 0
+        return relative(a0) + inside * (relative(a1) - relative(a0));
+    }
+
+    static vec vec_of(point p) { return {p.x, p.y}; }
+
     world_point center_;
 };
 

@@ -102,9 +102,16 @@ void draw_label(writer& out, svg_point at, const std::string& text, double font_
              text);
 }
 
+// The window's square, as the attributes of a <rect> to which a style is added.
+attributes window_square(const window& w) {
+    attributes square;
+    square.set("x", w.left).set("y", w.top).set("width", w.size).set("height", w.size);
+    return square;
+}
+
 void clip_path(writer& out, const std::string& id, const window& w) {
     out.open("clipPath", attributes().set("id", id));
-    out.leaf("rect", attributes().set("x", w.left).set("y", w.top).set("width", w.size).set("height", w.size));
+    out.leaf("rect", window_square(w));
     out.close();
 }
 
@@ -307,12 +314,7 @@ std::string axis_status(const axis_view& axis) {
 void draw_main_view(writer& out, const pair_drawing& pair, const method_view& axes,
                     const contact_view& contact, const window& w, const std::string& id) {
     out.open("g", attributes().set("class", "main-view").set("clip-path", "url(#" + id + "-main)"));
-    out.leaf("rect", attributes()
-                         .set("x", w.left)
-                         .set("y", w.top)
-                         .set("width", w.size)
-                         .set("height", w.size)
-                         .set("fill", "#fbfbfb"));
+    out.leaf("rect", window_square(w).set("fill", "#fbfbfb"));
     // A's outline is wider, so that an edge B shares with it still shows.
     draw_quad(out, w, pair.a, color_a, "rect-a", 3.0);
     draw_quad(out, w, pair.b, color_b, "rect-b", 1.4);
@@ -344,13 +346,7 @@ void draw_main_view(writer& out, const pair_drawing& pair, const method_view& ax
         draw_label(out, svg_point{spot.x + 10, spot.y - 10}, "inset", 8, "#222", "start");
     }
     out.close();
-    out.leaf("rect", attributes()
-                         .set("x", w.left)
-                         .set("y", w.top)
-                         .set("width", w.size)
-                         .set("height", w.size)
-                         .set("fill", "none")
-                         .set("stroke", "#bbb"));
+    out.leaf("rect", window_square(w).set("fill", "none").set("stroke", "#bbb"));
 }
 
 void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
@@ -358,8 +354,7 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
                 const std::string& id) {
     out.open("g", attributes().set("class", "inset"));
     out.open("g", attributes().set("clip-path", "url(#" + id + "-inset)"));
-    out.leaf("rect",
-             attributes().set("x", w.left).set("y", w.top).set("width", w.size).set("height", w.size).set("fill", "white"));
+    out.leaf("rect", window_square(w).set("fill", "white"));
     // A's outline is wider, so that an edge B shares with it still shows.
     draw_quad(out, w, pair.a, color_a, "rect-a", 3.0);
     draw_quad(out, w, pair.b, color_b, "rect-b", 1.4);
@@ -380,14 +375,7 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
         }
     }
     out.close();
-    out.leaf("rect", attributes()
-                         .set("x", w.left)
-                         .set("y", w.top)
-                         .set("width", w.size)
-                         .set("height", w.size)
-                         .set("fill", "none")
-                         .set("stroke", "#222")
-                         .set("stroke-width", 1.2));
+    out.leaf("rect", window_square(w).set("fill", "none").set("stroke", "#222").set("stroke-width", 1.2));
     const double zoom = w.scale / main.scale;
     draw_label(out, svg_point{w.left + 5, w.top + 9}, "inset, zoom \xC3\x97" + format("%.3g", zoom), 9,
                "#111", "start");

@@ -1,7 +1,9 @@
 #include "svg_pair_axes.hpp"
 
+#include <obbsat/oracle/orientation.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
+#include <obbsat/ref/sat4_double.hpp>
 
 #include <array>
 #include <stdexcept>
@@ -37,109 +39,50 @@ int first_separating(const std::vector<axis_view>& axes) {
     return -1;
 }
 
-// sat4 and sat4_centered, replayed through the reference's own steps; the
-// centered method measures from A.UL after moving every corner there in float.
-method_view float_method_view(const rect& a, const rect& b, bool centered) {
-    const point origin = centered ? a.ul : point{0.0f, 0.0f};
-    const rect moved_a = centered ? ref::moved_to_origin(a, origin) : a;
-    const rect moved_b = centered ? ref::moved_to_origin(b, origin) : b;
-    point axes[4];
-    ref::sat4_axes(moved_a, moved_b, axes);
+// A float or double method replayed on its four axes: each rect's extent by
+// the method's own projection, each axis's verdict by its own overlap test.
+// `origin` is where the method measures scalars from.
+template <class Axis, class Project, class Overlap>
+method_view replayed_view(const char* arithmetic, const Axis (&axes)[4], point origin, const rect& a,
+                          const rect& b, Project project, Overlap overlap) {
     method_view view;
-    view.arithmetic = "float";
+    view.arithmetic = arithmetic;
     for (int k = 0; k < 4; ++k) {
-        const point axis = axes[k];
-        const ref::extent extent_a = ref::project_rect(moved_a, axis);
-        const ref::extent extent_b = ref::project_rect(moved_b, axis);
+        const auto extent_a = project(a, axes[k]);
+        const auto extent_b = project(b, axes[k]);
         axis_view v = article_axis(k);
-        v.axis_x = axis.x;
-        v.axis_y = axis.y;
+        v.axis_x = axes[k].x;
+        v.axis_y = axes[k].y;
         v.origin_x = origin.x;
         v.origin_y = origin.y;
         v.a_min = extent_a.min;
         v.a_max = extent_a.max;
         v.b_min = extent_b.min;
         v.b_max = extent_b.max;
-        v.overlap = ref::extents_overlap(extent_a, extent_b);
+        v.overlap = overlap(extent_a, extent_b);
         view.axes.push_back(v);
     }
     view.separating = first_separating(view.axes);
     return view;
 }
 
-// sat4_double's steps as its header states them: axes, scalars
-// (x * ax) + (y * ay) and min/max picks folded UL, UR, LR, LL, all in double.
-struct double_extent {
-    double min;
-    double max;
-};
-
-double_extent project_in_double(const rect& r, double axis_x, double axis_y) {
-    double scalars[4];
-    const std::array<point, 4> corners = corners_of(r);
-    for (std::size_t i = 0; i < 4; ++i) {
-        const double along_x = static_cast<double>(corners[i].x) * axis_x;
-        const double along_y = static_cast<double>(corners[i].y) * axis_y;
-        scalars[i] = along_x + along_y;
-    }
-    double_extent e{scalars[0], scalars[0]};
-    for (std::size_t i = 1; i < 4; ++i) {
-        e.min = scalars[i] < e.min ? scalars[i] : e.min;
-        e.max = scalars[i] > e.max ? scalars[i] : e.max;
-    }
-    return e;
+// sat4 and sat4_centered, through the reference's own steps; the centered
+// method measures from A.UL after moving every corner there in float.
+method_view float_method_view(const rect& a, const rect& b, bool centered) {
+    const point origin = centered ? a.ul : point{0.0f, 0.0f};
+    const rect moved_a = centered ? ref::moved_to_origin(a, origin) : a;
+    const rect moved_b = centered ? ref::moved_to_origin(b, origin) : b;
+    point axes[4];
+    ref::sat4_axes(moved_a, moved_b, axes);
+    return replayed_view("float", axes, origin, moved_a, moved_b, ref::project_rect, ref::extents_overlap);
 }
 
+// sat4_double, through the reference's own steps in double.
 method_view double_method_view(const rect& a, const rect& b) {
-    method_view view;
-    view.arithmetic = "double";
-    const auto ends = article_axis_ends(a, b);
-    for (int k = 0; k < 4; ++k) {
-        const auto& [from, to] = ends[static_cast<std::size_t>(k)];
-        axis_view v = article_axis(k);
-        v.axis_x = static_cast<double>(to.x) - static_cast<double>(from.x);
-        v.axis_y = static_cast<double>(to.y) - static_cast<double>(from.y);
-        const double_extent extent_a = project_in_double(a, v.axis_x, v.axis_y);
-        const double_extent extent_b = project_in_double(b, v.axis_x, v.axis_y);
-        v.a_min = extent_a.min;
-        v.a_max = extent_a.max;
-        v.b_min = extent_b.min;
-        v.b_max = extent_b.max;
-        v.overlap = extent_b.min <= extent_a.max && extent_b.max >= extent_a.min;
-        view.axes.push_back(v);
-    }
-    view.separating = first_separating(view.axes);
-    return view;
-}
-
-// The sign of t[0] + ... + t[count-1], exact: the terms are accumulated into a
-// nonoverlapping expansion (Knuth's two-sum, zero components dropped), whose
-// largest component, the last, carries the sign of the exact sum.
-int sign_of_exact_sum(const double* terms, int count) {
-    double parts[8];
-    int used = 0;
-    for (int t = 0; t < count; ++t) {
-        double carry = terms[t];
-        int kept = 0;
-        for (int i = 0; i < used; ++i) {
-            const double sum = carry + parts[i];
-            const double part_b = sum - carry;
-            const double part_a = sum - part_b;
-            const double error = (carry - part_a) + (parts[i] - part_b);
-            if (error != 0.0) {
-                parts[kept++] = error;
-            }
-            carry = sum;
-        }
-        if (carry != 0.0) {
-            parts[kept++] = carry;
-        }
-        used = kept;
-    }
-    if (used == 0) {
-        return 0;
-    }
-    return parts[used - 1] > 0.0 ? 1 : -1;
+    ref::double_axis axes[4];
+    ref::sat4_double_axes(a, b, axes);
+    return replayed_view("double", axes, point{0.0f, 0.0f}, a, b, ref::sat4_double_projection,
+                         ref::double_extents_overlap);
 }
 
 // The sign of (u_to - u_from) . (v_to - v_from), exact for all finite floats:
@@ -150,7 +93,7 @@ int exact_dot_sign(point u_from, point u_to, point v_from, point v_to) {
     const double vx0 = v_from.x, vy0 = v_from.y, vx1 = v_to.x, vy1 = v_to.y;
     const double terms[8] = {ux1 * vx1, -(ux1 * vx0), -(ux0 * vx1), ux0 * vx0,
                              uy1 * vy1, -(uy1 * vy0), -(uy0 * vy1), uy0 * vy0};
-    return sign_of_exact_sum(terms, 8);
+    return oracle::sign_of_exact_sum(terms, 8);
 }
 
 // True iff, on the axis to - from, every corner of one rect lies strictly

@@ -3,10 +3,11 @@
 // can show the reason for the verdict.
 //
 // The float and double methods (sat4, sat4_centered, sat4_double) are replayed
-// step by step in their own arithmetic, sat4 and sat4_centered through the
-// reference's own step functions. The certified methods (conservative, exact)
-// decide from exact signs, so their axes are judged exactly: an axis separates
-// iff every corner of one rect lies strictly before every corner of the other.
+// step by step through their references' own step functions, so in their own
+// arithmetic and operation order. The certified methods (conservative, exact)
+// decide from exact signs, so their axes are judged exactly (with the oracle's
+// exact sum): an axis separates iff every corner of one rect lies strictly
+// before every corner of the other.
 // When the four axes do not separate a pair such a method calls apart, the
 // normals of the quads' edges are tried next, as the certified test does.
 // Extents are kept in double for drawing; for the float methods they are the

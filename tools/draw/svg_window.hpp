@@ -5,7 +5,9 @@
 // window may magnify a pair of one-ulp features anywhere in float range; a
 // corner far outside it (an inset magnifies by up to about 1e46) then lands at
 // a huge but finite position, and geometry is cut to a little more than the
-// window before it is written, so that such positions never reach the file.
+// window before it is written, so that such positions never reach the file:
+// the cut points are kept inside that box even where the rounding error of
+// such a huge position would put them elsewhere.
 // The window's SVG clip path makes the final, exact cut.
 #pragma once
 

@@ -1,10 +1,12 @@
 #include "backend_registry.hpp"
+#include "finite_check.hpp"
 #include "thread_pool.hpp"
 
 #include <obbsat/collide.hpp>
 #include <obbsat/error.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 #include <thread>
 
@@ -89,6 +91,48 @@ const detail::method_kernels& kernels_of(backend ran, const collide_options& opt
     return detail::kernels_for(ran).of(options.test);
 }
 
+/// True iff no coordinate of rects[begin, end) is a NaN or an infinity: a float
+/// is non-finite exactly when its exponent bits are all ones, and adding one to
+/// that exponent then carries into the top bit. Branch-free, so it vectorises.
+bool all_finite(const rect* rects, std::size_t begin, std::size_t end) {
+    constexpr std::size_t floats_per_rect = sizeof(rect) / sizeof(float);
+    static_assert(floats_per_rect == coord_count, "a rect is eight packed floats");
+    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(rects + begin);
+    const std::size_t floats = (end - begin) * floats_per_rect;
+    std::uint32_t carried = 0;
+    for (std::size_t i = 0; i < floats; ++i) {
+        std::uint32_t bits;
+        std::memcpy(&bits, bytes + i * sizeof(float), sizeof(float));
+        carried |= (bits & 0x7f800000u) + 0x00800000u;
+    }
+    return (carried & 0x80000000u) == 0;
+}
+
+/// Throws invalid_input naming the first non-finite coordinate of rects[0, count).
+/// The scan is split like a batch (a rectangle costs about as much to scan as
+/// a pair to decide would to fetch); only on failure is the offender searched.
+void require_all_finite(const rect* rects, std::size_t count, const collide_options& options) {
+    const std::size_t parts = parts_for(count, options.threads);
+    bool finite = true;
+    if (parts <= 1) {
+        finite = all_finite(rects, 0, count);
+    } else {
+        const std::size_t per_part = (count + parts - 1) / parts;
+        std::vector<unsigned char> part_finite(parts, 1);
+        detail::thread_pool::shared().run(parts, [&](std::size_t part) {
+            const std::size_t begin = std::min(count, part * per_part);
+            const std::size_t end = std::min(count, begin + per_part);
+            part_finite[part] = all_finite(rects, begin, end) ? 1 : 0;
+        });
+        finite = std::find(part_finite.begin(), part_finite.end(), 0) == part_finite.end();
+    }
+    if (!finite) {
+        for (std::size_t i = 0; i < count; ++i) {
+            detail::require_finite(rects[i], i);
+        }
+    }
+}
+
 }  // namespace
 
 backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
@@ -111,6 +155,18 @@ backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::s
     const rect* records = rects.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(records, pairs + begin, end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+backend collide_pairs(const rect* rects, std::size_t rect_count, const pair_index* pairs,
+                      std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+    const backend ran = resolve_backend(options.use);
+    require_all_finite(rects, rect_count, options);
+    check_indices(rect_count, pairs, count);
+    const detail::indexed_records_fn kernel = kernels_of(ran, options).indexed_records;
+    split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
+        return kernel(rects, pairs + begin, end - begin, verdicts + begin);
     });
     return ran;
 }

@@ -220,6 +220,9 @@ TEST(collide_api, a_test_value_that_names_no_method_is_refused_and_nothing_is_wr
                 << what;
             EXPECT_THROW(obbsat::collide_pairs(records, pairs.data(), pairs.size(), verdicts.data(), options),
                          obbsat::invalid_input);
+            EXPECT_THROW(obbsat::collide_pairs(records.data(), records.size(), pairs.data(), pairs.size(),
+                                               verdicts.data(), options),
+                         obbsat::invalid_input);
             EXPECT_THROW(obbsat::collide_stream(rects, rects, verdicts.data(), options), obbsat::invalid_input);
             EXPECT_THROW((void)obbsat::colliding_pairs(records, pairs, options), obbsat::invalid_input);
             EXPECT_TRUE(untouched(verdicts));

@@ -35,6 +35,15 @@ struct collide_options {
 backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options = {});
 
+/// collide_pairs over `rect_count` packed records in the caller's memory
+/// (rect_records' layout, 32 bytes each, at least 4-byte aligned), read in
+/// place and never kept: for stores owned by another language or a mapped file.
+/// Checks every coordinate finite first (one pass over the rectangles), then
+/// every index; throws invalid_input naming the first offending rectangle and
+/// coordinate, or pair and index; nothing is written then.
+backend collide_pairs(const rect* rects, std::size_t rect_count, const pair_index* pairs,
+                      std::size_t count, std::uint8_t* verdicts, const collide_options& options = {});
+
 /// The verdicts of collide_pairs over packed records, one byte (0 or 1) per pair.
 std::vector<std::uint8_t> collide_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
                                         const collide_options& options = {});

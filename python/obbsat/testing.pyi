@@ -1,0 +1,6 @@
+import numpy as np
+import numpy.typing as npt
+
+def make_scene(
+    rects: int = ..., pairs: int = ..., density: str = ..., seed: int = ...
+) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.uint32]]: ...

@@ -1,0 +1,328 @@
+// obbsat._core: the compiled half of the Python module. It takes numpy arrays
+// whose memory already has the library's layout (the package's __init__.py
+// converts anything else, once, before calling here), checks that layout
+// again, releases the GIL and calls the C++ entry points. Shapes, dtypes and
+// names are the Python layer's business; this file only refuses what would be
+// unsafe to read or write.
+//
+// Errors: obbsat::invalid_input becomes IndexError when it names a pair (an
+// index out of range) and ValueError otherwise (a non-finite coordinate,
+// batches of unequal length); obbsat::unsupported_backend becomes
+// obbsat.UnsupportedBackendError, a ValueError. Nothing is written then.
+#include <obbsat/backend.hpp>
+#include <obbsat/collide.hpp>
+#include <obbsat/error.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_records.hpp>
+#include <obbsat/rect_soa.hpp>
+#include <obbsat/scene.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+static_assert(sizeof(obbsat::rect) == 8 * sizeof(float), "a rect is eight packed floats");
+static_assert(sizeof(obbsat::pair_index) == 2 * sizeof(std::uint32_t), "a pair is two packed uint32");
+
+obbsat::method method_named(const std::string& name) {
+    const auto m = obbsat::parse_method(name);
+    if (!m) {
+        std::string known;
+        for (const obbsat::method each : obbsat::all_methods()) {
+            known += known.empty() ? "" : ", ";
+            known += obbsat::method_name(each);
+        }
+        throw py::value_error("unknown method '" + name + "' (known: " + known + ")");
+    }
+    return *m;
+}
+
+obbsat::backend backend_named(const std::string& name) {
+    const auto b = obbsat::parse_backend(name);
+    if (!b) {
+        std::string known = "auto";
+        for (const obbsat::backend each : obbsat::compiled_backends()) {
+            known += std::string(", ") + obbsat::backend_name(each);
+        }
+        throw py::value_error("unknown backend '" + name + "' (known: " + known + ")");
+    }
+    return *b;
+}
+
+obbsat::collide_options options_of(const std::string& method, const std::string& backend, long threads) {
+    if (threads < 0) {
+        throw py::value_error("threads must be >= 0 (0 means every core), not " + std::to_string(threads));
+    }
+    obbsat::collide_options options;
+    options.test = method_named(method);
+    options.use = backend_named(backend);
+    options.threads = static_cast<unsigned>(threads);
+    return options;
+}
+
+bool is_c_contiguous(const py::array& a) {
+    return (a.flags() & py::array::c_style) != 0;
+}
+
+/// True iff the elements of `a` are T in native byte order.
+template <class T>
+bool holds(const py::array& a) {
+    return py::isinstance<py::array_t<T>>(a);
+}
+
+/// The rectangles of `a`, read in place: float32, native order, C-contiguous,
+/// eight floats per row (shape (N, 8) or (N, 4, 2)).
+std::pair<const obbsat::rect*, std::size_t> corners_in_place(const py::array& a, const char* what) {
+    const bool shape_ok = (a.ndim() == 2 && a.shape(1) == 8) ||
+                          (a.ndim() == 3 && a.shape(1) == 4 && a.shape(2) == 2);
+    if (!shape_ok || !holds<float>(a) || !is_c_contiguous(a)) {
+        throw py::type_error(std::string(what) +
+                             ": expected a C-contiguous float32 array of shape (N, 8) or (N, 4, 2)");
+    }
+    return {static_cast<const obbsat::rect*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+}
+
+/// The pairs of `a`, read in place: uint32, native order, C-contiguous, shape (M, 2).
+std::pair<const obbsat::pair_index*, std::size_t> pairs_in_place(const py::array& a) {
+    if (a.ndim() != 2 || a.shape(1) != 2 || !holds<std::uint32_t>(a) ||
+        !is_c_contiguous(a)) {
+        throw py::type_error("pairs: expected a C-contiguous uint32 array of shape (M, 2)");
+    }
+    return {static_cast<const obbsat::pair_index*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+}
+
+/// The verdict bytes of `out`: one byte per item (uint8 or bool), C-contiguous, writable, `count` long.
+std::uint8_t* verdicts_in_place(py::array& out, std::size_t count) {
+    if (out.ndim() != 1 || out.itemsize() != 1 || (out.dtype().kind() != 'u' && out.dtype().kind() != 'b') ||
+        !is_c_contiguous(out) || !out.writeable()) {
+        throw py::type_error("out: expected a writable, C-contiguous 1-D array of dtype bool or uint8");
+    }
+    if (static_cast<std::size_t>(out.shape(0)) != count) {
+        throw py::value_error("out: holds " + std::to_string(out.shape(0)) + " verdicts, " +
+                              std::to_string(count) + " needed");
+    }
+    return static_cast<std::uint8_t*>(out.mutable_data());
+}
+
+/// Runs `call` without the GIL, turning the library's exceptions into Python's.
+template <class Call>
+obbsat::backend without_gil(const Call& call) {
+    std::string invalid;
+    std::string unsupported;
+    obbsat::backend ran = obbsat::backend::automatic;
+    {
+        py::gil_scoped_release release;
+        try {
+            ran = call();
+        } catch (const obbsat::invalid_input& e) {
+            invalid = e.what();
+        } catch (const obbsat::unsupported_backend& e) {
+            unsupported = e.what();
+        }
+    }
+    if (!unsupported.empty()) {
+        throw obbsat::unsupported_backend(unsupported);
+    }
+    if (!invalid.empty()) {
+        if (invalid.rfind("pair ", 0) == 0) {
+            throw py::index_error(invalid);
+        }
+        throw py::value_error(invalid);
+    }
+    return ran;
+}
+
+std::string collide_records(const py::array& rects, const py::array& pairs, py::array& out,
+                            const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [records, rect_count] = corners_in_place(rects, "rects");
+    const auto [pair_list, count] = pairs_in_place(pairs);
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    const obbsat::backend ran = without_gil([&, records = records, rect_count = rect_count,
+                                             pair_list = pair_list, count = count] {
+        return obbsat::collide_pairs(records, rect_count, pair_list, count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// collide_records over a prepared store: its coordinates were checked when
+/// it was built, so the call reads only the pairs before deciding them.
+std::string collide_store(const obbsat::rect_records& store, const py::array& pairs, py::array& out,
+                          const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [pair_list, count] = pairs_in_place(pairs);
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
+        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// A rect_records store holding a checked copy of `corners` (float32 (N, 8), read in place).
+obbsat::rect_records records_of(const py::array& corners) {
+    const auto [rects, count] = corners_in_place(corners, "rects");
+    obbsat::rect_records store;
+    without_gil([&, rects = rects, count = count] {
+        store = obbsat::rect_records(rects, count);
+        return obbsat::backend::automatic;
+    });
+    return store;
+}
+
+/// The records of `store` as a read-only float32 (N, 8) array over its memory, kept alive by `owner`.
+py::array corners_view(const obbsat::rect_records& store, py::handle owner) {
+    py::array_t<float> view({static_cast<py::ssize_t>(store.size()), py::ssize_t{8}},
+                            reinterpret_cast<const float*>(store.data()), owner);
+    view.attr("setflags")(py::arg("write") = false);
+    return std::move(view);
+}
+
+/// A structure-of-arrays copy of a batch; the error names the batch.
+obbsat::rect_soa soa_copy(const obbsat::rect* rects, std::size_t count, const char* what) {
+    try {
+        return obbsat::rect_soa(rects, count);
+    } catch (const obbsat::invalid_input& e) {
+        throw obbsat::invalid_input(std::string(what) + ": " + e.what());
+    }
+}
+
+std::string collide_stream(const py::array& a, const py::array& b, py::array& out,
+                           const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [rects_a, count_a] = corners_in_place(a, "a");
+    const auto [rects_b, count_b] = corners_in_place(b, "b");
+    if (count_a != count_b) {
+        throw py::value_error("stream batches differ in length: " + std::to_string(count_a) +
+                              " rectangles in a, " + std::to_string(count_b) + " in b");
+    }
+    std::uint8_t* verdicts = verdicts_in_place(out, count_a);
+    const obbsat::backend ran = without_gil([&, rects_a = rects_a, rects_b = rects_b,
+                                             count_a = count_a, count_b = count_b] {
+        const obbsat::rect_soa soa_a = soa_copy(rects_a, count_a, "a");
+        const obbsat::rect_soa soa_b = soa_copy(rects_b, count_b, "b");
+        return obbsat::collide_stream(soa_a, soa_b, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+std::vector<std::string> runnable_backends() {
+    std::vector<std::string> names;
+    for (const obbsat::backend b : obbsat::compiled_backends()) {
+        if (obbsat::cpu_supports(b)) {
+            names.emplace_back(obbsat::backend_name(b));
+        }
+    }
+    return names;
+}
+
+std::vector<std::string> compiled_backend_names() {
+    std::vector<std::string> names;
+    for (const obbsat::backend b : obbsat::compiled_backends()) {
+        names.emplace_back(obbsat::backend_name(b));
+    }
+    return names;
+}
+
+std::vector<std::string> method_names() {
+    std::vector<std::string> names;
+    for (const obbsat::method m : obbsat::all_methods()) {
+        names.emplace_back(obbsat::method_name(m));
+    }
+    return names;
+}
+
+std::string resolved_backend(const std::string& name) {
+    const obbsat::backend requested = backend_named(name);
+    return obbsat::backend_name(obbsat::resolve_backend(requested));
+}
+
+py::tuple make_scene(std::size_t rects, std::size_t pairs, const std::string& density, std::uint64_t seed) {
+    obbsat::scene_density d;
+    if (density == "sparse") {
+        d = obbsat::scene_density::sparse;
+    } else if (density == "typical") {
+        d = obbsat::scene_density::typical;
+    } else if (density == "dense") {
+        d = obbsat::scene_density::dense;
+    } else {
+        throw py::value_error("unknown density '" + density + "' (known: sparse, typical, dense)");
+    }
+    obbsat::scene s;
+    {
+        py::gil_scoped_release release;
+        s = obbsat::make_scene(obbsat::scene_spec_for(d, rects, pairs, seed));
+    }
+    const std::size_t n = s.rects.size();
+    py::array_t<float> corners({static_cast<py::ssize_t>(n), py::ssize_t{8}});
+    float* c = corners.mutable_data();
+    for (std::size_t i = 0; i < n; ++i) {
+        const obbsat::rect r = s.rects[i];
+        std::memcpy(c + 8 * i, &r, sizeof r);
+    }
+    py::array_t<std::uint32_t> pair_array({static_cast<py::ssize_t>(s.pairs.size()), py::ssize_t{2}});
+    if (!s.pairs.empty()) {
+        std::memcpy(pair_array.mutable_data(), s.pairs.data(), s.pairs.size() * sizeof(obbsat::pair_index));
+    }
+    return py::make_tuple(corners, pair_array);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "obbsat's compiled entry points; use the obbsat package, which checks and converts arguments.";
+    py::register_exception<obbsat::unsupported_backend>(m, "UnsupportedBackendError", PyExc_ValueError);
+
+    m.def("collide_records", &collide_records, py::arg("rects"), py::arg("pairs"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over rectangles read in place (float32 (N, 8), uint32 (M, 2), out uint8/bool (M,)); "
+          "returns the backend that ran.");
+    py::class_<obbsat::rect_records>(m, "RectRecords",
+                                     "Rectangles as packed 32-byte records, copied and checked once.")
+        .def(py::init(&records_of), py::arg("corners"),
+             "A checked copy of float32 (N, 8) corners (ValueError naming a non-finite coordinate).")
+        .def("__len__", &obbsat::rect_records::size)
+        .def_property_readonly(
+            "corners", [](py::object self) { return corners_view(self.cast<const obbsat::rect_records&>(), self); },
+            "The records as a read-only float32 (N, 8) array over the store's own memory.")
+        .def(py::pickle(
+            [](const obbsat::rect_records& store) {
+                py::array_t<float> copy({static_cast<py::ssize_t>(store.size()), py::ssize_t{8}});
+                if (store.size() != 0) {
+                    std::memcpy(copy.mutable_data(), store.data(), store.size() * sizeof(obbsat::rect));
+                }
+                return py::make_tuple(copy);
+            },
+            [](const py::tuple& state) {
+                if (state.size() != 1) {
+                    throw py::value_error("RectRecords: bad pickled state");
+                }
+                return records_of(state[0].cast<py::array>());
+            }));
+    m.def("collide_store", &collide_store, py::arg("store"), py::arg("pairs"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over a RectRecords store; returns the backend that ran.");
+    m.def("collide_stream", &collide_stream, py::arg("a"), py::arg("b"), py::arg("out"), py::arg("method"),
+          py::arg("backend"), py::arg("threads"),
+          "Verdicts of a[i] against b[i] (float32 (N, 8) each, copied to the structure-of-arrays store); "
+          "returns the backend that ran.");
+    m.def("runnable_backends", &runnable_backends, "Backends this build and CPU run, best first.");
+    m.def("compiled_backends", &compiled_backend_names, "Backends compiled into this build, best first.");
+    m.def("methods", &method_names, "Every method, in the library's order.");
+    m.def("resolved_backend", &resolved_backend, py::arg("name"),
+          "The backend a request resolves to here (OBBSAT_BACKEND applies to 'auto').");
+    m.def("make_scene", &make_scene, py::arg("rects"), py::arg("pairs"), py::arg("density"), py::arg("seed"),
+          "The library's seeded benchmark scene: (float32 (N, 8) corners, uint32 (M, 2) pairs).");
+    m.attr("__version__") = OBBSAT_VERSION_STRING;
+}

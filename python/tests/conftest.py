@@ -1,0 +1,58 @@
+"""Shared helpers of the obbsat Python tests."""
+
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import obbsat
+
+
+def pytest_report_header(config):
+    return f"obbsat {obbsat.__version__} from {pathlib.Path(obbsat.__file__).parent}; backends {obbsat.backends()}"
+
+
+@pytest.fixture(scope="session", autouse=True)
+def installed_package():
+    """Under CTest the package must come from the install prefix, not from a source or build folder."""
+    prefix = os.environ.get("OBBSAT_EXPECT_PACKAGE_UNDER")
+    if prefix:
+        here = pathlib.Path(obbsat.__file__).resolve()
+        assert pathlib.Path(prefix).resolve() in here.parents, f"obbsat imported from {here}, not from {prefix}"
+
+
+def random_rects(rng, n, spread=20.0):
+    """n random rotated rectangles as float32 (n, 8) corners, centers in a square of side `spread`."""
+    centers = rng.uniform(-spread / 2, spread / 2, size=(n, 1, 2))
+    half = rng.uniform(0.1, 3.0, size=(n, 1, 2))
+    angle = rng.uniform(0, 2 * np.pi, size=(n, 1))
+    unit = np.array([[-1, 1], [1, 1], [1, -1], [-1, -1]], dtype=np.float64)
+    local = unit[None, :, :] * half
+    c, s = np.cos(angle), np.sin(angle)
+    x = c * local[..., 0] - s * local[..., 1]
+    y = s * local[..., 0] + c * local[..., 1]
+    corners = np.stack([x, y], axis=-1) + centers
+    return corners.reshape(n, 8).astype(np.float32)
+
+
+def random_pairs(rng, n, m):
+    return rng.integers(0, n, size=(m, 2)).astype(np.uint32)
+
+
+def read_case(folder):
+    """rects (float32 (N, 8)), pairs (uint32 (M, 2)) and truth (bool (M,)) of a labelled case folder."""
+    rects = []
+    for line in (folder / "rects.csv").read_text().splitlines():
+        if line and not line.startswith("#"):
+            rects.append([float.fromhex(v) for v in line.split(",")])
+    pairs = np.loadtxt(folder / "pairs.csv", delimiter=",", dtype=np.uint32, comments="#", ndmin=2)
+    truth = np.array([c == "1" for c in (folder / "truth.txt").read_text().split()])
+    return np.array(rects, dtype=np.float32), pairs, truth
+
+
+def shared_case_folders():
+    root = os.environ.get("OBBSAT_SHARED_CASES")
+    if not root or not pathlib.Path(root).is_dir():
+        return []
+    return sorted(p for p in pathlib.Path(root).iterdir() if (p / "pairs.csv").exists())

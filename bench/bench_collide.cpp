@@ -189,7 +189,7 @@ void register_collide_benchmarks(std::ostream& skipped) {
     // the 4K threads:2 rows show that choice rather than a second core.
     const unsigned thread_counts[] = {1, 2};
 
-    for (const obbsat::method test : obbsat::all_methods()) {
+    for (const obbsat::method test : obbsat::methods_on(obbsat::store_kind::corners)) {
         for (const batch_mode mode : modes) {
             for (const obbsat::backend use : runnable) {
                 for (const std::size_t pairs : grid_sizes) {

@@ -10,6 +10,9 @@
 #include "fused_multiply_add.hpp"
 #include "kernel_table.hpp"
 #include "method_catalogue.hpp"
+#include "pose_batch.hpp"
+#include "pose_corner_lanes.hpp"
+#include "pose_lanes.hpp"
 #include "sat4_centered_lanes.hpp"
 #include "sat4_double_lanes.hpp"
 #include "sat4_lanes.hpp"
@@ -45,20 +48,41 @@ void fused_multiply_add_lanes(const float* x, const float* y, const float* z, st
     }
 }
 
-/// The entry points of one catalogue row, instantiated for this ISA.
+/// The entry points of one catalogue row on corners, instantiated for this ISA.
 template <class Row>
 constexpr method_kernels kernels_of_row() {
     using corners = typename Row::corners;
-    static_assert(corners::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
-                  "a method's lanes and its catalogue row agree on the slow path");
-    return method_kernels{stream_batch<isa_arch, corners::template lanes>,
-                          indexed_batch<isa_arch, corners::template lanes>,
-                          indexed_records_batch<isa_arch, corners::template lanes>};
+    if constexpr (offered<corners>) {
+        static_assert(corners::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
+                      "a method's lanes and its catalogue row agree on the slow path");
+        return method_kernels{stream_batch<isa_arch, corners::template lanes>,
+                              indexed_batch<isa_arch, corners::template lanes>,
+                              indexed_records_batch<isa_arch, corners::template lanes>};
+    } else {
+        return method_kernels{nullptr, nullptr, nullptr};
+    }
+}
+
+/// The entry points of one catalogue row on poses, instantiated for this ISA.
+template <class Row>
+constexpr pose_method_kernels pose_kernels_of_row() {
+    using poses = typename Row::poses;
+    if constexpr (offered<poses>) {
+        static_assert(poses::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
+                      "a method's lanes and its catalogue row agree on the slow path");
+        return pose_method_kernels{pose_stream_batch<isa_arch, poses::template lanes>,
+                                   pose_indexed_batch<isa_arch, poses::template lanes>};
+    } else {
+        return pose_method_kernels{nullptr, nullptr};
+    }
 }
 
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
-    return kernel_table{{kernels_of_row<Rows>()...}, fused_multiply_add_lanes};
+    return kernel_table{{kernels_of_row<Rows>()...},
+                        {pose_kernels_of_row<Rows>()...},
+                        fused_multiply_add_lanes,
+                        pose_corners_batch<isa_arch>};
 }
 
 }  // namespace

@@ -83,12 +83,34 @@ void check_indices(std::size_t rect_count, const pair_index* pairs, std::size_t 
 
 /// The entry points of options.test on backend `ran`; throws invalid_input
 /// when options.test holds a value that names no method.
-const detail::method_kernels& kernels_of(backend ran, const collide_options& options) {
+/// Throws invalid_input unless options.test names a method that runs on `store`.
+void require_method_on(const collide_options& options, store_kind store) {
     if (!is_method(options.test)) {
         throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
                             ", which names no method");
     }
+    if (!runs_on(options.test, store)) {
+        std::string offered;
+        for (const method m : methods_on(store)) {
+            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
+        }
+        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on " +
+                            store_name(store) + " (" + (store == store_kind::poses ? "pose_records" : "rect stores") +
+                            " take " + offered + ")");
+    }
+}
+
+/// The entry points of options.test on corners on backend `ran`; throws
+/// invalid_input when options.test names no method that runs on corners.
+const detail::method_kernels& kernels_of(backend ran, const collide_options& options) {
+    require_method_on(options, store_kind::corners);
     return detail::kernels_for(ran).of(options.test);
+}
+
+/// The same on poses.
+const detail::pose_method_kernels& pose_kernels_of(backend ran, const collide_options& options) {
+    require_method_on(options, store_kind::poses);
+    return detail::kernels_for(ran).on_poses(options.test);
 }
 
 /// True iff no coordinate of rects[begin, end) is a NaN or an infinity: a float
@@ -229,6 +251,52 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
 }
 
 std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
+                                         const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
+}
+
+backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options) {
+    const backend ran = resolve_backend(options.use);
+    const detail::pose_indexed_fn kernel = pose_kernels_of(ran, options).indexed;
+    check_indices(poses.size(), pairs, count);
+    const float* records = poses.data();
+    split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
+        return kernel(records, pairs + begin, end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+std::vector<std::uint8_t> collide_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    return verdicts_of(poses, pairs, options);
+}
+
+std::vector<pair_index> colliding_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    return hits_of(poses, pairs, options);
+}
+
+backend collide_stream(const pose_records& a, const pose_records& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    if (a.size() != b.size()) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) + " poses in A, " +
+                            std::to_string(b.size()) + " in B");
+    }
+    const backend ran = resolve_backend(options.use);
+    const detail::pose_stream_fn kernel = pose_kernels_of(ran, options).stream;
+    const float* ra = a.data();
+    const float* rb = b.data();
+    constexpr std::size_t floats = pose_records::record_floats;
+    split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
+        return kernel(ra + floats * begin, rb + floats * begin, end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+std::vector<std::uint8_t> collide_stream(const pose_records& a, const pose_records& b,
                                          const collide_options& options) {
     std::vector<std::uint8_t> verdicts(a.size());
     collide_stream(a, b, verdicts.data(), options);

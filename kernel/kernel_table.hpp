@@ -36,19 +36,44 @@ using indexed_records_fn = std::size_t (*)(const rect* records, const pair_index
 using fused_multiply_add_fn = void (*)(const float* x, const float* y, const float* z, std::size_t count,
                                        float* out);
 
-/// One method's entry points on one backend.
+/// verdicts[i] = method(a[i], b[i]) for i < count over 32-byte pose records
+/// (pose_records' layout).
+using pose_stream_fn = std::size_t (*)(const float* a, const float* b, std::size_t count,
+                                       std::uint8_t* verdicts);
+
+/// verdicts[i] = method(records[pairs[i].a], records[pairs[i].b]) for i < count
+/// over 32-byte pose records; every index must be in range (the caller checks).
+using pose_indexed_fn = std::size_t (*)(const float* records, const pair_index* pairs, std::size_t count,
+                                        std::uint8_t* verdicts);
+
+/// out[i] = ref::corners_of(pose i) for i < count over 32-byte pose records.
+using pose_corners_fn = void (*)(const float* records, std::size_t count, rect* out);
+
+/// One method's entry points on the corner stores of one backend; all null
+/// when the method does not run on corners.
 struct method_kernels {
     stream_fn stream;
     indexed_fn indexed;
     indexed_records_fn indexed_records;
 };
 
-struct kernel_table {
-    method_kernels methods[method_count];  ///< row k is obbsat::method k (method_catalogue.hpp)
-    fused_multiply_add_fn fused_multiply_add;
+/// One method's entry points on the pose store of one backend; all null when
+/// the method does not run on poses.
+struct pose_method_kernels {
+    pose_stream_fn stream;
+    pose_indexed_fn indexed;
+};
 
-    /// The entry points of `m`, which the caller has checked with is_method.
+struct kernel_table {
+    method_kernels methods[method_count];            ///< row k is obbsat::method k (method_catalogue.hpp)
+    pose_method_kernels pose_methods[method_count];  ///< the same rows, on poses
+    fused_multiply_add_fn fused_multiply_add;
+    pose_corners_fn pose_corners;
+
+    /// The entry points of `m` on corners; the caller has checked is_method.
     const method_kernels& of(method m) const { return methods[static_cast<unsigned>(m)]; }
+    /// The entry points of `m` on poses; the caller has checked is_method.
+    const pose_method_kernels& on_poses(method m) const { return pose_methods[static_cast<unsigned>(m)]; }
 };
 
 /// The table of one backend of backend_catalogue.hpp: defined by

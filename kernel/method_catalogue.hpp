@@ -7,7 +7,8 @@
 // (method.cpp). The static_asserts at the end tie row k to obbsat::method k.
 //
 // Adding a method: its enumerator in obbsat/method.hpp, its scalar reference
-// in scalar_ref/, its lane template in kernel/, and one row here.
+// in scalar_ref/, its lane template in kernel/, and one row here. A method
+// that does not run on a store says so with not_offered for it.
 //
 // The rows live in an unnamed namespace, as the lane templates they name do:
 // this header is compiled into one translation unit per instruction set.
@@ -18,11 +19,14 @@
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/ref/conservative.hpp>
+#include <obbsat/ref/local.hpp>
+#include <obbsat/ref/pose_conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>
 
 #include <cstddef>
+#include <type_traits>
 
 namespace obbsat::detail {
 namespace {
@@ -40,6 +44,10 @@ template <class Arch>
 struct conservative_lanes;
 template <class Arch>
 struct exact_lanes;
+template <class Arch>
+struct local_lanes;
+template <class Arch>
+struct pose_conservative_lanes;
 
 /// How a method runs on the corner stores (rect_soa, rect_records): its
 /// scalar reference (the definition every backend reproduces) and its lanes.
@@ -50,12 +58,28 @@ struct on_corners {
     using lanes = Lanes<Arch>;
 };
 
+/// How a method runs on the pose store (pose_records): its scalar reference
+/// and its lanes over pose_lanes.
+template <pose_reference_fn Reference, template <class> class Lanes>
+struct on_poses {
+    static constexpr pose_reference_fn reference = Reference;
+    template <class Arch>
+    using lanes = Lanes<Arch>;
+};
+
+/// The method does not run on this store; asking for it there is refused.
+struct not_offered {};
+
+template <class Store>
+constexpr bool offered = !std::is_same<Store, not_offered>::value;
+
 struct sat4_row {
     static constexpr method id = method::sat4;
     static constexpr const char* name = "sat4";
     static constexpr method_guarantee guarantee = method_guarantee::none;
     static constexpr bool has_slow_path = false;
     using corners = on_corners<ref::sat4, sat4_lanes>;
+    using poses = not_offered;
 };
 
 struct sat4_centered_row {
@@ -64,6 +88,7 @@ struct sat4_centered_row {
     static constexpr method_guarantee guarantee = method_guarantee::none;
     static constexpr bool has_slow_path = false;
     using corners = on_corners<ref::sat4_centered, sat4_centered_lanes>;
+    using poses = not_offered;
 };
 
 struct sat4_double_row {
@@ -72,6 +97,7 @@ struct sat4_double_row {
     static constexpr method_guarantee guarantee = method_guarantee::none;
     static constexpr bool has_slow_path = false;
     using corners = on_corners<ref::sat4_double, sat4_double_lanes>;
+    using poses = not_offered;
 };
 
 struct conservative_row {
@@ -80,6 +106,7 @@ struct conservative_row {
     static constexpr method_guarantee guarantee = method_guarantee::no_false_negatives;
     static constexpr bool has_slow_path = false;
     using corners = on_corners<ref::conservative, conservative_lanes>;
+    using poses = on_poses<ref::conservative, pose_conservative_lanes>;
 };
 
 struct exact_row {
@@ -88,10 +115,21 @@ struct exact_row {
     static constexpr method_guarantee guarantee = method_guarantee::exact;
     static constexpr bool has_slow_path = true;
     using corners = on_corners<oracle::intersects, exact_lanes>;
+    using poses = not_offered;
+};
+
+struct local_row {
+    static constexpr method id = method::local;
+    static constexpr const char* name = "local";
+    static constexpr method_guarantee guarantee = method_guarantee::none;
+    static constexpr bool has_slow_path = false;
+    using corners = not_offered;
+    using poses = on_poses<ref::local, local_lanes>;
 };
 
 /// Every method, in the order of obbsat::method.
-using method_catalogue = type_list<sat4_row, sat4_centered_row, sat4_double_row, conservative_row, exact_row>;
+using method_catalogue =
+    type_list<sat4_row, sat4_centered_row, sat4_double_row, conservative_row, exact_row, local_row>;
 
 constexpr bool rows_follow_enum_order() {
     constexpr auto ids = method_catalogue::map([](auto row) { return decltype(row)::id; });

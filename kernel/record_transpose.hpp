@@ -18,6 +18,7 @@
 #include <obbsat/rect.hpp>
 
 #include <type_traits>
+#include <utility>
 
 namespace obbsat::detail {
 namespace {
@@ -112,6 +113,44 @@ struct record_transpose {
                 hi[k] = _mm_loadu_ps(half(k, 1));
             }
         }
+    }
+
+    /// Stores 128-bit block `Block` of `r` to `out` (four floats, any alignment).
+    template <unsigned Block>
+    static void store_block(reg r, float* out) {
+        if constexpr (width == 16) {
+#ifdef __AVX512F__
+            _mm_storeu_ps(out, _mm512_extractf32x4_ps(r, Block));
+#endif
+        } else if constexpr (width == 8) {
+#ifdef __AVX__
+            _mm_storeu_ps(out, Block == 0 ? _mm256_castps256_ps128(r) : _mm256_extractf128_ps(r, Block & 1));
+#endif
+        } else {
+            _mm_storeu_ps(out, r);
+        }
+    }
+
+    /// Writes halves `half` (0: values 0..3, 1: values 4..7) of the records
+    /// from four coordinate vectors: the 4x4 transpose is its own inverse.
+    template <class Put, unsigned... Blocks>
+    static void store_half(const lanes<Arch> c[4], unsigned half, const Put& put,
+                           std::integer_sequence<unsigned, Blocks...>) {
+        const reg in[4] = {c[0], c[1], c[2], c[3]};
+        lanes<Arch> r[4];
+        transpose4(in, r);
+        for (std::size_t k = 0; k < 4; ++k) {
+            (store_block<Blocks>(r[k], put(k + 4 * Blocks) + 4 * half), ...);
+        }
+    }
+
+    /// The inverse of load: writes lane i of the eight coordinate vectors `q`
+    /// as the eight floats at put(i) (a float*), for every lane.
+    template <class Put>
+    static void store(const quad_lanes<Arch>& q, const Put& put) {
+        using blocks = std::make_integer_sequence<unsigned, width / 4>;
+        store_half(q.c, 0, put, blocks{});
+        store_half(q.c + 4, 1, put, blocks{});
     }
 
     /// The rectangles pick(0) .. pick(width - 1) as quad_lanes, lane i from pick(i).

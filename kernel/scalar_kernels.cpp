@@ -4,6 +4,8 @@
 #include "kernel_table.hpp"
 #include "method_catalogue.hpp"
 
+#include <obbsat/ref/pose_corners.hpp>
+
 #include <cmath>
 
 namespace obbsat::detail {
@@ -43,6 +45,34 @@ std::size_t indexed_records(const rect* records, const pair_index* pairs, std::s
     return exact_count<SlowPath>(count);
 }
 
+rect_pose pose_record_at(const float* records, std::size_t index) {
+    const float* v = records + 8 * index;
+    return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}};
+}
+
+template <pose_reference_fn Reference, bool SlowPath>
+std::size_t pose_stream_pairs(const float* a, const float* b, std::size_t count, std::uint8_t* verdicts) {
+    for (std::size_t i = 0; i < count; ++i) {
+        verdicts[i] = Reference(pose_record_at(a, i), pose_record_at(b, i)) ? 1 : 0;
+    }
+    return exact_count<SlowPath>(count);
+}
+
+template <pose_reference_fn Reference, bool SlowPath>
+std::size_t pose_indexed_pairs(const float* records, const pair_index* pairs, std::size_t count,
+                               std::uint8_t* verdicts) {
+    for (std::size_t i = 0; i < count; ++i) {
+        verdicts[i] = Reference(pose_record_at(records, pairs[i].a), pose_record_at(records, pairs[i].b)) ? 1 : 0;
+    }
+    return exact_count<SlowPath>(count);
+}
+
+void pose_corners(const float* records, std::size_t count, rect* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = ref::corners_of(pose_record_at(records, i));
+    }
+}
+
 void fused_multiply_add(const float* x, const float* y, const float* z, std::size_t count, float* out) {
     for (std::size_t i = 0; i < count; ++i) {
         out[i] = std::fma(x[i], y[i], z[i]);
@@ -51,14 +81,31 @@ void fused_multiply_add(const float* x, const float* y, const float* z, std::siz
 
 template <class Row>
 constexpr method_kernels kernels_of_row() {
-    constexpr reference_fn reference = Row::corners::reference;
-    return method_kernels{stream_pairs<reference, Row::has_slow_path>, indexed_pairs<reference, Row::has_slow_path>,
-                          indexed_records<reference, Row::has_slow_path>};
+    if constexpr (offered<typename Row::corners>) {
+        constexpr reference_fn reference = Row::corners::reference;
+        return method_kernels{stream_pairs<reference, Row::has_slow_path>,
+                              indexed_pairs<reference, Row::has_slow_path>,
+                              indexed_records<reference, Row::has_slow_path>};
+    } else {
+        return method_kernels{nullptr, nullptr, nullptr};
+    }
+}
+
+template <class Row>
+constexpr pose_method_kernels pose_kernels_of_row() {
+    if constexpr (offered<typename Row::poses>) {
+        constexpr pose_reference_fn reference = Row::poses::reference;
+        return pose_method_kernels{pose_stream_pairs<reference, Row::has_slow_path>,
+                                   pose_indexed_pairs<reference, Row::has_slow_path>};
+    } else {
+        return pose_method_kernels{nullptr, nullptr};
+    }
 }
 
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
-    return kernel_table{{kernels_of_row<Rows>()...}, fused_multiply_add};
+    return kernel_table{
+        {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners};
 }
 
 }  // namespace

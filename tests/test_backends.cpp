@@ -278,7 +278,7 @@ protected:
 };
 
 TEST(methods, every_method_has_a_reference_and_a_golden_digest_here) {
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         EXPECT_NE(obbsat::method_reference(m), nullptr) << obbsat::method_name(m);
         const bool listed = std::any_of(std::begin(golden_digests), std::end(golden_digests),
                                         [&](const golden_entry& e) { return e.test == m; });
@@ -292,7 +292,7 @@ TEST_P(backend_equivalence, forced_backend_is_the_one_that_ran) {
     const rect_records records = as_records(s.rects);
     const stream_batch stream = as_stream(s.rects, s.pairs);
     verdicts got(s.pairs.size());
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         for (const unsigned threads : {1u, 2u, 0u}) {
             SCOPED_TRACE(std::string(obbsat::method_name(m)) + ", " + std::to_string(threads) +
                          " threads");
@@ -323,7 +323,7 @@ TEST_P(backend_equivalence, ten_million_random_pairs_match_reference) {
         const stream_batch stream =
             obbsat::test_support::random_stream_batch(random, pairs_per_chunk);
         const indexed_batch indexed = scattered(stream, 2000 + chunk);
-        for (const method m : obbsat::all_methods()) {
+        for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
             if (m != method::sat4 && chunk >= chunks_for_other_methods) {
                 continue;
             }
@@ -356,7 +356,7 @@ TEST_P(backend_equivalence, hard_pairs_match_reference) {
     const pair_describer with_family = [&](std::size_t i) {
         return std::string(hard[i].family) + "\n    " + stream_describer(stream.a, stream.b)(i);
     };
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         SCOPED_TRACE(obbsat::method_name(m));
         expect_every_path_matches(m, stream, indexed, 1, with_family);
     }
@@ -371,7 +371,7 @@ TEST_P(backend_equivalence, labelled_shared_cases_match_reference) {
         const auto family = obbsat::test_support::read_case_family(*folder, name);
         const rect_soa rects(family.rects);
         const rect_records records(family.rects);
-        for (const method m : obbsat::all_methods()) {
+        for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
             SCOPED_TRACE("family " + name + ", method " + obbsat::method_name(m));
             const verdicts expected = reference_indexed(obbsat::method_reference(m), rects, family.pairs);
             verdicts got(family.pairs.size());
@@ -403,7 +403,7 @@ TEST_P(backend_equivalence, every_batch_length_up_to_three_vectors_and_one) {
             ASSERT_EQ(buffer[guard + count + k], canary) << path << " wrote past the verdicts";
         }
     };
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         const reference_fn reference = obbsat::method_reference(m);
         for (std::size_t count = 0; count <= 3 * lanes + 1; ++count) {
             for (std::size_t start = 0; start < 8; ++start) {
@@ -465,7 +465,7 @@ TEST_P(backend_equivalence, thread_counts_give_identical_verdicts) {
     ASSERT_GE(s.pairs.size(), 100000u);
     const stream_batch stream = as_stream(s.rects, s.pairs);
     const indexed_batch indexed{s.rects, as_records(s.rects), s.pairs};
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         for (const unsigned threads : {1u, 2u, 3u, 0u}) {
             SCOPED_TRACE(std::string(obbsat::method_name(m)) + ", " + std::to_string(threads) +
                          " threads");
@@ -481,7 +481,7 @@ TEST_P(backend_equivalence, golden_digests_of_scene_and_hard_pairs) {
     const stream_batch hard = as_stream(obbsat::test_support::hard_pairs());
     const indexed_batch hard_indexed = scattered(hard, 5);
     const std::size_t n_scene = s.pairs.size(), n_hard = hard.a.size();
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         SCOPED_TRACE(obbsat::method_name(m));
         const auto options = forced(m, 0);
         verdicts scene_soa(n_scene), scene_rec(n_scene), scene_str(n_scene);
@@ -511,7 +511,7 @@ INSTANTIATE_TEST_SUITE_P(every_backend, backend_equivalence,
 TEST(golden, reference_reproduces_golden_digests) {
     const obbsat::scene s = golden_scene();
     const stream_batch hard = as_stream(obbsat::test_support::hard_pairs());
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         const reference_fn reference = obbsat::method_reference(m);
         ASSERT_NE(reference, nullptr) << obbsat::method_name(m);
         const std::uint64_t digest = digest_of(reference_indexed(reference, s.rects, s.pairs),

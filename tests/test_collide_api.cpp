@@ -417,7 +417,7 @@ TEST(collide_api, slow_path_pairs_is_reported_for_exact_and_zero_otherwise) {
     const rect_records records(s.rects);
     std::vector<std::uint8_t> verdicts(s.pairs.size());
     for (const backend use : runnable_backends()) {
-        for (const obbsat::method m : obbsat::all_methods()) {
+        for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::corners)) {
             for (const unsigned threads : {1u, 0u}) {
                 SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " +
                              obbsat::method_name(m) + ", " + std::to_string(threads) + " threads");

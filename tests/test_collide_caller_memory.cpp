@@ -45,7 +45,7 @@ TEST(CollideCallerMemory, MatchesTheRecordStoreForEveryMethodBackendAndAlignment
     const std::size_t skip = (16 - reinterpret_cast<std::uintptr_t>(shifted.data()) / 4 % 16) % 16 + 1;
     std::memcpy(shifted.data() + skip, s.rects.data(), s.rects.size() * sizeof(rect));
     const rect* unaligned = reinterpret_cast<const rect*>(shifted.data() + skip);
-    for (const obbsat::method m : obbsat::all_methods()) {
+    for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         for (const obbsat::backend b : obbsat::compiled_backends()) {
             if (!obbsat::cpu_supports(b)) {
                 continue;

@@ -110,7 +110,7 @@ accuracy_report measure_accuracy(const accuracy_settings& settings, const progre
     report.settings = settings;
     report.used = best_supported_backend();
     report.cpu = cpu_model_name();
-    const std::vector<method> methods = all_methods();
+    const std::vector<method> methods = methods_on(store_kind::corners);
     for (const method m : methods) {
         method_result result;
         result.test = m;

@@ -88,7 +88,7 @@ demo_settings settings_from(const parsed_options& options) {
     }
     if (const auto v = options.value("method")) {
         if (*v == "all") {
-            s.methods = all_methods();
+            s.methods = methods_on(store_kind::corners);
         } else if (const auto m = parse_method(*v)) {
             s.methods = {*m};
         } else {

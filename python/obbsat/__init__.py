@@ -43,7 +43,7 @@ _MAX_INDEX = 2**32 - 1
 
 
 def methods():
-    """The collision tests this build offers, in the library's order.
+    """The collision tests this build offers on corner rectangles, in the library's order.
 
     >>> "sat4" in obbsat.methods()
     True

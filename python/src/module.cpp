@@ -40,7 +40,7 @@ obbsat::method method_named(const std::string& name) {
     const auto m = obbsat::parse_method(name);
     if (!m) {
         std::string known;
-        for (const obbsat::method each : obbsat::all_methods()) {
+        for (const obbsat::method each : obbsat::methods_on(obbsat::store_kind::corners)) {
             known += known.empty() ? "" : ", ";
             known += obbsat::method_name(each);
         }
@@ -237,7 +237,7 @@ std::vector<std::string> compiled_backend_names() {
 
 std::vector<std::string> method_names() {
     std::vector<std::string> names;
-    for (const obbsat::method m : obbsat::all_methods()) {
+    for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         names.emplace_back(obbsat::method_name(m));
     }
     return names;

@@ -410,7 +410,7 @@ protected:
 // What the panels say.
 
 TEST_F(draw_test, one_panel_per_pair_with_the_verdict_of_each_method_and_the_exact_class) {
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         SCOPED_TRACE(obbsat::method_name(m));
         const std::vector<panel_reading> panels = draw("0-4", obbsat::method_name(m));
         ASSERT_EQ(panels.size(), cases_.size());
@@ -526,7 +526,7 @@ TEST_F(draw_test, coordinates_stay_small_and_finite_for_huge_tiny_and_degenerate
     }
     write_file(s_.file("rects.csv"), text);
     write_file(s_.file("pairs.csv"), "0,1\n2,3\n4,5\n6,7\n8,9\n1,0\n10,11\n");
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         SCOPED_TRACE(obbsat::method_name(m));
         const std::vector<panel_reading> panels = draw("0-6", obbsat::method_name(m));
         ASSERT_EQ(panels.size(), 7u);
@@ -583,7 +583,7 @@ TEST(draw_any_corners, degenerate_self_crossing_and_extreme_quads_draw_with_fini
     const scratch s;
     write_file(s.file("rects.csv"), rect_text);
     write_file(s.file("pairs.csv"), pair_text);
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         SCOPED_TRACE(obbsat::method_name(m));
         const run_result r = s.run("draw --rects rects.csv --pairs pairs.csv --select 0-" +
                                    std::to_string(pairs - 1) + " --method " + obbsat::method_name(m) +

@@ -378,7 +378,7 @@ TEST(gen, collide_reads_its_files_and_method_exact_prints_its_truth) {
         // Every other method prints what its scalar reference says on the rects as read.
         const obbsat::rect_soa rects = obbsat::io::read_rects_file(s.file("d/rects.csv").string());
         const obbsat::suites::suite want = obbsat::suites::make_family(f, 1, 2000);
-        for (const method m : obbsat::all_methods()) {
+        for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
             const run_result r = s.run("collide --rects d/rects.csv --pairs d/pairs.csv --method " +
                                        std::string(obbsat::method_name(m)));
             ASSERT_EQ(r.status, 0) << r.err;
@@ -534,7 +534,7 @@ TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed)
         EXPECT_EQ(t["overlapping"].count(), by_class[2]);
     }
 
-    const std::vector<method> methods = obbsat::all_methods();
+    const std::vector<method> methods = obbsat::methods_on(obbsat::store_kind::corners);
     ASSERT_EQ(report["methods"].items.size(), methods.size());
     for (std::size_t m = 0; m < methods.size(); ++m) {
         const json& result = report["methods"].items[m];
@@ -657,7 +657,7 @@ TEST(demo, prints_one_accuracy_line_per_method) {
     const std::size_t start = r.out.find("accuracy against the exact oracle: 2000 pairs of each of 11");
     ASSERT_NE(start, std::string::npos) << r.out;
     const std::vector<std::string> lines = lines_of(r.out.substr(start));
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         const std::string prefix = "  " + std::string(obbsat::method_name(m)) + " ";
         const auto line = std::find_if(lines.begin(), lines.end(),
                                        [&](const std::string& l) { return l.rfind(prefix, 0) == 0; });

@@ -467,7 +467,7 @@ protected:
         write_file(files_->file("R.csv"), rect_text(in.rects));
         write_file(files_->file("P.csv"), pair_text(in.pairs));
         references_ = new std::vector<std::string>();
-        for (const method m : obbsat::all_methods()) {
+        for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
             references_->push_back(reference_verdicts(m, in.rects, in.pairs));
         }
         reference_ = &references_->front();
@@ -513,7 +513,7 @@ TEST_F(verdicts, scalar_backend_matches_the_reference_in_process) {
 }
 
 TEST_F(verdicts, every_method_on_the_scalar_backend_matches_its_reference) {
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         const std::string name = obbsat::method_name(m);
         const run_result r = files_->run("collide --rects R.csv --pairs P.csv --backend scalar "
                                          "--method " + name);
@@ -526,7 +526,7 @@ TEST_F(verdicts, methods_differ_on_the_hard_input) {
     // Otherwise --method could be ignored and every test above still pass.
     const auto& all = *references_;
     for (std::size_t i = 1; i < all.size(); ++i) {
-        EXPECT_NE(all[i], all[0]) << obbsat::method_name(obbsat::all_methods()[i]);
+        EXPECT_NE(all[i], all[0]) << obbsat::method_name(obbsat::methods_on(obbsat::store_kind::corners)[i]);
     }
 }
 
@@ -615,7 +615,7 @@ std::vector<backend_run> every_backend_run() {
         {backend::scalar, 2}, {backend::sse2, 1},   {backend::sse2, 2},
         {backend::avx2, 1},   {backend::avx2, 2},   {backend::avx512, 1},
         {backend::avx512, 2}, {backend::automatic, 2}};
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         for (const auto& [use, threads] : backends) {
             runs.push_back(backend_run{m, use, threads});
         }

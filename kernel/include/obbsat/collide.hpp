@@ -8,6 +8,7 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
@@ -78,5 +79,36 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
 /// The verdicts of collide_stream as a vector.
 std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
                                          const collide_options& options = {});
+
+// Poses (pose_records): the methods that run on poses, local, conservative
+// and exact (see obbsat/method.hpp), answer for the exact point sets of
+// obbsat/rect_pose.hpp. A method that does not run on poses (sat4,
+// sat4_centered, sat4_double) is refused with invalid_input; convert with
+// corner_records_of (obbsat/pose_conversion.hpp) to run those.
+
+/// verdicts[i] = 1 if poses[pairs[i].a] and poses[pairs[i].b] collide, else 0,
+/// for i < count; returns the backend that ran. Throws invalid_input naming the
+/// first pair with an index >= poses.size() or a method that does not run on
+/// poses, unsupported_backend for a backend this CPU cannot run; nothing is
+/// written then.
+backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options);
+
+/// The verdicts of collide_pairs over poses, one byte (0 or 1) per pair.
+std::vector<std::uint8_t> collide_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
+                                        const collide_options& options);
+
+/// The pairs of `pairs` whose poses collide, in their input order.
+std::vector<pair_index> colliding_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
+                                        const collide_options& options);
+
+/// verdicts[i] = 1 if a[i] and b[i] collide, else 0, for i < a.size(); returns
+/// the backend that ran. Throws invalid_input when a and b differ in size.
+backend collide_stream(const pose_records& a, const pose_records& b, std::uint8_t* verdicts,
+                       const collide_options& options);
+
+/// The verdicts of collide_stream over poses as a vector.
+std::vector<std::uint8_t> collide_stream(const pose_records& a, const pose_records& b,
+                                         const collide_options& options);
 
 }  // namespace obbsat

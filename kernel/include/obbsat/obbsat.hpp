@@ -7,11 +7,15 @@
 #include <obbsat/error.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose.hpp>
+#include <obbsat/pose_conversion.hpp>
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 #include <obbsat/ref/certified.hpp>
 #include <obbsat/ref/conservative.hpp>
+#include <obbsat/ref/pose_corners.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
 #include <obbsat/ref/sat4_double.hpp>

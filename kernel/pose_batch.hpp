@@ -1,0 +1,89 @@
+// The batch drivers of the methods on poses: walk a batch one vector of pairs
+// at a time, load each lane's two poses from their 32-byte records (read whole
+// and transposed in registers, as corner records are), run the method's lane
+// test, store the verdicts. The last, partial vector repeats its last pair in
+// the unused lanes, so nothing past the caller's arrays is read or written.
+#pragma once
+
+#include "batch_kernel.hpp"
+#include "pose_lanes.hpp"
+#include "record_transpose.hpp"
+
+#include <obbsat/rect_pose.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+namespace obbsat::detail {
+namespace {
+
+constexpr std::size_t pose_record_floats = 8;
+
+inline rect_pose pose_at(const float* records, std::size_t index) {
+    const float* v = records + pose_record_floats * index;
+    return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}};
+}
+
+/// The poses of records[index(lane)] for every lane.
+template <class Arch, class Index>
+OBBSAT_LANE_INLINE pose_lanes<Arch> load_poses(const float* records, const Index& index) {
+    return poses_of<Arch>(record_transpose<Arch>::load([&](std::size_t lane) {
+        return reinterpret_cast<const rect*>(records + pose_record_floats * index(lane));
+    }));
+}
+
+/// verdicts[i] = Method(a[first(i)], b[second(i)]) for i < count; returns the
+/// lanes settled exactly. With Prefetch, the records of pairs ahead are
+/// fetched early (for random access through a pair list).
+template <class Arch, template <class> class Method, bool Prefetch, class First, class Second>
+std::size_t pose_batch(const float* a, const float* b, const First& first, const Second& second,
+                       std::size_t count, std::uint8_t* verdicts) {
+    constexpr std::size_t width = lanes<Arch>::size;
+    std::size_t settled = 0;
+    auto poses_of_pair = [&](std::size_t i) { return std::make_pair(pose_at(a, first(i)), pose_at(b, second(i))); };
+    // One vector of pairs, pair_of(lane) giving each lane's pair.
+    auto run = [&](std::size_t i, std::size_t valid, const auto& pair_of) {
+        const lane_verdicts v =
+            Method<Arch>::collide(load_poses<Arch>(a, [&](std::size_t lane) { return first(pair_of(lane)); }),
+                                  load_poses<Arch>(b, [&](std::size_t lane) { return second(pair_of(lane)); }));
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
+                                                      [&](std::size_t lane) { return poses_of_pair(i + lane); });
+    };
+    std::size_t i = 0;
+    for (; i + width <= count; i += width) {
+        if constexpr (Prefetch) {
+            if (i + width + prefetch_distance <= count) {
+                for (std::size_t k = i + prefetch_distance; k < i + prefetch_distance + width; ++k) {
+                    __builtin_prefetch(a + pose_record_floats * first(k));
+                    __builtin_prefetch(b + pose_record_floats * second(k));
+                }
+            }
+        }
+        run(i, width, [&](std::size_t lane) { return i + lane; });
+    }
+    if (i < count) {
+        const std::size_t valid = count - i;
+        run(i, valid, [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); });
+    }
+    return settled;
+}
+
+/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count.
+template <class Arch, template <class> class Method>
+std::size_t pose_indexed_batch(const float* records, const pair_index* pairs, std::size_t count,
+                               std::uint8_t* verdicts) {
+    return pose_batch<Arch, Method, true>(
+        records, records, [&](std::size_t i) { return pairs[i].a; }, [&](std::size_t i) { return pairs[i].b; },
+        count, verdicts);
+}
+
+/// verdicts[i] = Method(a[i], b[i]) for i < count.
+template <class Arch, template <class> class Method>
+std::size_t pose_stream_batch(const float* a, const float* b, std::size_t count, std::uint8_t* verdicts) {
+    auto same = [](std::size_t i) { return i; };
+    return pose_batch<Arch, Method, false>(a, b, same, same, count, verdicts);
+}
+
+}  // namespace
+}  // namespace obbsat::detail

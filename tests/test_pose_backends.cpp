@@ -1,0 +1,304 @@
+// Every backend against the scalar references of the methods on poses,
+// verdict for verdict: collide_stream and collide_pairs over pose_records, on
+// one thread and split over threads; the conversion of poses to corners byte
+// for byte; the golden digests of the pose methods. The reference verdicts are
+// computed here with the functions of scalar_ref/ directly.
+#include "test_support/float_text.hpp"
+#include "test_support/random_poses.hpp"
+
+#include <obbsat/backend.hpp>
+#include <obbsat/collide.hpp>
+#include <obbsat/digest.hpp>
+#include <obbsat/error.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/pose_conversion.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/ref/pose_corners.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace {
+
+using obbsat::backend;
+using obbsat::method;
+using obbsat::pair_index;
+using obbsat::pose_records;
+using obbsat::rect_pose;
+using obbsat::test_support::hex_float;
+using obbsat::test_support::pose_pairs;
+using verdicts = std::vector<std::uint8_t>;
+
+// The digests of the verdicts of each pose method's scalar reference on
+// golden_pairs() below (poses from integer arithmetic and exact float
+// operations only, so the same on every machine). Every backend must
+// reproduce them. Change one only with a deliberate change of the method or
+// of the generator, and say so in the commit.
+struct golden_entry {
+    method test;
+    std::uint64_t digest;
+};
+constexpr golden_entry golden_digests[] = {
+    {method::local, 0xd4ed3c1740d9ba2d},
+    {method::conservative, 0xb54d770af3af514e},
+};
+
+std::string hex_digest(std::uint64_t digest) {
+    char text[32];
+    std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(digest));
+    return text;
+}
+
+std::string describe(const rect_pose& p) {
+    return "center (" + hex_float(p.center.x) + ", " + hex_float(p.center.y) + ") half (" +
+           hex_float(p.half_extents.x) + ", " + hex_float(p.half_extents.y) + ") rotation (" +
+           hex_float(p.rotation.x) + ", " + hex_float(p.rotation.y) + ")";
+}
+
+pose_pairs golden_pairs() {
+    obbsat::seeded_random random(20261123);
+    return obbsat::test_support::random_pose_pairs(random, 200000);
+}
+
+verdicts reference_verdicts(method m, const pose_pairs& pairs) {
+    const obbsat::pose_reference_fn reference = obbsat::pose_method_reference(m);
+    verdicts out(pairs.a.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = reference(pairs.a[i], pairs.b[i]) ? 1 : 0;
+    }
+    return out;
+}
+
+testing::AssertionResult same_verdicts(const verdicts& expected, const verdicts& got, const pose_pairs& pairs) {
+    std::size_t mismatches = 0;
+    std::string report;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        if (got[i] != expected[i] && ++mismatches <= 5) {
+            report += "\n  pair " + std::to_string(i) + ": reference " + std::to_string(expected[i]) + ", backend " +
+                      std::to_string(got[i]) + "\n    A " + describe(pairs.a[i]) + "\n    B " + describe(pairs.b[i]);
+        }
+    }
+    if (mismatches == 0) {
+        return testing::AssertionSuccess();
+    }
+    return testing::AssertionFailure() << mismatches << " of " << expected.size() << " verdicts differ" << report;
+}
+
+/// The pairs as one pool of poses with every pose at a shuffled place, and
+/// the index pairs into it (pair i of the result is pair i of `pairs`).
+struct indexed_poses {
+    pose_records pool;
+    std::vector<pair_index> pairs;
+};
+
+indexed_poses scattered(const pose_pairs& pairs, std::uint64_t seed) {
+    const std::size_t n = pairs.a.size();
+    std::vector<std::uint32_t> place(2 * n);
+    std::iota(place.begin(), place.end(), 0u);
+    obbsat::seeded_random random(seed);
+    for (std::size_t i = place.size(); i > 1; --i) {
+        std::swap(place[i - 1], place[random.below(i)]);
+    }
+    std::vector<rect_pose> pool(2 * n);
+    indexed_poses out;
+    out.pairs.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        pool[place[2 * i]] = pairs.a[i];
+        pool[place[2 * i + 1]] = pairs.b[i];
+        out.pairs[i] = pair_index{place[2 * i], place[2 * i + 1]};
+    }
+    out.pool = pose_records(pool);
+    return out;
+}
+
+class pose_backends : public testing::TestWithParam<backend> {
+protected:
+    void SetUp() override {
+        if (!obbsat::cpu_supports(GetParam())) {
+            GTEST_SKIP() << "backend " << obbsat::backend_name(GetParam())
+                         << " is not compiled in or this CPU cannot run it: not tested here";
+        }
+    }
+
+    obbsat::collide_options forced(method m, unsigned threads = 1) const {
+        obbsat::collide_options options;
+        options.test = m;
+        options.use = GetParam();
+        options.threads = threads;
+        return options;
+    }
+
+    /// Every entry point over poses gives the reference's verdicts for `m`.
+    void expect_every_path_matches(method m, const pose_pairs& pairs, unsigned threads) {
+        SCOPED_TRACE(std::string(obbsat::method_name(m)) + ", " + std::to_string(threads) + " threads");
+        const verdicts expected = reference_verdicts(m, pairs);
+        const pose_records a(pairs.a), b(pairs.b);
+        verdicts got(expected.size(), 0xee);
+        EXPECT_EQ(obbsat::collide_stream(a, b, got.data(), forced(m, threads)), GetParam());
+        EXPECT_TRUE(same_verdicts(expected, got, pairs)) << "collide_stream";
+
+        const indexed_poses indexed = scattered(pairs, 99);
+        std::fill(got.begin(), got.end(), std::uint8_t{0xee});
+        EXPECT_EQ(obbsat::collide_pairs(indexed.pool, indexed.pairs.data(), indexed.pairs.size(), got.data(),
+                                        forced(m, threads)),
+                  GetParam());
+        EXPECT_TRUE(same_verdicts(expected, got, pairs)) << "collide_pairs over pose_records";
+
+        std::vector<pair_index> hits_expected;
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            if (expected[i] != 0) {
+                hits_expected.push_back(indexed.pairs[i]);
+            }
+        }
+        const std::vector<pair_index> hits = obbsat::colliding_pairs(indexed.pool, indexed.pairs, forced(m, threads));
+        ASSERT_EQ(hits.size(), hits_expected.size());
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            ASSERT_TRUE(hits[i].a == hits_expected[i].a && hits[i].b == hits_expected[i].b) << i;
+        }
+    }
+};
+
+TEST(pose_methods, the_pose_methods_are_local_conservative_and_exact_on_poses_only_where_offered) {
+    const std::vector<method> on_poses = obbsat::methods_on(obbsat::store_kind::poses);
+    for (const method m : on_poses) {
+        EXPECT_NE(obbsat::pose_method_reference(m), nullptr) << obbsat::method_name(m);
+    }
+    EXPECT_TRUE(obbsat::runs_on(method::local, obbsat::store_kind::poses));
+    EXPECT_FALSE(obbsat::runs_on(method::local, obbsat::store_kind::corners));
+    EXPECT_TRUE(obbsat::runs_on(method::conservative, obbsat::store_kind::poses));
+    for (const method m : {method::sat4, method::sat4_centered, method::sat4_double}) {
+        EXPECT_FALSE(obbsat::runs_on(m, obbsat::store_kind::poses)) << obbsat::method_name(m);
+        EXPECT_EQ(obbsat::pose_method_reference(m), nullptr);
+    }
+}
+
+TEST(pose_methods, every_pose_method_has_a_golden_digest_here) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        const bool listed = std::any_of(std::begin(golden_digests), std::end(golden_digests),
+                                        [&](const golden_entry& e) { return e.test == m; });
+        EXPECT_TRUE(listed) << obbsat::method_name(m) << " has no golden digest";
+    }
+}
+
+TEST(pose_golden, reference_reproduces_golden_digests) {
+    const pose_pairs pairs = golden_pairs();
+    for (const golden_entry& e : golden_digests) {
+        const verdicts v = reference_verdicts(e.test, pairs);
+        EXPECT_EQ(hex_digest(obbsat::verdict_digest(v.data(), v.size())), hex_digest(e.digest))
+            << obbsat::method_name(e.test) << ": " << std::count(v.begin(), v.end(), 1) << " of " << v.size()
+            << " collide";
+    }
+}
+
+TEST_P(pose_backends, golden_digests_on_every_path) {
+    const pose_pairs pairs = golden_pairs();
+    const pose_records a(pairs.a), b(pairs.b);
+    const indexed_poses indexed = scattered(pairs, 5);
+    for (const golden_entry& e : golden_digests) {
+        for (const unsigned threads : {1u, 0u}) {
+            const verdicts streamed = obbsat::collide_stream(a, b, forced(e.test, threads));
+            EXPECT_EQ(hex_digest(obbsat::verdict_digest(streamed.data(), streamed.size())), hex_digest(e.digest))
+                << obbsat::method_name(e.test) << " stream, " << threads << " threads";
+            const verdicts picked = obbsat::collide_pairs(indexed.pool, indexed.pairs, forced(e.test, threads));
+            EXPECT_EQ(hex_digest(obbsat::verdict_digest(picked.data(), picked.size())), hex_digest(e.digest))
+                << obbsat::method_name(e.test) << " indexed, " << threads << " threads";
+        }
+    }
+}
+
+TEST_P(pose_backends, every_pose_method_matches_its_reference_on_every_kind_and_thread_count) {
+    obbsat::seeded_random random(77);
+    const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, 60000);
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        for (const unsigned threads : {1u, 2u, 0u}) {
+            expect_every_path_matches(m, pairs, threads);
+        }
+    }
+}
+
+TEST_P(pose_backends, every_batch_length_and_lane_position) {
+    obbsat::seeded_random random(3);
+    for (std::size_t n = 0; n <= 70; ++n) {
+        const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, n);
+        for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+            expect_every_path_matches(m, pairs, 1);
+        }
+    }
+}
+
+TEST_P(pose_backends, ten_million_random_pairs_match_the_reference) {
+    // In chunks, so that memory stays small; every kind in every chunk.
+    constexpr std::size_t chunk = 1000000;
+    obbsat::seeded_random random(1234);
+    for (std::size_t done = 0; done < 10 * chunk; done += chunk) {
+        const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, chunk);
+        const pose_records a(pairs.a), b(pairs.b);
+        for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+            const verdicts expected = reference_verdicts(m, pairs);
+            const verdicts got = obbsat::collide_stream(a, b, forced(m, 0));
+            ASSERT_TRUE(same_verdicts(expected, got, pairs)) << obbsat::method_name(m) << ", chunk at " << done;
+        }
+    }
+}
+
+TEST_P(pose_backends, corners_of_poses_match_the_reference_byte_for_byte) {
+    obbsat::seeded_random random(8);
+    for (const std::size_t n : {0, 1, 3, 4, 5, 15, 16, 17, 33, 100, 4099}) {
+        const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, n);
+        const pose_records poses(pairs.a);
+        std::vector<obbsat::rect> got(n + 1);
+        std::memset(got.data(), 0xee, got.size() * sizeof(obbsat::rect));
+        const obbsat::rect canary = got[n];
+        EXPECT_EQ(obbsat::convert_to_corners(poses, got.data(), GetParam()), GetParam());
+        for (std::size_t i = 0; i < n; ++i) {
+            const obbsat::rect expected = obbsat::ref::corners_of(pairs.a[i]);
+            ASSERT_EQ(std::memcmp(&expected, &got[i], sizeof expected), 0)
+                << "pose " << i << " of " << n << ": " << describe(pairs.a[i]);
+        }
+        EXPECT_EQ(std::memcmp(&canary, &got[n], sizeof canary), 0) << "wrote past the end, n = " << n;
+    }
+}
+
+TEST_P(pose_backends, methods_that_do_not_run_on_poses_are_refused_and_nothing_is_written) {
+    obbsat::seeded_random random(4);
+    const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, 20);
+    const pose_records a(pairs.a), b(pairs.b);
+    const std::vector<pair_index> index_pairs = {{0, 1}, {2, 3}};
+    std::string offered;
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        offered += std::string(offered.empty() ? "" : ", ") + obbsat::method_name(m);
+    }
+    for (const method m : {method::sat4, method::sat4_centered, method::sat4_double}) {
+        verdicts got(20, 0xee);
+        try {
+            obbsat::collide_stream(a, b, got.data(), forced(m));
+            ADD_FAILURE() << obbsat::method_name(m) << " ran on poses";
+        } catch (const obbsat::invalid_input& e) {
+            EXPECT_EQ(std::string(e.what()), std::string("method ") + obbsat::method_name(m) +
+                                                 " does not run on poses (pose_records take " + offered + ")");
+        }
+        EXPECT_THROW(obbsat::collide_pairs(a, index_pairs.data(), 2, got.data(), forced(m)), obbsat::invalid_input);
+        EXPECT_TRUE(std::all_of(got.begin(), got.end(), [](std::uint8_t v) { return v == 0xee; }));
+    }
+    verdicts got(2, 0xee);
+    const std::vector<pair_index> out_of_range = {{0, 1}, {2, 20}};
+    EXPECT_THROW(obbsat::collide_pairs(a, out_of_range.data(), 2, got.data(), forced(method::local)),
+                 obbsat::invalid_input);
+    const pose_records shorter(std::vector<rect_pose>(pairs.a.begin(), pairs.a.begin() + 19));
+    EXPECT_THROW(obbsat::collide_stream(a, shorter, got.data(), forced(method::local)), obbsat::invalid_input);
+    EXPECT_TRUE(std::all_of(got.begin(), got.end(), [](std::uint8_t v) { return v == 0xee; }));
+}
+
+INSTANTIATE_TEST_SUITE_P(every_backend, pose_backends,
+                         testing::Values(backend::scalar, backend::sse2, backend::avx2, backend::avx512),
+                         [](const testing::TestParamInfo<backend>& param_info) {
+                             return std::string(obbsat::backend_name(param_info.param));
+                         });
+
+}  // namespace

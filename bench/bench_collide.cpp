@@ -29,8 +29,10 @@ enum class batch_mode {
     indexed_random,  ///< collide_pairs on the same list, shuffled
 };
 
-/// Where an indexed batch reads its rectangles from (streams always use rect_soa).
-enum class rect_store { records, soa };
+/// Where a batch reads its rectangles from: corner records or structure of
+/// arrays (indexed batches; corner streams always use rect_soa), or poses
+/// (pose_records, for streams and indexed batches alike).
+enum class rect_store { records, soa, poses };
 
 const char* mode_name(batch_mode mode) {
     switch (mode) {
@@ -50,6 +52,8 @@ const char* mode_name(batch_mode mode) {
 // Neither counts cache-line waste: a rectangle fetched at random brings a
 // whole 64-byte line (records) or eight of them (SoA), which is exactly what
 // the measured rate compared with this minimum shows.
+// Poses are stored in 32-byte records too (six floats and two of padding),
+// so the same minimum holds for them.
 double bytes_per_pair(batch_mode mode) {
     return mode == batch_mode::stream ? 65.0 : 73.0;
 }
@@ -74,6 +78,11 @@ std::string case_name(const collide_case& c) {
     if (c.mode != batch_mode::stream && c.store == rect_store::soa) {
         name += "/store:soa";
     }
+    // A method that runs on corners too is marked when it runs on poses;
+    // local runs on nothing else.
+    if (c.store == rect_store::poses && obbsat::runs_on(c.test, obbsat::store_kind::corners)) {
+        name += "/store:poses";
+    }
     return name;
 }
 
@@ -82,6 +91,14 @@ obbsat::backend run_batch(workload& w, const collide_case& c, std::uint8_t* verd
     options.test = c.test;
     options.use = c.use;
     options.threads = c.threads;
+    if (c.store == rect_store::poses) {
+        if (c.mode == batch_mode::stream) {
+            return obbsat::collide_stream(w.pose_stream_a(), w.pose_stream_b(), verdicts, options);
+        }
+        const obbsat::pair_index* pairs =
+            c.mode == batch_mode::indexed_sorted ? w.sorted_pairs().data() : w.shuffled_pairs().data();
+        return obbsat::collide_pairs(w.poses(), pairs, c.pairs, verdicts, options);
+    }
     switch (c.mode) {
         case batch_mode::stream:
             return obbsat::collide_stream(w.stream_a(), w.stream_b(), verdicts, options);
@@ -100,6 +117,10 @@ obbsat::backend run_batch(workload& w, const collide_case& c, std::uint8_t* verd
 
 const std::vector<std::uint8_t>& expected_verdicts(workload& w, const collide_case& c) {
     // The streams follow the sorted list, so they share its reference.
+    if (c.store == rect_store::poses) {
+        return c.mode == batch_mode::indexed_random ? w.pose_shuffled_reference(c.test)
+                                                    : w.pose_sorted_reference(c.test);
+    }
     return c.mode == batch_mode::indexed_random ? w.shuffled_reference(c.test)
                                                 : w.sorted_reference(c.test);
 }
@@ -221,6 +242,20 @@ void register_collide_benchmarks(std::ostream& skipped) {
                 for (const std::size_t pairs : grid_sizes) {
                     register_case({test, mode, use, pairs, 1, obbsat::scene_density::typical,
                                    rect_store::soa});
+                }
+            }
+        }
+    }
+    // The methods on poses, on pose stores built from the same scenes
+    // (pose_records::from_corners), beside the corner rows above.
+    for (const obbsat::method test : obbsat::methods_on(obbsat::store_kind::poses)) {
+        for (const batch_mode mode : modes) {
+            for (const obbsat::backend use : runnable) {
+                for (const std::size_t pairs : grid_sizes) {
+                    for (const unsigned threads : thread_counts) {
+                        register_case({test, mode, use, pairs, threads, obbsat::scene_density::typical,
+                                       rect_store::poses});
+                    }
                 }
             }
         }

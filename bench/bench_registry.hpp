@@ -15,6 +15,10 @@ namespace obbsat_bench {
 /// backend it cannot run.
 void register_collide_benchmarks(std::ostream& skipped);
 
+/// convert/poses_to_corners/<backend>/poses:<N> for every backend this CPU
+/// runs, convert/corners_from_angles/poses:<N> and convert/poses_from_angles/poses:<N>.
+void register_convert_benchmarks();
+
 /// peer/box2d_collide_polygons/pairs:<N> and peer/box2d_test_overlap/pairs:<N>.
 void register_box2d_peers();
 

@@ -112,6 +112,71 @@ void workload::build_streams() {
     stream_b_ = std::move(b);
 }
 
+const obbsat::pose_records& workload::poses() {
+    if (!poses_) {
+        poses_ = std::make_unique<obbsat::pose_records>(obbsat::pose_records::from_corners(records_));
+    }
+    return *poses_;
+}
+
+namespace {
+
+std::vector<std::uint8_t> pose_reference_verdicts(obbsat::method test, const obbsat::pose_records& poses,
+                                                  const std::vector<obbsat::pair_index>& pairs) {
+    const obbsat::pose_reference_fn reference = obbsat::pose_method_reference(test);
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        verdicts[i] = reference(poses[pairs[i].a], poses[pairs[i].b]) ? 1 : 0;
+    }
+    return verdicts;
+}
+
+}  // namespace
+
+const std::vector<std::uint8_t>& workload::pose_sorted_reference(obbsat::method test) {
+    auto found = pose_sorted_reference_.find(test);
+    if (found == pose_sorted_reference_.end()) {
+        found = pose_sorted_reference_.emplace(test, pose_reference_verdicts(test, poses(), sorted_pairs())).first;
+    }
+    return found->second;
+}
+
+const std::vector<std::uint8_t>& workload::pose_shuffled_reference(obbsat::method test) {
+    auto found = pose_shuffled_reference_.find(test);
+    if (found == pose_shuffled_reference_.end()) {
+        found =
+            pose_shuffled_reference_.emplace(test, pose_reference_verdicts(test, poses(), shuffled_pairs())).first;
+    }
+    return found->second;
+}
+
+const obbsat::pose_records& workload::pose_stream_a() {
+    build_pose_streams();
+    return *pose_stream_a_;
+}
+
+const obbsat::pose_records& workload::pose_stream_b() {
+    build_pose_streams();
+    return *pose_stream_b_;
+}
+
+void workload::build_pose_streams() {
+    if (pose_stream_a_) {
+        return;
+    }
+    const obbsat::pose_records& all = poses();
+    auto a = std::make_unique<obbsat::pose_records>();
+    auto b = std::make_unique<obbsat::pose_records>();
+    a->reserve(scene_.pairs.size());
+    b->reserve(scene_.pairs.size());
+    for (const obbsat::pair_index& p : scene_.pairs) {
+        a->push_back(all[p.a]);
+        b->push_back(all[p.b]);
+    }
+    pose_stream_a_ = std::move(a);
+    pose_stream_b_ = std::move(b);
+}
+
 workload& workload_for(std::size_t pairs, obbsat::scene_density density) {
     static std::map<std::pair<std::size_t, obbsat::scene_density>, std::unique_ptr<workload>> cache;
     std::unique_ptr<workload>& slot = cache[{pairs, density}];

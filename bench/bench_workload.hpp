@@ -10,6 +10,7 @@
 #pragma once
 
 #include <obbsat/method.hpp>
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
@@ -57,6 +58,17 @@ public:
     /// Reference verdicts of `test` for shuffled_pairs().
     const std::vector<std::uint8_t>& shuffled_reference(obbsat::method test);
 
+    /// The scene's rectangles as poses (pose_records::from_corners); built on first use.
+    const obbsat::pose_records& poses();
+    /// Reference verdicts of pose method `test` for sorted_pairs() over poses().
+    const std::vector<std::uint8_t>& pose_sorted_reference(obbsat::method test);
+    /// Reference verdicts of pose method `test` for shuffled_pairs() over poses().
+    const std::vector<std::uint8_t>& pose_shuffled_reference(obbsat::method test);
+    /// A[i] = poses()[sorted_pairs()[i].a]; built on first use.
+    const obbsat::pose_records& pose_stream_a();
+    /// B[i] = poses()[sorted_pairs()[i].b]; built on first use.
+    const obbsat::pose_records& pose_stream_b();
+
     /// A[i] = rects[sorted_pairs()[i].a]; built on first use.
     const obbsat::rect_soa& stream_a();
     /// B[i] = rects[sorted_pairs()[i].b]; built on first use.
@@ -64,6 +76,7 @@ public:
 
 private:
     void build_streams();
+    void build_pose_streams();
 
     obbsat::scene scene_;
     obbsat::rect_records records_;
@@ -72,6 +85,11 @@ private:
     std::map<obbsat::method, std::vector<std::uint8_t>> shuffled_reference_;
     std::unique_ptr<obbsat::rect_soa> stream_a_;
     std::unique_ptr<obbsat::rect_soa> stream_b_;
+    std::unique_ptr<obbsat::pose_records> poses_;
+    std::map<obbsat::method, std::vector<std::uint8_t>> pose_sorted_reference_;
+    std::map<obbsat::method, std::vector<std::uint8_t>> pose_shuffled_reference_;
+    std::unique_ptr<obbsat::pose_records> pose_stream_a_;
+    std::unique_ptr<obbsat::pose_records> pose_stream_b_;
 };
 
 /// The shared workload of that size and density, built on first request.

@@ -1,6 +1,8 @@
 // A game-like loop: a few thousand boxes move, spin and bounce off the walls of
-// a square world. Each frame a uniform-grid broadphase lists the pairs whose
-// bounding boxes overlap, and obbsat decides which of those really collide.
+// a square world. Each box is a pose (center, half extents, rotation vector),
+// as a physics engine keeps it; no corners are ever computed. Each frame a
+// uniform-grid broadphase lists the pairs whose bounding boxes overlap, and
+// obbsat decides on the poses which of those really collide (method local).
 //
 //   scene [SECONDS [BOXES]]     simulated seconds (default 10), boxes (default 4000)
 //
@@ -27,9 +29,9 @@ constexpr float frame_seconds = 1.0f / static_cast<float>(frames_per_second);
 constexpr float two_pi = 6.2831853f;
 
 struct body {
-    obbsat::pose pose;
+    obbsat::rect_pose pose;
     obbsat::point velocity;  // world units per second
-    float spin;              // radians per second
+    obbsat::point turn;      // the rotation of one frame, as (cos, sin) of its angle
     float reach;             // distance from the center to a corner
 };
 
@@ -47,9 +49,11 @@ std::vector<body> spawn_bodies(std::size_t count, std::uint64_t seed) {
         b.pose.half_extents = {hx, hy};
         b.pose.center = {random.uniform(b.reach, world_size - b.reach),
                          random.uniform(b.reach, world_size - b.reach)};
-        b.pose.angle = random.uniform(0.0f, two_pi);
+        const float angle = random.uniform(0.0f, two_pi);
+        b.pose.rotation = {std::cos(angle), std::sin(angle)};
         b.velocity = {random.uniform(-20.0f, 20.0f), random.uniform(-20.0f, 20.0f)};
-        b.spin = random.uniform(-3.0f, 3.0f);
+        const float spin = random.uniform(-3.0f, 3.0f) * frame_seconds;  // radians per frame
+        b.turn = {std::cos(spin), std::sin(spin)};
     }
     return bodies;
 }
@@ -63,20 +67,34 @@ void bounce(float& position, float& velocity, float reach) {
     }
 }
 
+// One frame of motion. The rotation vector turns by the frame's rotation and
+// is renormalised, so that its length (which scales the box) stays 1 within
+// rounding however many frames pass.
 void advance(std::vector<body>& bodies, float seconds) {
     for (body& b : bodies) {
         b.pose.center.x += b.velocity.x * seconds;
         b.pose.center.y += b.velocity.y * seconds;
-        // Kept within one turn so that the angle never loses precision.
-        b.pose.angle = std::remainder(b.pose.angle + b.spin * seconds, two_pi);
+        const obbsat::point r = b.pose.rotation;
+        const float c = r.x * b.turn.x - r.y * b.turn.y;
+        const float s = r.y * b.turn.x + r.x * b.turn.y;
+        const float length = std::sqrt(c * c + s * s);
+        b.pose.rotation = {c / length, s / length};
         bounce(b.pose.center.x, b.velocity.x, b.reach);
         bounce(b.pose.center.y, b.velocity.y, b.reach);
     }
 }
 
-bounds bounds_of(const obbsat::rect& r) {
-    return {std::min({r.ul.x, r.ur.x, r.lr.x, r.ll.x}), std::min({r.ul.y, r.ur.y, r.lr.y, r.ll.y}),
-            std::max({r.ul.x, r.ur.x, r.lr.x, r.ll.x}), std::max({r.ul.y, r.ur.y, r.lr.y, r.ll.y})};
+// The axis-aligned bounds of a pose, from its center and the reach of its
+// half extents along x and y, widened by a relative 2^-20 so that rounding
+// never makes them smaller than the exact box.
+bounds bounds_of(const obbsat::rect_pose& p) {
+    const float c = std::fabs(p.rotation.x);
+    const float s = std::fabs(p.rotation.y);
+    const float ex = p.half_extents.x * c + p.half_extents.y * s;
+    const float ey = p.half_extents.x * s + p.half_extents.y * c;
+    const float wx = ex + 0x1p-20f * (ex + std::fabs(p.center.x));
+    const float wy = ey + 0x1p-20f * (ey + std::fabs(p.center.y));
+    return {p.center.x - wx, p.center.y - wy, p.center.x + wx, p.center.y + wy};
 }
 
 // Closed intervals: boxes whose bounds merely touch are candidates, because
@@ -96,7 +114,7 @@ public:
         : cell_size_(2.0f * largest_reach + 0.25f),
           columns_(std::max(1, static_cast<int>(std::ceil(world / cell_size_)))) {}
 
-    void find_candidates(const obbsat::rect_records& boxes, std::vector<obbsat::pair_index>& pairs) {
+    void find_candidates(const obbsat::pose_records& boxes, std::vector<obbsat::pair_index>& pairs) {
         file_boxes(boxes);
         pairs.clear();
         // Each unordered pair of cells is visited once: the cell itself, then
@@ -139,7 +157,7 @@ private:
     }
 
     // A counting sort of the boxes by cell: no allocation after the first frame.
-    void file_boxes(const obbsat::rect_records& boxes) {
+    void file_boxes(const obbsat::pose_records& boxes) {
         const std::size_t cells = static_cast<std::size_t>(columns_) * static_cast<std::size_t>(columns_);
         bounds_.resize(boxes.size());
         cell_of_.resize(boxes.size());
@@ -195,23 +213,24 @@ double milliseconds_between(clock_type::time_point from, clock_type::time_point 
 int run(unsigned long seconds, std::size_t box_count) {
     std::vector<body> bodies = spawn_bodies(box_count, 2024);
     float largest_reach = 0.0f;
-    std::vector<obbsat::pose> poses;
+    obbsat::pose_records boxes;
     for (const body& b : bodies) {
         largest_reach = std::max(largest_reach, b.reach);
-        poses.push_back(b.pose);
+        boxes.push_back(b.pose);
     }
-    obbsat::rect_records boxes = obbsat::rect_records::from_poses(poses);
     uniform_grid grid(world_size, largest_reach);
     std::vector<obbsat::pair_index> pairs;
     std::vector<std::uint8_t> verdicts;
 
-    const obbsat::collide_options options;  // sat4, best backend, one thread: a frame is small
+    obbsat::collide_options options;  // best backend, one thread: a frame is small
+    options.test = obbsat::method::local;
     std::printf("%zu boxes in a %.0f x %.0f world, %zu frames per second, backend %s\n", box_count,
                 static_cast<double>(world_size), static_cast<double>(world_size), frames_per_second,
                 obbsat::backend_name(obbsat::resolve_backend(options.use)));
 
     std::uint64_t digest = 0;
     for (unsigned long second = 1; second <= seconds; ++second) {
+        double motion_ms = 0;
         double broadphase_ms = 0;
         double narrowphase_ms = 0;
         double slowest_frame_ms = 0;
@@ -221,8 +240,9 @@ int run(unsigned long seconds, std::size_t box_count) {
             const clock_type::time_point start = clock_type::now();
             advance(bodies, frame_seconds);
             for (std::size_t i = 0; i < bodies.size(); ++i) {
-                boxes.set(i, obbsat::corners_of(bodies[i].pose));
+                boxes.set(i, bodies[i].pose);
             }
+            const clock_type::time_point moved = clock_type::now();
             grid.find_candidates(boxes, pairs);
             const clock_type::time_point listed = clock_type::now();
 
@@ -234,16 +254,17 @@ int run(unsigned long seconds, std::size_t box_count) {
             collisions += static_cast<std::size_t>(std::count(verdicts.begin(), verdicts.end(), 1));
             // Folds the frame's FNV-1a digest into the run's, in frame order.
             digest = (digest ^ obbsat::verdict_digest(verdicts.data(), verdicts.size())) * 0x100000001b3ull;
-            broadphase_ms += milliseconds_between(start, listed);
+            motion_ms += milliseconds_between(start, moved);
+            broadphase_ms += milliseconds_between(moved, listed);
             narrowphase_ms += milliseconds_between(listed, decided);
             slowest_frame_ms = std::max(slowest_frame_ms, milliseconds_between(start, decided));
         }
         const double frames = static_cast<double>(frames_per_second);
-        std::printf("t=%3lus  candidates %6zu/frame  collisions %6zu/frame  frame %.3f ms (motion+broadphase "
-                    "%.3f, obbsat %.3f, slowest %.3f)\n",
+        std::printf("t=%3lus  candidates %6zu/frame  collisions %6zu/frame  frame %.3f ms (motion %.3f, "
+                    "broadphase %.3f, obbsat %.3f, slowest %.3f)\n",
                     second, candidates / frames_per_second, collisions / frames_per_second,
-                    (broadphase_ms + narrowphase_ms) / frames, broadphase_ms / frames, narrowphase_ms / frames,
-                    slowest_frame_ms);
+                    (motion_ms + broadphase_ms + narrowphase_ms) / frames, motion_ms / frames,
+                    broadphase_ms / frames, narrowphase_ms / frames, slowest_frame_ms);
     }
     std::printf("verdict digest %016llx\n", static_cast<unsigned long long>(digest));
     return 0;

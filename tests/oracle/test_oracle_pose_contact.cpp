@@ -1,8 +1,8 @@
 // The pose oracle on hand-worked cases: exact contacts with integer rotation
 // vectors (a rotation (3, 4) has length 5, so a half extent 1 reaches 5),
 // corner and edge contacts, one float step either side of them, segments and
-// points, rotation vectors far from unit length, centers far from the origin,
-// and invalid poses. Then its invariances, and agreement with the quad oracle
+// points, rotation vectors far from unit length, slacks far below double
+// precision, centers far from the origin, and invalid poses. Then its invariances, and agreement with the quad oracle
 // on poses whose corners are exact in float.
 #include <obbsat/oracle/pose_contact.hpp>
 
@@ -177,6 +177,20 @@ TEST(pose_contact, rotation_vectors_far_from_unit_length) {
     expect_contact(tiny, pose(down(2e-20f), 0, 1, 1, 1e-20f, 0), O);
 }
 
+TEST(pose_contact, slacks_below_double_precision) {
+    // Rotation (1, t), t = 2^-30: squared length 1 + 2^-60, which rounds to 1
+    // in double. B, turned as A, sits 2 along x: the slack along A's u is
+    // 2·(1 + t²) − 2 = 2^-59, overlapping where double sees edges touching.
+    const float t = 0x1p-30f;
+    const rect_pose a = pose(0, 0, 1, 1, 1, t);
+    expect_contact(a, pose(2, 2 * t, 1, 1, 1, t), T);        // 2u: edge on edge
+    expect_contact(a, pose(2, 0, 1, 1, 1, t), O);            // slack 2^-59
+    expect_contact(a, pose(2, up(2 * t), 1, 1, 1, t), S);    // slack -2^-82
+    expect_contact(a, pose(2, down(2 * t), 1, 1, 1, t), O);
+    expect_contact(a, pose(1, t, 0, 0, 1, 0), T);            // a point on that edge
+    expect_contact(a, pose(1, up(t), 0, 0, 1, 0), S);        // slack -2^-83
+}
+
 TEST(pose_contact, far_from_the_origin) {
     // Floats are 1 apart near 1e7 and 2 apart near 3e7: these centers are exact.
     const float x = 1e7f, y = 3e7f;
@@ -231,7 +245,8 @@ TEST(pose_contact, invalid_poses_are_rejected) {
 // corners are exact in float; half extents zero now and then.
 rect_pose lattice_pose(obbsat::seeded_random& random) {
     auto integer = [&](int lo, int hi) {
-        return static_cast<float>(lo + static_cast<int>(random.below(static_cast<std::uint64_t>(hi - lo + 1))));
+        const auto span = static_cast<std::uint64_t>(hi - lo + 1);
+        return static_cast<float>(lo + static_cast<int>(random.below(span)));
     };
     rect_pose p{{integer(-6, 6), integer(-6, 6)}, {integer(0, 2), integer(0, 2)}, {0, 0}};
     while (p.rotation.x == 0 && p.rotation.y == 0) {

@@ -224,7 +224,12 @@ bool outline_is_simple(const std::vector<qp>& c) {
 }  // namespace
 
 rational_region rational_region_of(const rect& r) {
-    const std::vector<qp> corners = {to_rational(r.ul), to_rational(r.ur), to_rational(r.lr), to_rational(r.ll)};
+    return rational_region_of(
+        rational_corners{to_rational(r.ul), to_rational(r.ur), to_rational(r.lr), to_rational(r.ll)});
+}
+
+rational_region rational_region_of(const rational_corners& given) {
+    const std::vector<qp> corners(given.begin(), given.end());
     bool collinear = true;
     for (std::size_t i = 0; i < 4; ++i) {
         for (std::size_t j = 0; j < 4; ++j) {
@@ -265,8 +270,10 @@ rational_region rational_region_of(const rect& r) {
 }
 
 char rational_contact(const rect& a, const rect& b) {
-    const rational_region ra = rational_region_of(a);
-    const rational_region rb = rational_region_of(b);
+    return rational_contact(rational_region_of(a), rational_region_of(b));
+}
+
+char rational_contact(const rational_region& ra, const rational_region& rb) {
     const std::vector<qp>& pa = ra.outline;
     const std::vector<qp>& pb = rb.outline;
     bool meet = false;

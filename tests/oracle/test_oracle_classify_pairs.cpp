@@ -50,7 +50,7 @@ TEST(classify_pairs, matches_one_classify_per_pair_for_every_thread_count) {
 }
 
 TEST(classify_pairs, empty_batch) {
-    EXPECT_TRUE(obbsat::oracle::classify_pairs({}, {}, 2).empty());
+    EXPECT_TRUE(obbsat::oracle::classify_pairs(std::vector<rect>{}, {}, 2).empty());
 }
 
 TEST(classify_pairs, an_index_out_of_range_names_the_pair_and_writes_nothing) {

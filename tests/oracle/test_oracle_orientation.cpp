@@ -8,6 +8,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -200,9 +201,48 @@ TEST(sign_of_exact_sum, matches_rationals_on_cancelling_products_of_floats) {
     EXPECT_EQ(sign_of_exact_sum(none, 0), 0);
     const double tiny_rest[3] = {0x1p100, 0x1p-140, -0x1p100};
     EXPECT_EQ(sign_of_exact_sum(tiny_rest, 3), 1);
-    const double nine[9] = {};
-    EXPECT_THROW(sign_of_exact_sum(nine, 9), std::invalid_argument);
-    EXPECT_THROW(sign_of_exact_sum(nine, -1), std::invalid_argument);
+    const double too_many[obbsat::oracle::exact_sum_max_terms + 1] = {};
+    EXPECT_THROW(sign_of_exact_sum(too_many, obbsat::oracle::exact_sum_max_terms + 1),
+                 std::invalid_argument);
+    EXPECT_THROW(sign_of_exact_sum(too_many, -1), std::invalid_argument);
+}
+
+// Products of three floats, each split into its rounded double and the exact
+// rest (fma), as the pose oracle builds them: factors from subnormal to near the
+// largest float, so the terms span 2^-447 to 2^384. Half of the products cancel
+// an earlier one, exactly or but for one float step of one factor.
+TEST(sign_of_exact_sum, matches_rationals_on_split_products_of_three_floats) {
+    obbsat::seeded_random random(10);
+    for (int i = 0; i < 20000; ++i) {
+        const int count = 1 + static_cast<int>(random.below(obbsat::oracle::exact_sum_max_terms / 2));
+        std::vector<std::array<float, 3>> products;
+        std::vector<double> terms;
+        mpq_class exact = 0;
+        for (int t = 0; t < count; ++t) {
+            std::array<float, 3> f{};
+            if (t > 0 && (random.next() & 1u) != 0) {
+                f = products[random.below(static_cast<std::uint64_t>(t))];
+                f[0] = -f[0];
+                if ((random.next() & 3u) == 0) {
+                    const std::size_t k = random.below(3);
+                    f[k] = step(f[k], 1);
+                }
+            } else {
+                for (float& x : f) {
+                    x = random_float(random, -149, 126);
+                }
+            }
+            products.push_back(f);
+            const double two = static_cast<double>(f[0]) * f[1];
+            const double high = two * f[2];
+            terms.push_back(high);
+            terms.push_back(std::fma(two, static_cast<double>(f[2]), -high));
+            exact += mpq_class(static_cast<double>(f[0])) * mpq_class(static_cast<double>(f[1])) *
+                     mpq_class(static_cast<double>(f[2]));
+        }
+        ASSERT_EQ(sign_of_exact_sum(terms.data(), static_cast<int>(terms.size())), sgn(exact))
+            << "case " << i;
+    }
 }
 
 }  // namespace

@@ -19,12 +19,14 @@ int orientation(point p, point q, point r);
 /// The same sign as `orientation`, always by the exact path (for tests and diagnostics).
 int orientation_exact(point p, point q, point r);
 
-/// How many terms sign_of_exact_sum takes at the most.
-inline constexpr int exact_sum_max_terms = 8;
+/// How many terms sign_of_exact_sum takes at the most: enough for the sixteen of a
+/// pose oracle slack (pose_contact.hpp), six products of three floats split in two.
+inline constexpr int exact_sum_max_terms = 16;
 
 /// +1, -1 or 0: the sign of the exact sum terms[0] + ... + terms[count-1] of at most
 /// exact_sum_max_terms finite doubles whose rounded partial sums stay finite (products of
-/// two floats always do); throws std::invalid_argument for a count out of range.
+/// two or three floats, the latter as two doubles, always do); throws std::invalid_argument
+/// for a count out of range.
 int sign_of_exact_sum(const double* terms, int count);
 
 }  // namespace obbsat::oracle

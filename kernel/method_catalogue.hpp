@@ -18,6 +18,7 @@
 
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/local.hpp>
 #include <obbsat/ref/pose_conservative.hpp>
@@ -48,6 +49,8 @@ template <class Arch>
 struct local_lanes;
 template <class Arch>
 struct pose_conservative_lanes;
+template <class Arch>
+struct pose_exact_lanes;
 
 /// How a method runs on the corner stores (rect_soa, rect_records): its
 /// scalar reference (the definition every backend reproduces) and its lanes.
@@ -115,7 +118,7 @@ struct exact_row {
     static constexpr method_guarantee guarantee = method_guarantee::exact;
     static constexpr bool has_slow_path = true;
     using corners = on_corners<oracle::intersects, exact_lanes>;
-    using poses = not_offered;
+    using poses = on_poses<oracle::intersects, pose_exact_lanes>;
 };
 
 struct local_row {

@@ -6,6 +6,7 @@
 
 #include "lanes.hpp"
 
+#include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/rect_pose.hpp>
 
 #include <limits>
@@ -122,15 +123,17 @@ struct pose_conservative_lanes {
     }
 };
 
-/// The certified fast path of exact on poses; `Exactly` settles the lanes it
-/// leaves undecided (the exact pose oracle).
+/// Method exact on poses: the certified fast path decides a lane when an axis
+/// proves it apart or all four prove overlap; the exact pose oracle settles
+/// the lanes it leaves undecided.
 template <class Arch>
-struct pose_certified_steps {
+struct pose_exact_lanes {
+    static constexpr bool has_slow_path = true;
     using steps = pose_steps<Arch>;
     using batch = lanes<Arch>;
     using mask = lane_mask<Arch>;
 
-    static OBBSAT_LANE_INLINE lane_verdicts certify(const pose_lanes<Arch>& a, const pose_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const pose_lanes<Arch>& a, const pose_lanes<Arch>& b) {
         typename steps::axes x;
         batch P, Q;
         steps::first_axes(a, b, x, P, Q);
@@ -146,6 +149,8 @@ struct pose_certified_steps {
         }
         return lane_verdicts{lane_bits(overlapping), lane_bits(~(apart | overlapping))};
     }
+
+    static bool decide_exactly(const rect_pose& a, const rect_pose& b) { return oracle::intersects(a, b); }
 };
 
 }  // namespace

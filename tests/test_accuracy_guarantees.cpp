@@ -189,7 +189,8 @@ bool in_exact_range(method m, const rect& a, const rect& b) {
         }
         case method::sat4_double: return on_grid(a, b, point{0.0f, 0.0f}, 25).fits;
         case method::conservative:
-        case method::exact: return false;
+        case method::exact:
+        case method::local: return false;  // guaranteed everywhere, or not a corner method
     }
     return false;
 }

@@ -100,8 +100,10 @@ std::optional<std::string_view> output_option(const parsed_options& options, std
     return text;
 }
 
-usage_error same_input_error(std::string_view rects_path, std::string_view pairs_path) {
-    return usage_error("--rects '" + std::string(rects_path) + "' and --pairs '" + std::string(pairs_path) +
+usage_error same_input_error(std::string_view rects_option, std::string_view rects_path,
+                             std::string_view pairs_path) {
+    return usage_error(dashed(rects_option) + " '" + std::string(rects_path) + "' and --pairs '" +
+                       std::string(pairs_path) +
                        "' name the same input; rectangles and pairs need one each");
 }
 
@@ -120,19 +122,19 @@ void print_options(std::FILE* out, const std::vector<option_spec>& specs) {
     }
 }
 
-std::string method_list() {
+std::string method_list(const std::vector<method>& methods) {
     std::string known;
-    for (const method m : all_methods()) {
+    for (const method m : methods) {
         known += known.empty() ? "" : ", ";
         known += method_name(m);
     }
     return known;
 }
 
-method method_option(const parsed_options& options) {
+method method_option(const parsed_options& options, method fallback) {
     const auto name = options.value("method");
     if (!name) {
-        return method::sat4;
+        return fallback;
     }
     const auto parsed = parse_method(*name);
     if (!parsed) {

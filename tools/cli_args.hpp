@@ -59,17 +59,21 @@ std::uint64_t parse_number_option(std::string_view option, std::string_view text
 std::optional<std::string_view> output_option(const parsed_options& options, std::string_view name,
                                               bool required = false);
 
-/// The usage error for --rects and --pairs naming one input (see io::same_input).
-usage_error same_input_error(std::string_view rects_path, std::string_view pairs_path);
+/// The usage error for the rectangle file (given to --`rects_option`) and
+/// --pairs naming one input (see io::same_input).
+usage_error same_input_error(std::string_view rects_option, std::string_view rects_path,
+                             std::string_view pairs_path);
 
 /// Prints one aligned line per option.
 void print_options(std::FILE* out, const std::vector<option_spec>& specs);
 
-/// "sat4, sat4_centered, ...": every method this build offers, for help and errors.
-std::string method_list();
+/// "sat4, sat4_centered, ...": the names of `methods` (by default every method
+/// this build offers), for help and errors.
+std::string method_list(const std::vector<method>& methods = all_methods());
 
-/// The --method option (default sat4); throws usage_error naming the known methods.
-method method_option(const parsed_options& options);
+/// The --method option, `fallback` when it is not given; throws usage_error
+/// naming the known methods.
+method method_option(const parsed_options& options, method fallback = method::sat4);
 
 /// The --backend option (default auto); throws usage_error naming the known backends.
 backend backend_option(const parsed_options& options);

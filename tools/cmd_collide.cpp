@@ -1,12 +1,13 @@
 // obbsat collide: one verdict line per pair of a pair file.
 //
-// The rectangle file is read whole into packed records (one cache line per
-// rectangle, as pairs fetch them at random); the pair file is streamed
-// a chunk at a time (parse, collide, write), so memory stays bounded however
-// many pairs there are. With --out, verdicts go to a temporary file renamed
-// over the target at the end, so a bad line anywhere leaves the target as it
-// was. On standard output, verdicts of chunks before a bad line have already
-// been written when the error is found; the exit status says to discard them.
+// The rectangle file (corners with --rects, poses with --poses) is read whole
+// into packed records (one cache line per rectangle, half of one per pose, as
+// pairs fetch them at random); the pair file is streamed a chunk at a time
+// (parse, collide, write), so memory stays bounded however many pairs there
+// are. With --out, verdicts go to a temporary file renamed over the target at
+// the end, so a bad line anywhere leaves the target as it was. On standard
+// output, verdicts of chunks before a bad line have already been written when
+// the error is found; the exit status says to discard them.
 #include "atomic_output.hpp"
 #include "cli_args.hpp"
 #include "commands.hpp"
@@ -31,17 +32,57 @@ namespace {
 constexpr std::size_t pairs_per_chunk = std::size_t{1} << 20;
 
 const std::vector<option_spec>& collide_option_specs() {
-    static const std::string method_help = "collision test: " + method_list() + " (default: sat4)";
     static const std::vector<option_spec> specs = {
-        {"rects", "FILE", "rectangles, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line (required)"},
-        {"pairs", "FILE", "pairs, one 'i,j' of 0-based rectangle indices per line; '-' is stdin (required)"},
+        {"rects", "FILE", "corners, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line"},
+        {"poses", "FILE", "poses, one 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' per line"},
+        {"pairs", "FILE", "pairs, one 'i,j' of 0-based indices per line (required)"},
         {"out", "FILE", "write verdicts here, all or nothing (default: standard output)"},
         {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
         {"threads", "N", "cores to split each chunk over, 0 for all (default: 1)"},
-        {"method", "NAME", method_help},
+        {"method", "NAME", "collision test (default: sat4 on --rects, local on --poses)"},
         {"help", "", "show this help"},
     };
     return specs;
+}
+
+// The rectangle file of a run: exactly one of --rects (corners) and --poses.
+struct rectangle_input {
+    store_kind kind;
+    std::string option;  // "rects" or "poses"
+    std::string path;
+};
+
+rectangle_input rectangle_option(const parsed_options& options) {
+    const auto rects = options.value("rects");
+    const auto poses = options.value("poses");
+    if (rects && poses) {
+        throw usage_error("--rects and --poses both given; the rectangles come from one of them");
+    }
+    if (rects) {
+        return rectangle_input{store_kind::corners, "rects", std::string(*rects)};
+    }
+    if (poses) {
+        return rectangle_input{store_kind::poses, "poses", std::string(*poses)};
+    }
+    throw usage_error("missing required option --rects or --poses");
+}
+
+// The method when --method is not given: the article's test on each store.
+method default_method(store_kind store) {
+    return store == store_kind::corners ? method::sat4 : method::local;
+}
+
+// --method, checked before any file is read against the methods that run on
+// the store: the library would refuse the others only at the first pair.
+method collide_method(const parsed_options& options, const rectangle_input& input) {
+    const method m = method_option(options, default_method(input.kind));
+    if (!runs_on(m, input.kind)) {
+        const std::string store = store_name(input.kind);
+        throw usage_error("--method " + std::string(method_name(m)) + " does not run on " + store + " (--" +
+                          input.option + "); the methods on " + store + " are " +
+                          method_list(methods_on(input.kind)));
+    }
+    return m;
 }
 
 // Where verdict text goes: the atomic file of --out, or standard output.
@@ -78,19 +119,61 @@ private:
     std::vector<char> text_;
 };
 
+// Every record of the rectangle file, by `read` (a reader of csv_input.hpp);
+// the line buffer is gone before the pairs are read.
+template <class Read>
+auto read_whole(const io::input_file& file, Read read) {
+    io::line_reader lines(file.get(), file.name());
+    return read(lines);
+}
+
+// Decides the pairs of `pairs_file` a chunk at a time over `rects`, read from
+// `rects_file`, and hands the verdicts to `writer`.
+template <class Store>
+void collide_pair_file(const Store& rects, const io::input_file& rects_file,
+                       const io::input_file& pairs_file, const collide_options& run,
+                       verdict_writer& writer) {
+    io::line_reader pair_lines(pairs_file.get(), pairs_file.name());
+    io::pair_reader pairs(pair_lines, rects.size(), rects_file.name());
+    std::vector<pair_index> chunk;
+    std::vector<std::uint8_t> verdicts;
+    chunk.reserve(pairs_per_chunk);
+    verdicts.reserve(pairs_per_chunk);
+    while (pairs.read_chunk(chunk, pairs_per_chunk)) {
+        verdicts.resize(chunk.size());
+        collide_pairs(rects, chunk.data(), chunk.size(), verdicts.data(), run);
+        writer.write(verdicts, chunk.size());
+    }
+}
+
 }  // namespace
 
 void print_collide_help(std::FILE* out) {
     std::fprintf(out,
-                 "usage: obbsat collide --rects FILE --pairs FILE [--out FILE] [--backend NAME]\n"
-                 "                      [--threads N] [--method NAME]\n"
+                 "usage: obbsat collide (--rects FILE | --poses FILE) --pairs FILE [--out FILE]\n"
+                 "                      [--backend NAME] [--threads N] [--method NAME]\n"
                  "\n"
                  "Writes one line per pair, in pair order: 1 if the two rectangles collide\n"
-                 "(touching counts), else 0.\n"
+                 "(touching counts), else 0. The rectangles come from --rects or --poses (one\n"
+                 "of them); '-' reads standard input, for one of the two files at most.\n"
                  "\n"
                  "options:\n");
     print_options(out, collide_option_specs());
     std::fprintf(out,
+                 "\n"
+                 "methods (default: sat4 on --rects, local on --poses; any other pairing is\n"
+                 "an error):\n"
+                 "  on --rects: %s\n"
+                 "  on --poses: %s\n",
+                 method_list(methods_on(store_kind::corners)).c_str(),
+                 method_list(methods_on(store_kind::poses)).c_str());
+    std::fprintf(out,
+                 "\n"
+                 "poses: 'cx,cy,hx,hy,c,s' is the rectangle with center (cx,cy), half extents\n"
+                 "hx,hy >= 0 along its own axes, and its x axis along (c,s), not normalised\n"
+                 "(its length scales the rectangle) and not (0,0). 'cx,cy,hx,hy,angle' gives\n"
+                 "the angle in radians instead: (c,s) = (cos, sin) in double, rounded to float.\n"
+                 "Both kinds of line may be mixed in one file.\n"
                  "\n"
                  "input: numbers as strtof reads them (decimal or hex float like 0x1.8p+1);\n"
                  "blanks around fields, CRLF line ends and a last line without a line end are\n"
@@ -102,20 +185,21 @@ void print_collide_help(std::FILE* out) {
                  "before the error must be discarded.\n"
                  "\n"
                  "example:\n"
-                 "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt --threads 2\n");
+                 "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt --threads 2\n"
+                 "  obbsat collide --poses poses.csv --pairs pairs.csv --method conservative\n");
 }
 
 int run_collide(const arguments& args) {
     const parsed_options options = parse_options(args, collide_option_specs());
-    const std::string rects_path(options.required("rects"));
+    const rectangle_input input = rectangle_option(options);
     const std::string pairs_path(options.required("pairs"));
     // The rectangles are read to the end before the first pair, so a shared
     // standard input would leave no pairs and pass as an empty answer.
-    if (rects_path == "-" && pairs_path == "-") {
-        throw usage_error("--rects and --pairs cannot both read standard input ('-')");
+    if (input.path == "-" && pairs_path == "-") {
+        throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
     }
     collide_options run;
-    run.test = method_option(options);
+    run.test = collide_method(options, input);
     if (const auto threads = options.value("threads")) {
         run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
     }
@@ -125,30 +209,22 @@ int run_collide(const arguments& args) {
 
     // Open everything before the long parse, so a missing file or an
     // unwritable --out is reported at once.
-    const io::input_file rects_file(rects_path);
+    const io::input_file rects_file(input.path);
     const io::input_file pairs_file(pairs_path);
     // The same stream under two names ("-" and /dev/stdin) is caught here.
     if (io::same_input(rects_file, pairs_file)) {
-        throw same_input_error(rects_path, pairs_path);
+        throw same_input_error(input.option, input.path, pairs_path);
     }
     verdict_writer writer(output_option(options, "out"));
 
-    rect_records rects;
-    {
-        io::line_reader lines(rects_file.get(), rects_file.name());
-        rects = io::read_rect_records(lines);
-    }
-
-    io::line_reader pair_lines(pairs_file.get(), pairs_file.name());
-    io::pair_reader pairs(pair_lines, rects.size(), rects_file.name());
-    std::vector<pair_index> chunk;
-    std::vector<std::uint8_t> verdicts;
-    chunk.reserve(pairs_per_chunk);
-    verdicts.reserve(pairs_per_chunk);
-    while (pairs.read_chunk(chunk, pairs_per_chunk)) {
-        verdicts.resize(chunk.size());
-        collide_pairs(rects, chunk.data(), chunk.size(), verdicts.data(), run);
-        writer.write(verdicts, chunk.size());
+    if (input.kind == store_kind::corners) {
+        const rect_records rects =
+            read_whole(rects_file, [](io::line_reader& lines) { return io::read_rect_records(lines); });
+        collide_pair_file(rects, rects_file, pairs_file, run, writer);
+    } else {
+        const pose_records poses =
+            read_whole(rects_file, [](io::line_reader& lines) { return io::read_pose_records(lines); });
+        collide_pair_file(poses, rects_file, pairs_file, run, writer);
     }
     writer.finish();
     return exit_success;

@@ -1,5 +1,6 @@
 #include "csv_input.hpp"
 
+#include <obbsat/pose.hpp>
 #include <obbsat/rect_soa.hpp>
 
 #include <array>
@@ -61,12 +62,10 @@ std::string_view trimmed(std::string_view s) {
     return s.substr(begin, end - begin);
 }
 
-// Splits `line` at commas into exactly N trimmed fields, or fails naming how
-// many fields the line really has.
+// Splits `line` at commas into its first (up to N) trimmed fields; returns
+// how many fields the line has, more than N when it has more.
 template <std::size_t N>
-std::array<std::string_view, N> split_fields(std::string_view line, const line_reader& where,
-                                             const char* record_name) {
-    std::array<std::string_view, N> fields;
+std::size_t split_at_commas(std::string_view line, std::array<std::string_view, N>& fields) {
     std::size_t count = 0;
     std::size_t start = 0;
     for (;;) {
@@ -78,13 +77,27 @@ std::array<std::string_view, N> split_fields(std::string_view line, const line_r
         }
         ++count;
         if (comma == std::string_view::npos) {
-            break;
+            return count;
         }
         start = comma + 1;
     }
+}
+
+[[noreturn]] void fail_field_count(const line_reader& where, const std::string& expected,
+                                   const char* layout, std::size_t found) {
+    where.fail("expected " + expected + " comma-separated fields (" + layout + "), found " +
+               std::to_string(found));
+}
+
+// Splits `line` at commas into exactly N trimmed fields, or fails naming how
+// many fields the line really has.
+template <std::size_t N>
+std::array<std::string_view, N> split_fields(std::string_view line, const line_reader& where,
+                                             const char* record_name) {
+    std::array<std::string_view, N> fields;
+    const std::size_t count = split_at_commas(line, fields);
     if (count != N) {
-        where.fail(std::string("expected ") + std::to_string(N) + " comma-separated fields (" +
-                   record_name + "), found " + std::to_string(count));
+        fail_field_count(where, std::to_string(N), record_name, count);
     }
     return fields;
 }
@@ -93,8 +106,9 @@ std::string field_label(std::size_t index, const char* name) {
     return "field " + std::to_string(index + 1) + " (" + name + ")";
 }
 
-float parse_coordinate(std::string_view field, std::size_t index, const line_reader& where) {
-    const char* name = coord_name(static_cast<coord>(index));
+// The float in `field`, the field at 0-based `index` called `name`: every
+// number of the rectangle and pose files is read here.
+float parse_number(std::string_view field, std::size_t index, const char* name, const line_reader& where) {
     if (field.empty()) {
         where.fail(field_label(index, name) + " is empty");
     }
@@ -297,9 +311,40 @@ rect parse_rect_line(std::string_view line, const line_reader& where) {
     const auto fields = split_fields<coord_count>(line, where, "ulx,uly,urx,ury,lrx,lry,llx,lly");
     float v[coord_count];
     for (std::size_t k = 0; k < coord_count; ++k) {
-        v[k] = parse_coordinate(fields[k], k, where);
+        v[k] = parse_number(fields[k], k, coord_name(static_cast<coord>(k)), where);
     }
     return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+}
+
+rect_pose parse_pose_line(std::string_view line, const line_reader& where) {
+    // Field 5 is the angle on a line of five fields, c on a line of six.
+    constexpr const char* names[6] = {"cx", "cy", "hx", "hy", "c", "s"};
+    std::array<std::string_view, 6> fields;
+    const std::size_t count = split_at_commas(line, fields);
+    if (count != 5 && count != 6) {
+        fail_field_count(where, "5 or 6", "cx,cy,hx,hy,angle or cx,cy,hx,hy,c,s", count);
+    }
+    const bool has_angle = count == 5;
+    float v[6] = {};  // the first `count` are set below
+    for (std::size_t k = 0; k < count; ++k) {
+        const char* name = has_angle && k == 4 ? "angle" : names[k];
+        v[k] = parse_number(fields[k], k, name, where);
+        // -0 and values that round to -0 are zero, and accepted.
+        if ((k == 2 || k == 3) && v[k] < 0.0f) {
+            where.fail(field_label(k, name) + ": " + quoted(fields[k]) +
+                       " is negative (a half extent must be >= 0)");
+        }
+    }
+    const point center{v[0], v[1]};
+    const point half_extents{v[2], v[3]};
+    if (has_angle) {
+        return rect_pose_of(pose{center, half_extents, v[4]});
+    }
+    if (v[4] == 0.0f && v[5] == 0.0f) {
+        where.fail("fields 5 and 6 (c, s): " + quoted(fields[4]) + ", " + quoted(fields[5]) +
+                   " make the rotation vector (0, 0), which has no direction");
+    }
+    return rect_pose{center, half_extents, point{v[4], v[5]}};
 }
 
 pair_index parse_pair_line(std::string_view line, const line_reader& where,
@@ -322,31 +367,38 @@ pair_index parse_pair_line(std::string_view line, const line_reader& where,
 
 namespace {
 
-template <class Store>
-Store read_rects_into(line_reader& lines, std::uint64_t max_rects) {
-    Store rects;
+// Every record of `lines` parsed by `parse`, into a store of `Store`; `plural`
+// names the records in the error for more than `max_records` of them.
+template <class Store, class Parse>
+Store read_records(line_reader& lines, std::uint64_t max_records, const std::string& plural,
+                   Parse parse) {
+    Store store;
     std::string_view line;
     while (lines.next(line)) {
         if (is_skipped_line(line)) {
             continue;
         }
-        if (rects.size() >= max_rects) {
-            lines.fail("more than " + std::to_string(max_rects) +
-                       " rectangles; pairs index rectangles with 32-bit indices");
+        if (store.size() >= max_records) {
+            lines.fail("more than " + std::to_string(max_records) + " " + plural + "; pairs index " +
+                       plural + " with 32-bit indices");
         }
-        rects.push_back(parse_rect_line(line, lines));
+        store.push_back(parse(line, lines));
     }
-    return rects;
+    return store;
 }
 
 }  // namespace
 
 rect_soa read_rects(line_reader& lines, std::uint64_t max_rects) {
-    return read_rects_into<rect_soa>(lines, max_rects);
+    return read_records<rect_soa>(lines, max_rects, "rectangles", parse_rect_line);
 }
 
 rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects) {
-    return read_rects_into<rect_records>(lines, max_rects);
+    return read_records<rect_records>(lines, max_rects, "rectangles", parse_rect_line);
+}
+
+pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses) {
+    return read_records<pose_records>(lines, max_poses, "poses", parse_pose_line);
 }
 
 rect_soa read_rects_file(const std::string& path) {

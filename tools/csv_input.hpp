@@ -1,6 +1,7 @@
-// Readers for the CLI's two input files, with errors that name file and line.
+// Readers for the CLI's input files (rectangles as corners or as poses, and
+// pairs), with errors that name file and line.
 //
-// Format, shared by both files:
+// Format, shared by every file:
 //   - One record per line; a line ends at "\n" or "\r\n"; the last line may
 //     lack its line end. A UTF-8 byte order mark at the start is ignored.
 //   - A line that is empty or holds only blanks (space, tab) is skipped, and so
@@ -10,12 +11,19 @@
 //     strtof reads completely in the "C" locale (decimal or C99 hex float). A
 //     value that overflows float, or is an infinity or a NaN, is rejected; a
 //     value that rounds to a subnormal or to zero is accepted as rounded.
+//   - Pose file: per line either 6 fields cx,cy,hx,hy,c,s (obbsat/rect_pose.hpp)
+//     or 5 fields cx,cy,hx,hy,angle (radians, turned into (c, s) by
+//     rect_pose_of(const pose&)); the two kinds of line may be mixed. Numbers
+//     as in the rectangle file; a half extent below zero (-0 is zero) and a
+//     rotation vector (0, 0) are rejected.
 //   - Pair file: 2 fields i,j, each an unsigned decimal index below the number
-//     of rectangles (so at most 4294967294).
+//     of rectangles or poses (so at most 4294967294).
 // Line numbers count every line of the file from 1, skipped lines included.
 #pragma once
 
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 
@@ -122,6 +130,9 @@ bool is_skipped_line(std::string_view line);
 /// The rectangle on one line (8 fields); throws input_error through `where`.
 rect parse_rect_line(std::string_view line, const line_reader& where);
 
+/// The pose on one line (5 or 6 fields); throws input_error through `where`.
+rect_pose parse_pose_line(std::string_view line, const line_reader& where);
+
 /// The pair on one line (2 fields), each index below `rect_count`; throws
 /// input_error through `where`, naming `rect_file` when an index is out of range.
 pair_index parse_pair_line(std::string_view line, const line_reader& where,
@@ -134,6 +145,10 @@ rect_soa read_rects(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
 /// Every rectangle of `lines`, as packed records (the faster store for pair
 /// lists, see rect_records.hpp); the same checks as read_rects.
 rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
+
+/// Every pose of `lines`, as packed records; more than `max_poses` poses is an
+/// error, as for read_rects.
+pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses = UINT32_MAX);
 
 /// Every rectangle of the file at `path`.
 rect_soa read_rects_file(const std::string& path);

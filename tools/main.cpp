@@ -35,7 +35,7 @@ struct subcommand {
 };
 
 constexpr subcommand subcommands[] = {
-    {"collide", "verdicts for the pairs of a pair file over a rectangle file", run_collide,
+    {"collide", "verdicts for a pair file over rectangles, as corners or as poses", run_collide,
      print_collide_help},
     {"backends", "the backends compiled in, which this CPU runs, and which 'auto' picks",
      run_backends, print_backends_help},
@@ -72,7 +72,8 @@ void print_main_help(std::FILE* out) {
                  "exit status: 0 success, 1 internal error, 2 bad usage or bad input\n"
                  "\n"
                  "example:\n"
-                 "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt\n");
+                 "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt\n"
+                 "  obbsat collide --poses poses.csv --pairs pairs.csv\n");
 }
 
 void report(const std::string& message) { std::fprintf(stderr, "obbsat: %s\n", message.c_str()); }

@@ -2,10 +2,16 @@
 // line number and reason of the error.
 #include "csv_input.hpp"
 
+#include <obbsat/pose.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/rect_pose.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -404,6 +410,176 @@ TEST(csv_input, reads_files_and_names_missing_ones) {
     } catch (const input_error& e) {
         EXPECT_EQ(e.line(), 0u);
         EXPECT_EQ(std::string(e.what()), std::string(path) + ": cannot open: No such file or directory");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Pose files: cx,cy,hx,hy,c,s or cx,cy,hx,hy,angle per line.
+
+using obbsat::point;
+using obbsat::pose_records;
+using obbsat::rect_pose;
+
+pose_records poses_of(const std::string& text,
+                      std::size_t chunk_bytes = line_reader::default_chunk_bytes) {
+    line_reader lines(text, "Q.csv", chunk_bytes);
+    return obbsat::io::read_pose_records(lines);
+}
+
+input_error pose_error(const std::string& text,
+                       std::size_t chunk_bytes = line_reader::default_chunk_bytes) {
+    try {
+        poses_of(text, chunk_bytes);
+    } catch (const input_error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for pose text:\n" << text;
+    return input_error("", 0, "");
+}
+
+// The six floats of a pose, in file order.
+std::vector<float> pose_values(const rect_pose& p) {
+    return {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y};
+}
+
+bool same_bits(const rect_pose& x, const rect_pose& y) {
+    const std::vector<float> a = pose_values(x);
+    const std::vector<float> b = pose_values(y);
+    return std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+TEST(csv_input_poses, reads_rotation_vectors_exactly) {
+    const pose_records poses =
+        poses_of("1.5,-2,0.1,3e2,0.6,0.8\n0x1.8p+1, -0x1p-149 ,0X1P-3,0,-1,0\n1e-50,0,0,1,0,-0x1.000002p+0\n");
+    ASSERT_EQ(poses.size(), 3u);
+    EXPECT_EQ(pose_values(poses[0]), (std::vector<float>{1.5f, -2.0f, 0.1f, 300.0f, 0.6f, 0.8f}));
+    EXPECT_EQ(pose_values(poses[1]), (std::vector<float>{3.0f, -std::numeric_limits<float>::denorm_min(),
+                                                         0.125f, 0.0f, -1.0f, 0.0f}));
+    EXPECT_EQ(pose_values(poses[2]), (std::vector<float>{0.0f, 0.0f, 0.0f, 1.0f, 0.0f, -(1.0f + FLT_EPSILON)}));
+}
+
+TEST(csv_input_poses, reads_angles_through_rect_pose_of) {
+    const pose_records poses = poses_of("# cx,cy,hx,hy,angle\n0,0,2,1,0.3\n-7.5,0x1p20,0.5,4,-0x1.921fb6p+1\n");
+    ASSERT_EQ(poses.size(), 2u);
+    const obbsat::pose first{{0, 0}, {2, 1}, 0.3f};
+    const obbsat::pose second{{-7.5f, 1048576.0f}, {0.5f, 4.0f}, -3.14159274f};
+    EXPECT_TRUE(same_bits(poses[0], obbsat::rect_pose_of(first)));
+    EXPECT_TRUE(same_bits(poses[1], obbsat::rect_pose_of(second)));
+    EXPECT_EQ(poses[0].rotation.x, static_cast<float>(std::cos(static_cast<double>(0.3f))));
+    EXPECT_EQ(poses[0].rotation.y, static_cast<float>(std::sin(static_cast<double>(0.3f))));
+}
+
+TEST(csv_input_poses, mixes_angle_and_rotation_lines_in_one_file) {
+    const pose_records poses = poses_of("0,0,1,1,0\r\n\n0,0,1,1,1,0\n  # c\n0,0,1,1,0,1\n0,0,1,1,1.5");
+    ASSERT_EQ(poses.size(), 4u);
+    EXPECT_TRUE(same_bits(poses[0], poses[1]));
+    EXPECT_EQ(poses[2].rotation.x, 0.0f);
+    EXPECT_EQ(poses[3].rotation.x, static_cast<float>(std::cos(1.5)));
+}
+
+TEST(csv_input_poses, accepts_zero_half_extents_negative_zero_included) {
+    const pose_records poses = poses_of("0,0,0,0,1,0\n0,0,-0,-0x0p+0,1,0\n0,0,-1e-50,1,1,0\n");
+    ASSERT_EQ(poses.size(), 3u);
+    EXPECT_EQ(poses[1].half_extents.x, 0.0f);
+    EXPECT_EQ(poses[2].half_extents.x, 0.0f);
+}
+
+TEST(csv_input_poses, rejects_negative_half_extents_naming_the_field) {
+    const input_error e = pose_error("0,0,1,1,1,0\n# c\n0,0,1,-1,1,0\n");
+    EXPECT_EQ(e.file(), "Q.csv");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.reason(), "field 4 (hy): '-1' is negative (a half extent must be >= 0)");
+    EXPECT_EQ(std::string(e.what()), "Q.csv:3: " + e.reason());
+    EXPECT_EQ(pose_error("0,0,-0x1p-149,1,1,0\n").reason(),
+              "field 3 (hx): '-0x1p-149' is negative (a half extent must be >= 0)");
+    EXPECT_EQ(pose_error("0,0,-2,1,0.5\n").reason(),
+              "field 3 (hx): '-2' is negative (a half extent must be >= 0)");
+    // Fields are checked in order: a bad number after a negative half extent is not reached.
+    EXPECT_EQ(pose_error("0,0,-2,x,1,0\n").reason(),
+              "field 3 (hx): '-2' is negative (a half extent must be >= 0)");
+}
+
+TEST(csv_input_poses, rejects_a_zero_rotation_vector) {
+    const input_error e = pose_error("0,0,1,1,1,0\n0,0,1,1,0,-0\n");
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.reason(), "fields 5 and 6 (c, s): '0', '-0' make the rotation vector (0, 0), which has no "
+                          "direction");
+    // Values that round to zero are zero.
+    EXPECT_EQ(pose_error("0,0,1,1,1e-50,0x0.0p0\n").reason(),
+              "fields 5 and 6 (c, s): '1e-50', '0x0.0p0' make the rotation vector (0, 0), which has no "
+              "direction");
+}
+
+TEST(csv_input_poses, rejects_non_finite_and_overflowing_values) {
+    EXPECT_EQ(pose_error("nan,0,1,1,1,0\n").reason(), "field 1 (cx): 'nan' is not finite");
+    EXPECT_EQ(pose_error("0,0,1,1,1,-inf\n").reason(), "field 6 (s): '-inf' is not finite");
+    EXPECT_EQ(pose_error("0,0,1,1,inf\n").reason(), "field 5 (angle): 'inf' is not finite");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0\n0,0,1e39,1,1,0\n").reason(),
+              "field 3 (hx): '1e39' is out of float range (magnitude above 3.40282347e+38)");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0\n0,0,1e39,1,1,0\n").line(), 2u);
+    EXPECT_EQ(pose_error("0,0,1,1,0x1p128\n").reason(),
+              "field 5 (angle): '0x1p128' is out of float range (magnitude above 3.40282347e+38)");
+}
+
+TEST(csv_input_poses, rejects_garbage_and_empty_fields) {
+    EXPECT_EQ(pose_error("0,0,1,1,1,0x\n").reason(), "field 6 (s): '0x' is not a number");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0 trailing\n").reason(), "field 6 (s): '0 trailing' is not a number");
+    EXPECT_EQ(pose_error("0,0,1,1,0.5rad\n").reason(), "field 5 (angle): '0.5rad' is not a number");
+    EXPECT_EQ(pose_error("0,,1,1,1,0\n").reason(), "field 2 (cy) is empty");
+    EXPECT_EQ(pose_error("0,0,1,1,\n").reason(), "field 5 (angle) is empty");
+    EXPECT_EQ(pose_error("0,0,1,1,1,\n").reason(), "field 6 (s) is empty");
+}
+
+TEST(csv_input_poses, rejects_wrong_field_counts) {
+    const std::string layout = "(cx,cy,hx,hy,angle or cx,cy,hx,hy,c,s)";
+    EXPECT_EQ(pose_error("0,0,1,1\n").reason(), "expected 5 or 6 comma-separated fields " + layout + ", found 4");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0,0\n").reason(),
+              "expected 5 or 6 comma-separated fields " + layout + ", found 7");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0\n" + unit_rect + "\n").reason(),
+              "expected 5 or 6 comma-separated fields " + layout + ", found 8");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0\n" + unit_rect + "\n").line(), 2u);
+    EXPECT_EQ(pose_error("x\n").reason(), "expected 5 or 6 comma-separated fields " + layout + ", found 1");
+}
+
+TEST(csv_input_poses, skips_what_the_rectangle_reader_skips) {
+    const std::string bom = "\xef\xbb\xbf";
+    EXPECT_EQ(poses_of(bom + "# header\n\n \t\n0,0,1,1,1,0\r\n0,0,1,1,0").size(), 2u);
+    EXPECT_EQ(poses_of("").size(), 0u);
+    EXPECT_EQ(poses_of("# only a comment").size(), 0u);
+}
+
+TEST(csv_input_poses, limits_the_number_of_poses) {
+    const std::string text = "0,0,1,1,1,0\n# c\n0,0,1,1,0\n0,0,1,1,0\n";
+    line_reader lines(text, "Q.csv");
+    try {
+        obbsat::io::read_pose_records(lines, 2);
+        FAIL() << "no error";
+    } catch (const input_error& e) {
+        EXPECT_EQ(e.line(), 4u);
+        EXPECT_EQ(e.reason(), "more than 2 poses; pairs index poses with 32-bit indices");
+    }
+}
+
+TEST(csv_input_poses, results_do_not_depend_on_chunk_boundaries) {
+    std::string text = "# poses\r\n";
+    for (int i = 0; i < 40; ++i) {
+        text += std::to_string(i) + ".25, 0x1.8p" + std::to_string(i % 5) + ",1,2" +
+                (i % 2 == 0 ? ",0.6,-0.8" : ", 0.1") + (i % 3 == 0 ? "\r\n" : "\n") + (i % 7 == 0 ? "\n" : "");
+    }
+    const pose_records want = poses_of(text);
+    ASSERT_EQ(want.size(), 40u);
+    const std::string bad_text = text + "0,0,1,1,1,0\n0,0,1,-3,0.5\n";
+    const input_error want_error = pose_error(bad_text);
+    EXPECT_EQ(want_error.line(), 49u);
+    for (std::size_t chunk = 1; chunk <= 70; ++chunk) {
+        const pose_records got = poses_of(text, chunk);
+        ASSERT_EQ(got.size(), want.size()) << "chunk " << chunk;
+        for (std::size_t i = 0; i < want.size(); ++i) {
+            ASSERT_TRUE(same_bits(got[i], want[i])) << "chunk " << chunk << ", pose " << i;
+        }
+        const input_error got_error = pose_error(bad_text, chunk);
+        EXPECT_EQ(got_error.line(), want_error.line()) << "chunk " << chunk;
+        EXPECT_EQ(got_error.reason(), want_error.reason()) << "chunk " << chunk;
     }
 }
 

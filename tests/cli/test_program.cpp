@@ -10,6 +10,7 @@
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 #include <obbsat/ref/conservative.hpp>
 #include <obbsat/ref/sat4.hpp>
 #include <obbsat/ref/sat4_centered.hpp>
@@ -19,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -36,6 +38,8 @@ using obbsat::method;
 using obbsat::pair_index;
 using obbsat::point;
 using obbsat::rect;
+using obbsat::rect_pose;
+using obbsat::store_kind;
 
 using obbsat::cli_test::read_file;
 using obbsat::cli_test::run_result;
@@ -43,10 +47,11 @@ using obbsat::cli_test::scratch;
 using obbsat::cli_test::write_file;
 
 const std::string unit_rect = "0,1,1,1,1,0,0,0\n";
+const std::string unit_pose = "0.5,0.5,0.5,0.5,1,0\n";  // the same unit square
 
-std::string method_list() {
+std::string method_list(const std::vector<method>& methods = obbsat::all_methods()) {
     std::string known;
-    for (const method m : obbsat::all_methods()) {
+    for (const method m : methods) {
         known += (known.empty() ? "" : ", ") + std::string(obbsat::method_name(m));
     }
     return known;
@@ -94,7 +99,11 @@ TEST(program, collide_usage_errors_exit_2_with_the_reason) {
     const std::string see = " (see 'obbsat collide --help')\n";
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"collide --rects R.csv", "missing required option --pairs"},
-        {"collide --pairs P.csv", "missing required option --rects"},
+        {"collide --pairs P.csv", "missing required option --rects or --poses"},
+        {"collide --rects R.csv --poses R.csv --pairs P.csv",
+         "--rects and --poses both given; the rectangles come from one of them"},
+        {"collide --poses R.csv", "missing required option --pairs"},
+        {"collide --poses - --pairs -", "--poses and --pairs cannot both read standard input ('-')"},
         {"collide " + files + "--bogus 1", "unknown option --bogus"},
         {"collide " + files + "extra", "unexpected argument 'extra'"},
         {"collide " + files + "--rects R.csv", "option --rects given twice"},
@@ -114,6 +123,63 @@ TEST(program, collide_usage_errors_exit_2_with_the_reason) {
         EXPECT_EQ(r.err, "obbsat: collide: " + reason + see) << args;
         EXPECT_EQ(r.out, "") << args;
     }
+}
+
+TEST(program, collide_help_states_both_files_and_the_methods_on_each) {
+    const scratch s;
+    const run_result r = s.run("collide --help");
+    ASSERT_EQ(r.status, 0);
+    const std::vector<std::string> expected = {
+        "(--rects FILE | --poses FILE)",
+        "--poses FILE",
+        "'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle'",
+        "default: sat4 on --rects, local on --poses",
+        "on --rects: " + method_list(obbsat::methods_on(store_kind::corners)) + "\n",
+        "on --poses: " + method_list(obbsat::methods_on(store_kind::poses)) + "\n",
+        "angle in radians",
+        "obbsat collide --poses"};
+    for (const std::string& text : expected) {
+        EXPECT_NE(r.out.find(text), std::string::npos) << text << " not in\n" << r.out;
+    }
+    const run_result main_help = s.run("--help");
+    EXPECT_NE(main_help.out.find("--poses"), std::string::npos) << main_help.out;
+}
+
+// A method is checked against the store before any file is read: the message
+// names the method, the store and the methods that run there.
+TEST(program, a_method_that_does_not_run_on_the_store_is_a_usage_error) {
+    const scratch s;
+    write_file(s.file("R.csv"), unit_rect);
+    write_file(s.file("Q.csv"), unit_pose);
+    write_file(s.file("P.csv"), "0,0\n");
+    write_file(s.file("v.txt"), "previous verdicts\n");
+    std::size_t refused = 0;
+    for (const store_kind store : {store_kind::corners, store_kind::poses}) {
+        const std::string option = store == store_kind::corners ? "rects" : "poses";
+        const std::string file = store == store_kind::corners ? "R.csv" : "Q.csv";
+        for (const method m : obbsat::all_methods()) {
+            if (obbsat::runs_on(m, store)) {
+                continue;
+            }
+            const std::string name = obbsat::method_name(m);
+            const std::string args = "collide --" + option + " " + file + " --pairs P.csv --method " + name;
+            const run_result r = s.run(args + " --out v.txt");
+            EXPECT_EQ(r.status, 2) << args;
+            const std::string store_text = obbsat::store_name(store);
+            EXPECT_EQ(r.err, "obbsat: collide: --method " + name + " does not run on " + store_text + " (--" +
+                                 option + "); the methods on " + store_text + " are " +
+                                 method_list(obbsat::methods_on(store)) + " (see 'obbsat collide --help')\n")
+                << args;
+            EXPECT_EQ(r.out, "") << args;
+            EXPECT_EQ(read_file(s.file("v.txt")), "previous verdicts\n") << args;
+            // Refused before the files are opened.
+            EXPECT_EQ(s.run("collide --" + option + " missing.csv --pairs P.csv --method " + name).err,
+                      r.err)
+                << args;
+            ++refused;
+        }
+    }
+    EXPECT_GT(refused, 0u);
 }
 
 TEST(program, demo_usage_errors_exit_2) {
@@ -136,6 +202,7 @@ protected:
         write_file(s.file("v.txt"), "previous verdicts\n");
         write_file(s.file("R.csv"), "# ulx,uly,urx,ury,lrx,lry,llx,lly\n" + unit_rect + unit_rect);
         write_file(s.file("P.csv"), "0,1\n1,0\n");
+        write_file(s.file("Q.csv"), "# cx,cy,hx,hy,c,s\n" + unit_pose + unit_pose);
     }
 
     // Runs collide with --out v.txt and checks the common promises.
@@ -256,6 +323,78 @@ TEST_F(bad_input, a_backend_this_cpu_lacks_is_rejected) {
     if (!tested) {
         GTEST_SKIP() << "this CPU runs every compiled backend";
     }
+}
+
+TEST_F(bad_input, a_negative_half_extent_in_a_pose_names_file_line_and_field) {
+    write_file(s.file("neg.csv"), "# poses\n" + unit_pose + "0,0,1,1,0.5\n\n" + unit_pose + "# c\n" +
+                                      "3,4,1,-1,1,0\n");
+    expect_rejected("--poses neg.csv --pairs P.csv",
+                    "neg.csv:7: field 4 (hy): '-1' is negative (a half extent must be >= 0)");
+    write_file(s.file("neg5.csv"), "-0x1p-3,0,-0x1p-3,1,2\n");
+    expect_rejected("--poses neg5.csv --pairs P.csv",
+                    "neg5.csv:1: field 3 (hx): '-0x1p-3' is negative (a half extent must be >= 0)");
+}
+
+TEST_F(bad_input, a_zero_rotation_vector_is_rejected) {
+    write_file(s.file("zero.csv"), unit_pose + "1,1,1,1, 0 ,-0x0p+0\r\n");
+    expect_rejected("--poses zero.csv --pairs P.csv",
+                    "zero.csv:2: fields 5 and 6 (c, s): '0', '-0x0p+0' make the rotation vector (0, 0), "
+                    "which has no direction");
+}
+
+TEST_F(bad_input, a_non_finite_or_overflowing_pose_value_is_rejected) {
+    write_file(s.file("nan.csv"), unit_pose + "0,0,1,1,nan,0\n");
+    expect_rejected("--poses nan.csv --pairs P.csv", "nan.csv:2: field 5 (c): 'nan' is not finite");
+    write_file(s.file("inf.csv"), "0,0,1,1,-inf\n");
+    expect_rejected("--poses inf.csv --pairs P.csv", "inf.csv:1: field 5 (angle): '-inf' is not finite");
+    write_file(s.file("big.csv"), unit_pose + unit_pose + "0,0x1p128,1,1,1,0\n");
+    expect_rejected("--poses big.csv --pairs P.csv",
+                    "big.csv:3: field 2 (cy): '0x1p128' is out of float range (magnitude above "
+                    "3.40282347e+38)");
+}
+
+TEST_F(bad_input, a_wrong_pose_field_count_is_rejected) {
+    const std::string layout = "(cx,cy,hx,hy,angle or cx,cy,hx,hy,c,s)";
+    write_file(s.file("four.csv"), "0,0,1,1\n");
+    expect_rejected("--poses four.csv --pairs P.csv",
+                    "four.csv:1: expected 5 or 6 comma-separated fields " + layout + ", found 4");
+    write_file(s.file("seven.csv"), unit_pose + "0,0,1,1,1,0,0\n");
+    expect_rejected("--poses seven.csv --pairs P.csv",
+                    "seven.csv:2: expected 5 or 6 comma-separated fields " + layout + ", found 7");
+    // A corner file given as poses.
+    expect_rejected("--poses R.csv --pairs P.csv",
+                    "R.csv:2: expected 5 or 6 comma-separated fields " + layout + ", found 8");
+}
+
+TEST_F(bad_input, trailing_garbage_in_a_pose_field_is_rejected) {
+    write_file(s.file("junk.csv"), unit_pose + "0,0,1,1,1,0;\n");
+    expect_rejected("--poses junk.csv --pairs P.csv", "junk.csv:2: field 6 (s): '0;' is not a number");
+    write_file(s.file("rad.csv"), "0,0,1,1,0.25rad\n");
+    expect_rejected("--poses rad.csv --pairs P.csv", "rad.csv:1: field 5 (angle): '0.25rad' is not a number");
+}
+
+TEST_F(bad_input, pair_indices_are_checked_against_the_pose_count) {
+    write_file(s.file("far.csv"), "0,1\n\n1,2\n");
+    expect_rejected("--poses Q.csv --pairs far.csv",
+                    "far.csv:3: index 2 is out of range: Q.csv holds 2 rectangles (indices 0 to 1)");
+    write_file(s.file("none.csv"), "# no poses\n");
+    expect_rejected("--poses none.csv --pairs P.csv",
+                    "P.csv:1: index 0 refers to a rectangle, but none.csv holds none");
+}
+
+TEST_F(bad_input, a_bad_pose_line_on_standard_input_is_named_stdin) {
+    write_file(s.file("bad_poses.csv"), unit_pose + "0,0,1,1,1\n0,0,1,1,1,0,1\n");
+    const run_result r = s.run("collide --poses - --pairs P.csv --out v.txt", "",
+                               "< '" + s.file("bad_poses.csv").string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "obbsat: <stdin>:3: expected 5 or 6 comma-separated fields "
+                     "(cx,cy,hx,hy,angle or cx,cy,hx,hy,c,s), found 7\n");
+    EXPECT_EQ(read_file(s.file("v.txt")), "previous verdicts\n");
+}
+
+TEST_F(bad_input, a_missing_pose_file_is_rejected) {
+    expect_rejected("--poses nothere.csv --pairs P.csv",
+                    "nothere.csv: cannot open: No such file or directory");
 }
 
 // ---------------------------------------------------------------------------
@@ -642,6 +781,330 @@ TEST_P(verdicts_per_backend, identical_bytes_to_the_reference) {
 
 INSTANTIATE_TEST_SUITE_P(every_backend, verdicts_per_backend,
                          ::testing::ValuesIn(every_backend_run()), backend_run_name);
+
+// ---------------------------------------------------------------------------
+// Poses (--poses): every method on poses against its scalar reference.
+
+// Poses meant to be hard, each with the line that writes it: squares that touch
+// along edges and at corners, written with every axis-aligned rotation vector
+// and with vectors of length 2 and 1/8 (half extents scaled to match, so the
+// same square); squares turned by the integer vector (3, 4), neighbours exactly
+// touching; random poses near each other, far from the origin, tiny, huge,
+// points and segments, half of them as angle lines (5 fields).
+struct hard_pose_input {
+    std::string text;
+    std::vector<rect_pose> poses;  // what the program must read from `text`
+    std::vector<pair_index> pairs;
+};
+
+hard_pose_input make_hard_pose_input() {
+    hard_pose_input in;
+    in.text = "# hard cases: cx,cy,hx,hy,c,s or cx,cy,hx,hy,angle\n";
+    obbsat::seeded_random random(20261122);
+    char line[256];
+    auto add = [&](const rect_pose& p, bool hex) {
+        const char* format = hex ? "%a,%a,%a,%a,%a,%a" : "%.9g, %.9g, %.9g, %.9g, %.9g, %.9g";
+        std::snprintf(line, sizeof line, format, static_cast<double>(p.center.x),
+                      static_cast<double>(p.center.y), static_cast<double>(p.half_extents.x),
+                      static_cast<double>(p.half_extents.y), static_cast<double>(p.rotation.x),
+                      static_cast<double>(p.rotation.y));
+        in.text += line;
+        in.text += in.poses.size() % 5 == 0 ? "\r\n" : "\n";
+        in.poses.push_back(p);
+    };
+    auto add_angle = [&](const obbsat::pose& p) {
+        const char* format = in.poses.size() % 3 == 0 ? "%a,%a,%a,%a,%a" : "%.9g,%.9g,%.9g,%.9g,%.9g";
+        std::snprintf(line, sizeof line, format, static_cast<double>(p.center.x),
+                      static_cast<double>(p.center.y), static_cast<double>(p.half_extents.x),
+                      static_cast<double>(p.half_extents.y), static_cast<double>(p.angle));
+        in.text += line;
+        in.text += "\n";
+        in.poses.push_back(obbsat::rect_pose_of(p));
+    };
+    auto pair = [&](std::size_t a, std::size_t b) {
+        in.pairs.push_back(pair_index{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+    };
+    auto neighbours = [&](std::size_t first, int n) {
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                for (int dy = -2; dy <= 2; ++dy) {
+                    for (int dx = -2; dx <= 2; ++dx) {
+                        const int u = x + dx, v = y + dy;
+                        if (u >= 0 && v >= 0 && u < n && v < n) {
+                            pair(first + static_cast<std::size_t>(y * n + x),
+                                 first + static_cast<std::size_t>(v * n + u));
+                        }
+                    }
+                }
+            }
+        }
+    };
+
+    struct grid {
+        float origin;
+        float half;
+    };
+    // Rotation vectors that give the same square when the half extents are
+    // divided by their length.
+    const point rotations[] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {2, 0}, {0, -0.125f}};
+    for (const grid g : {grid{0.0f, 0.5f}, grid{1048576.0f, 0.5f}, grid{16777216.0f, 2.0f},
+                         grid{-33554432.0f, 4.0f}}) {
+        const std::size_t first = in.poses.size();
+        constexpr int n = 6;
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                const point r = rotations[static_cast<std::size_t>(y * n + x) % 6];
+                const float length = std::max(std::abs(r.x), std::abs(r.y));
+                const float h = g.half / length;
+                add(rect_pose{{g.origin + static_cast<float>(2 * x) * g.half,
+                               g.origin + static_cast<float>(2 * y) * g.half},
+                              {h, h},
+                              r},
+                    (x + y) % 2 == 0);
+            }
+        }
+        neighbours(first, n);
+    }
+    // Turned by (3, 4): local x along (3, 4), local y along (-4, 3), each
+    // half extent 1 spans 5 units; neighbours at (6, 8) and (-8, 6) touch.
+    for (const float origin : {0.0f, 4096.0f, -1048576.0f}) {
+        const std::size_t first = in.poses.size();
+        constexpr int n = 5;
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                const point center{origin + static_cast<float>(6 * x - 8 * y),
+                                   origin + static_cast<float>(8 * x + 6 * y)};
+                add(rect_pose{center, {1, 1}, {3, 4}}, x % 2 == 0);
+            }
+        }
+        neighbours(first, n);
+    }
+
+    // Unit squares a few ulps apart, and a few ulps overlapping, along x: the
+    // float test sees every gap, a guarded test cannot.
+    for (int k = -4; k <= 12; ++k) {
+        const float step = 0x1p-23f * static_cast<float>(k);
+        const point r = rotations[static_cast<std::size_t>(k + 4) % 6];
+        const float h = 0.5f / std::max(std::abs(r.x), std::abs(r.y));
+        const std::size_t first = in.poses.size();
+        add(rect_pose{{0.0f, 0.0f}, {0.5f, 0.5f}, {1, 0}}, k % 2 == 0);
+        add(rect_pose{{1.0f + step, 0.25f * static_cast<float>(k % 3)}, {h, h}, r}, k % 2 != 0);
+        pair(first, first + 1);
+        pair(first + 1, first);
+    }
+
+    struct cluster {
+        float center;
+        float spread;
+        float scale;
+    };
+    for (const cluster c : {cluster{0.0f, 8.0f, 1.0f}, cluster{1.0e7f, 8.0f, 1.0f},
+                            cluster{-3.0e5f, 6.0f, 1.0f}, cluster{0.0f, 8.0f, 1e-30f},
+                            cluster{0.0f, 8.0f, 3e18f}}) {
+        const std::size_t first = in.poses.size();
+        constexpr std::size_t n = 150;
+        for (std::size_t i = 0; i < n; ++i) {
+            obbsat::pose p;
+            p.center = point{c.center + random.uniform(0.0f, c.spread) * c.scale,
+                             c.center + random.uniform(0.0f, c.spread) * c.scale};
+            p.half_extents =
+                point{random.uniform(0.5f, 3.0f) * c.scale, random.uniform(0.5f, 3.0f) * c.scale};
+            p.angle = random.uniform(-3.2f, 3.2f);
+            if (i % 25 == 0) {
+                p.half_extents = point{0.0f, 0.0f};  // a point
+            } else if (i % 25 == 1) {
+                p.half_extents.y = 0.0f;  // a segment
+            }
+            if (i % 2 == 0) {
+                add_angle(p);
+            } else {
+                add(obbsat::rect_pose_of(p), i % 4 == 1);
+            }
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t k = 1; k <= 6; ++k) {
+                pair(first + i, first + (i + k * 7) % n);
+            }
+        }
+    }
+
+    for (int k = 0; k < 300; ++k) {
+        pair(random.below(in.poses.size()), random.below(in.poses.size()));
+    }
+    return in;
+}
+
+std::string pose_reference_verdicts(method m, const std::vector<rect_pose>& poses,
+                                    const std::vector<pair_index>& pairs) {
+    const obbsat::pose_reference_fn reference = obbsat::pose_method_reference(m);
+    std::string text;
+    for (const pair_index& p : pairs) {
+        text += reference(poses[p.a], poses[p.b]) ? "1\n" : "0\n";
+    }
+    return text;
+}
+
+class pose_verdicts : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        files_ = new scratch();
+        const hard_pose_input in = make_hard_pose_input();
+        write_file(files_->file("Q.csv"), in.text);
+        write_file(files_->file("P.csv"), pair_text(in.pairs));
+        references_ = new std::vector<std::string>(obbsat::method_count);
+        for (const method m : obbsat::methods_on(store_kind::poses)) {
+            (*references_)[static_cast<std::size_t>(m)] = pose_reference_verdicts(m, in.poses, in.pairs);
+        }
+    }
+    static void TearDownTestSuite() {
+        delete files_;
+        delete references_;
+        files_ = nullptr;
+        references_ = nullptr;
+    }
+
+    /// The expected verdict text of method `m` on the hard poses.
+    static const std::string& reference_of(method m) { return (*references_)[static_cast<std::size_t>(m)]; }
+
+    static scratch* files_;
+    static std::vector<std::string>* references_;  // indexed by method; empty where it does not run
+};
+
+scratch* pose_verdicts::files_ = nullptr;
+std::vector<std::string>* pose_verdicts::references_ = nullptr;
+
+TEST_F(pose_verdicts, the_hard_input_has_thousands_of_pairs_of_both_kinds) {
+    const std::string& local = reference_of(method::local);
+    const std::size_t lines = static_cast<std::size_t>(std::count(local.begin(), local.end(), '\n'));
+    EXPECT_GT(lines, 4000u);
+    const std::size_t ones = static_cast<std::size_t>(std::count(local.begin(), local.end(), '1'));
+    EXPECT_GT(ones, lines / 10);
+    EXPECT_LT(ones, lines - lines / 10);
+}
+
+TEST_F(pose_verdicts, the_default_method_on_poses_is_local) {
+    const run_result r = files_->run("collide --poses Q.csv --pairs P.csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.out, reference_of(method::local));
+}
+
+TEST_F(pose_verdicts, methods_on_poses_differ_on_the_hard_input) {
+    // Otherwise --method could be ignored on poses and every test here still pass.
+    const std::vector<method> methods = obbsat::methods_on(store_kind::poses);
+    ASSERT_GE(methods.size(), 2u);
+    bool some_differ = false;
+    for (const method m : methods) {
+        some_differ = some_differ || reference_of(m) != reference_of(methods.front());
+    }
+    EXPECT_TRUE(some_differ);
+}
+
+TEST_F(pose_verdicts, poses_and_pairs_read_from_standard_input_give_the_same_bytes) {
+    const run_result poses_piped = files_->run("collide --poses - --pairs P.csv --method local", "",
+                                               "< '" + files_->file("Q.csv").string() + "'");
+    ASSERT_EQ(poses_piped.status, 0) << poses_piped.err;
+    EXPECT_EQ(poses_piped.out, reference_of(method::local));
+    const run_result pairs_piped = files_->run("collide --poses Q.csv --pairs - --threads 0", "",
+                                               "< '" + files_->file("P.csv").string() + "'");
+    ASSERT_EQ(pairs_piped.status, 0) << pairs_piped.err;
+    EXPECT_EQ(pairs_piped.out, reference_of(method::local));
+    const run_result through_a_pipe =
+        files_->run_piped("Q.csv", "collide --poses - --pairs P.csv --out v_pipe.txt");
+    ASSERT_EQ(through_a_pipe.status, 0) << through_a_pipe.err;
+    EXPECT_EQ(read_file(files_->file("v_pipe.txt")), reference_of(method::local));
+}
+
+// Angle lines mean what obbsat::rect_pose_of(pose) makes of them: the same
+// verdicts as the six-field lines it returns, written exactly.
+TEST_F(pose_verdicts, angle_lines_equal_their_rotation_vectors) {
+    std::string angles;
+    std::string vectors;
+    std::string pairs;
+    char line[256];
+    obbsat::seeded_random random(77);
+    constexpr int n = 200;
+    for (int i = 0; i < n; ++i) {
+        const obbsat::pose p{{random.uniform(0.0f, 6.0f), random.uniform(0.0f, 6.0f)},
+                             {random.uniform(0.0f, 2.0f), random.uniform(0.0f, 2.0f)},
+                             random.uniform(-7.0f, 7.0f)};
+        std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g\n", static_cast<double>(p.center.x),
+                      static_cast<double>(p.center.y), static_cast<double>(p.half_extents.x),
+                      static_cast<double>(p.half_extents.y), static_cast<double>(p.angle));
+        angles += line;
+        const rect_pose r = obbsat::rect_pose_of(p);
+        std::snprintf(line, sizeof line, "%a,%a,%a,%a,%a,%a\n", static_cast<double>(r.center.x),
+                      static_cast<double>(r.center.y), static_cast<double>(r.half_extents.x),
+                      static_cast<double>(r.half_extents.y), static_cast<double>(r.rotation.x),
+                      static_cast<double>(r.rotation.y));
+        vectors += line;
+        for (int k = 1; k <= 5; ++k) {
+            pairs += std::to_string(i) + "," + std::to_string((i + 3 * k) % n) + "\n";
+        }
+    }
+    write_file(files_->file("angles.csv"), angles);
+    write_file(files_->file("vectors.csv"), vectors);
+    write_file(files_->file("angle_pairs.csv"), pairs);
+    for (const method m : obbsat::methods_on(store_kind::poses)) {
+        const std::string name = obbsat::method_name(m);
+        const run_result from_angles =
+            files_->run("collide --poses angles.csv --pairs angle_pairs.csv --method " + name);
+        const run_result from_vectors =
+            files_->run("collide --poses vectors.csv --pairs angle_pairs.csv --method " + name);
+        ASSERT_EQ(from_angles.status, 0) << name << ": " << from_angles.err;
+        ASSERT_EQ(from_vectors.status, 0) << name << ": " << from_vectors.err;
+        EXPECT_EQ(from_angles.out, from_vectors.out) << name;
+        EXPECT_NE(from_angles.out.find('1'), std::string::npos) << name;
+        EXPECT_NE(from_angles.out.find('0'), std::string::npos) << name;
+    }
+}
+
+TEST_F(pose_verdicts, empty_pose_and_pair_files_give_empty_output) {
+    write_file(files_->file("no_pairs.csv"), "# no pairs\n");
+    write_file(files_->file("no_poses.csv"), "\n# none\n");
+    for (const char* poses : {"Q.csv", "no_poses.csv"}) {
+        const run_result r = files_->run(std::string("collide --poses ") + poses +
+                                         " --pairs no_pairs.csv --out empty.txt");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_TRUE(fs::exists(files_->file("empty.txt")));
+        EXPECT_EQ(read_file(files_->file("empty.txt")), "");
+    }
+}
+
+// Every method on poses on every backend (those this CPU lacks are skipped).
+std::vector<backend_run> every_pose_backend_run() {
+    std::vector<backend_run> runs;
+    const std::pair<backend, unsigned> backends[] = {
+        {backend::scalar, 1}, {backend::scalar, 2}, {backend::sse2, 1},   {backend::sse2, 2},
+        {backend::avx2, 1},   {backend::avx2, 2},   {backend::avx512, 1}, {backend::avx512, 2},
+        {backend::automatic, 2}};
+    for (const method m : obbsat::methods_on(store_kind::poses)) {
+        for (const auto& [use, threads] : backends) {
+            runs.push_back(backend_run{m, use, threads});
+        }
+    }
+    return runs;
+}
+
+class pose_verdicts_per_backend : public pose_verdicts, public ::testing::WithParamInterface<backend_run> {};
+
+TEST_P(pose_verdicts_per_backend, identical_bytes_to_the_reference) {
+    const backend_run run = GetParam();
+    if (!obbsat::cpu_supports(run.use) && run.use != backend::automatic) {
+        GTEST_SKIP() << "this CPU or build lacks " << obbsat::backend_name(run.use);
+    }
+    const std::string name = obbsat::backend_name(run.use);
+    const std::string test = obbsat::method_name(run.test);
+    const std::string out = "v_" + test + "_" + name + "_" + std::to_string(run.threads) + ".txt";
+    const run_result r = files_->run("collide --poses Q.csv --pairs P.csv --method " + test + " --backend " +
+                                     name + " --threads " + std::to_string(run.threads) + " --out " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(read_file(files_->file(out)), reference_of(run.test));
+}
+
+INSTANTIATE_TEST_SUITE_P(every_backend, pose_verdicts_per_backend,
+                         ::testing::ValuesIn(every_pose_backend_run()), backend_run_name);
 
 // The labelled case families, when they are beside the project: the program's
 // verdicts must be the scalar reference's on exactly the floats in the files.

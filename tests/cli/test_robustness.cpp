@@ -1,14 +1,16 @@
 // The obbsat program on hostile input: binary garbage, directories, a line
 // past the length limit, both files on standard input, full devices, and
-// coordinates at the ends of the float range. Every refusal is exit status 2
-// with one "obbsat: ..." line naming the file (and line), --out untouched;
-// every accepted extreme input gives each method's reference verdicts.
+// corners and poses at the ends of the float range. Every refusal is exit
+// status 2 with one "obbsat: ..." line naming the file (and line), --out
+// untouched; every accepted extreme input gives each method's reference
+// verdicts.
 #include "csv_input.hpp"
 #include "program_runner.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 
 #include <gtest/gtest.h>
 
@@ -65,6 +67,9 @@ TEST(robustness, both_files_on_standard_input_are_refused) {
     write_file(s.file("in.txt"), unit_rect + "0,0\n");
     const run_result r = s.run("collide --rects - --pairs - --out v.txt", "", "< in.txt");
     expect_refused(s, r, "collide: --rects and --pairs cannot both read standard input ('-')", "both -");
+    const run_result poses = s.run("collide --poses - --pairs - --out v.txt", "", "< in.txt");
+    expect_refused(s, poses, "collide: --poses and --pairs cannot both read standard input ('-')",
+                   "both - with --poses");
 }
 
 TEST(robustness, a_directory_is_refused_as_either_input) {
@@ -104,6 +109,8 @@ TEST(robustness, binary_garbage_is_refused_with_file_and_line) {
         write_file(s.file("bad.csv"), bytes);
         const run_result as_rects = s.run("collide --rects bad.csv --pairs P.csv --out v.txt");
         expect_refused(s, as_rects, "bad.csv:", what + " as rectangles");
+        const run_result as_poses = s.run("collide --poses bad.csv --pairs P.csv --out v.txt");
+        expect_refused(s, as_poses, "bad.csv:", what + " as poses");
         const run_result as_pairs = s.run("collide --rects R.csv --pairs bad.csv --out v.txt");
         expect_refused(s, as_pairs, "bad.csv:", what + " as pairs");
     }
@@ -240,6 +247,77 @@ TEST(robustness, extreme_coordinates_give_every_reference_verdict_on_every_backe
         }
     }
     EXPECT_GE(runs, obbsat::methods_on(obbsat::store_kind::corners).size());
+}
+
+// Poses at the ends of the float range: the largest centers and half
+// extents, subnormal ones, rotation vectors far from unit length (the
+// largest, a subnormal one), and mixtures.
+std::vector<obbsat::rect_pose> extreme_poses() {
+    const float m = FLT_MAX;
+    const float d = 0x1p-149f;
+    return {
+        {{0, 0}, {m, m}, {1, 0}},
+        {{m, -m}, {m / 2, 0}, {0, 1}},
+        {{-m, m}, {m, m}, {-1, 0}},
+        {{m / 2, m / 2}, {1, 1}, {m, m}},
+        {{0, 0}, {1, 1}, {d, 0}},
+        {{0, 0}, {d, d}, {1, 0}},
+        {{3 * d, 0}, {d, d}, {0, -1}},
+        {{0, 0}, {0, 0}, {d, d}},
+        {{0x1p100f, 0x1p100f}, {0x1p80f, 0x1p80f}, {0.6f, 0.8f}},
+        {{1e30f, 0}, {1e30f, 1e-30f}, {0x1p-60f, 0x1p60f}},
+        {{0.5f, 0.5f}, {0.5f, 0.5f}, {1, 0}},
+        {{1.5f, 0.5f}, {0.5f, 0.5f}, {0, 2}},
+    };
+}
+
+TEST(robustness, extreme_poses_give_every_reference_verdict_on_every_backend) {
+    const scratch s;
+    const std::vector<obbsat::rect_pose> poses = extreme_poses();
+    std::string pose_text = "# ends of the float range, in hex floats\n";
+    for (const obbsat::rect_pose& p : poses) {
+        const float v[6] = {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x,
+                            p.rotation.y};
+        for (int k = 0; k < 6; ++k) {
+            pose_text += (k == 0 ? "" : ",") + hex(v[k]);
+        }
+        pose_text += "\n";
+    }
+    // The largest magnitudes as decimal text, with an angle: the same floats.
+    pose_text += "0,0,3.4028235e38,3.4028235e38,0\n";
+    std::vector<obbsat::rect_pose> all = poses;
+    all.push_back(poses[0]);
+    write_file(s.file("Q.csv"), pose_text);
+    std::string pair_text;
+    for (std::size_t a = 0; a < all.size(); ++a) {
+        for (std::size_t b = 0; b < all.size(); ++b) {
+            pair_text += std::to_string(a) + "," + std::to_string(b) + "\n";
+        }
+    }
+    write_file(s.file("P.csv"), pair_text);
+
+    std::size_t runs = 0;
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        const obbsat::pose_reference_fn reference = obbsat::pose_method_reference(m);
+        std::string expected;
+        for (std::size_t a = 0; a < all.size(); ++a) {
+            for (std::size_t b = 0; b < all.size(); ++b) {
+                expected += reference(all[a], all[b]) ? "1\n" : "0\n";
+            }
+        }
+        for (const backend b : obbsat::compiled_backends()) {
+            if (!obbsat::cpu_supports(b)) {
+                continue;
+            }
+            const std::string args = std::string("collide --poses Q.csv --pairs P.csv --method ") +
+                                     obbsat::method_name(m) + " --backend " + obbsat::backend_name(b);
+            const run_result r = s.run(args);
+            EXPECT_EQ(r.status, 0) << args << "\n" << r.err;
+            EXPECT_EQ(r.out, expected) << args;
+            ++runs;
+        }
+    }
+    EXPECT_GE(runs, obbsat::methods_on(obbsat::store_kind::poses).size());
 }
 
 // ---------------------------------------------------------------------------
@@ -385,6 +463,13 @@ TEST(robustness, two_names_for_standard_input_are_refused) {
             expect_refused(s, s.run_piped("in.txt", args), message, args + " from a pipe");
             expect_refused(s, s.run(args, "", "< in.txt"), message, args + " from a file");
         }
+    }
+    for (const auto& [poses, pairs] : names) {
+        const std::string args = "collide --poses " + poses + " --pairs " + pairs + " --out v.txt";
+        const std::string message = "collide: --poses '" + poses + "' and --pairs '" + pairs +
+                                    "' name the same input; rectangles and pairs need one each";
+        expect_refused(s, s.run_piped("in.txt", args), message, args + " from a pipe");
+        expect_refused(s, s.run(args, "", "< in.txt"), message, args + " from a file");
     }
     fs::create_symlink("in.txt", s.file("link.txt"));
     const run_result twice = s.run("collide --rects in.txt --pairs link.txt --out v.txt");

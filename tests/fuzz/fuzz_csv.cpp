@@ -1,20 +1,24 @@
-// Fuzz target: arbitrary bytes as a rectangle file and a pair file through the
-// readers of the obbsat program (obbsat_io). Each file must either parse or
-// throw obbsat::io::input_error naming the file (and a line that exists);
-// anything else (another exception, a crash, a hang) is a failure. What was
-// read must not depend on how the input is cut into chunks, and both
-// rectangle stores must read the same rectangles.
+// Fuzz target: arbitrary bytes as a rectangle file, a pose file and a pair
+// file through the readers of the obbsat program (obbsat_io). Each file must
+// either parse or throw obbsat::io::input_error naming the file (and a line
+// that exists); anything else (another exception, a crash, a hang) is a
+// failure. What was read must not depend on how the input is cut into chunks,
+// both rectangle stores must read the same rectangles, and every pose read
+// must be valid (finite, half extents >= 0, rotation not (0, 0)).
 //
 // Input format: byte 0 picks the read chunk size, byte 1 a limit on the
 // number of rectangles, byte 2 a limit on the line length, byte 3 the pair
 // chunk size and the rectangle count used for the pair file when the
 // rectangle file is refused, bytes 4-5 the length of the rectangle file
-// (little-endian); the rest is the pair file.
+// (little-endian); the rest is the pair file. The rectangle file's bytes are
+// read as a pose file too.
 #include "fuzz_bytes.hpp"
 
 #include "csv_input.hpp"
 
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 
@@ -111,6 +115,37 @@ outcome<rect> read_rects(std::string_view text, std::size_t chunk_bytes, std::si
     return out;
 }
 
+outcome<obbsat::rect_pose> read_poses(std::string_view text, std::size_t chunk_bytes,
+                                     std::size_t max_line_bytes, std::uint64_t max_poses) {
+    outcome<obbsat::rect_pose> out;
+    line_reader lines(text, "Q.csv", chunk_bytes, max_line_bytes);
+    try {
+        const obbsat::pose_records poses = obbsat::io::read_pose_records(lines, max_poses);
+        for (std::size_t i = 0; i < poses.size(); ++i) {
+            out.values.push_back(poses[i]);
+        }
+    } catch (const input_error& e) {
+        check_error(e, "Q.csv", text);
+        out.error = e.what();
+    }
+    for (const obbsat::rect_pose& p : out.values) {
+        const float v[6] = {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x,
+                            p.rotation.y};
+        for (const float c : v) {
+            if (!std::isfinite(c)) {
+                stop("a pose with a non-finite value was read");
+            }
+        }
+        if (p.half_extents.x < 0.0f || p.half_extents.y < 0.0f) {
+            stop("a pose with a negative half extent was read");
+        }
+        if (p.rotation.x == 0.0f && p.rotation.y == 0.0f) {
+            stop("a pose with the rotation vector (0, 0) was read");
+        }
+    }
+    return out;
+}
+
 outcome<pair_index> read_pairs(std::string_view text, std::size_t chunk_bytes, std::size_t max_line_bytes,
                                std::uint64_t rect_count, std::size_t pairs_per_chunk) {
     outcome<pair_index> out;
@@ -139,11 +174,15 @@ outcome<pair_index> read_pairs(std::string_view text, std::size_t chunk_bytes, s
     return out;
 }
 
-bool same_bits(const rect& x, const rect& y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+template <class Record>
+bool same_bits(const Record& x, const Record& y) {
+    return std::memcmp(&x, &y, sizeof x) == 0;
+}
 
 // After an error only the message counts: how many records came before it
 // depends on the chunk they were read in.
-bool same(const outcome<rect>& x, const outcome<rect>& y) {
+template <class Record>
+bool same(const outcome<Record>& x, const outcome<Record>& y) {
     if (x.error || y.error) {
         return x.error == y.error;
     }
@@ -216,6 +255,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const outcome<rect> limited = read_rects<obbsat::rect_records>(rect_text, chunk, small_line, max_rects);
         if (!limited.error && !same(limited, records)) {
             stop("a line limit of " + std::to_string(small_line) + " bytes changed what was read");
+        }
+    }
+
+    // The same bytes as a pose file.
+    const outcome<obbsat::rect_pose> poses = read_poses(rect_text, chunk, default_line, max_rects);
+    const outcome<obbsat::rect_pose> whole_poses = read_poses(rect_text, whole_rects, default_line, max_rects);
+    if (!same(poses, whole_poses)) {
+        stop("poses read in chunks of " + std::to_string(chunk) + " bytes: " +
+             describe(poses.error, poses.values.size()) + "; in one chunk: " +
+             describe(whole_poses.error, whole_poses.values.size()));
+    }
+    if (line_byte != 0) {
+        const outcome<obbsat::rect_pose> limited = read_poses(rect_text, chunk, 1 + line_byte, max_rects);
+        if (!limited.error && !same(limited, poses)) {
+            stop("a line limit changed the poses read");
         }
     }
 

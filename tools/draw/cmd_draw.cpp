@@ -203,7 +203,7 @@ int run_draw(const arguments& args) {
     const io::input_file pairs_file(pairs_path);
     // Both are read to the end in turn: one stream named twice leaves no pairs.
     if (io::same_input(rects_file, pairs_file)) {
-        throw same_input_error(rects_path, pairs_path);
+        throw same_input_error("rects", rects_path, pairs_path);
     }
     io::atomic_output output(out_path);
 

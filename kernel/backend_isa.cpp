@@ -71,9 +71,10 @@ constexpr pose_method_kernels pose_kernels_of_row() {
         static_assert(poses::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
                       "a method's lanes and its catalogue row agree on the slow path");
         return pose_method_kernels{pose_stream_batch<isa_arch, poses::template lanes>,
-                                   pose_indexed_batch<isa_arch, poses::template lanes>};
+                                   pose_indexed_batch<isa_arch, poses::template lanes>,
+                                   pose_stream_soa_batch<isa_arch, poses::template lanes>};
     } else {
-        return pose_method_kernels{nullptr, nullptr};
+        return pose_method_kernels{nullptr, nullptr, nullptr};
     }
 }
 

@@ -303,4 +303,26 @@ std::vector<std::uint8_t> collide_stream(const pose_records& a, const pose_recor
     return verdicts;
 }
 
+backend collide_stream(const pose_soa& a, const pose_soa& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    if (a.size() != b.size()) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) + " poses in A, " +
+                            std::to_string(b.size()) + " in B");
+    }
+    const backend ran = resolve_backend(options.use);
+    const detail::pose_stream_soa_fn kernel = pose_kernels_of(ran, options).stream_soa;
+    const detail::pose_soa_view va = detail::view_of(a);
+    const detail::pose_soa_view vb = detail::view_of(b);
+    split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
+        return kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+    });
+    return ran;
+}
+
+std::vector<std::uint8_t> collide_stream(const pose_soa& a, const pose_soa& b, const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
+}
+
 }  // namespace obbsat

@@ -3,6 +3,7 @@
 // has checked that the CPU runs that backend.
 #pragma once
 
+#include "pose_soa_view.hpp"
 #include "soa_view.hpp"
 
 #include <obbsat/method.hpp>
@@ -46,6 +47,10 @@ using pose_stream_fn = std::size_t (*)(const float* a, const float* b, std::size
 using pose_indexed_fn = std::size_t (*)(const float* records, const pair_index* pairs, std::size_t count,
                                         std::uint8_t* verdicts);
 
+/// verdicts[i] = method(a[i], b[i]) for i < count over two pose_soa stores.
+using pose_stream_soa_fn = std::size_t (*)(const pose_soa_view& a, const pose_soa_view& b, std::size_t count,
+                                           std::uint8_t* verdicts);
+
 /// out[i] = ref::corners_of(pose i) for i < count over 32-byte pose records.
 using pose_corners_fn = void (*)(const float* records, std::size_t count, rect* out);
 
@@ -62,6 +67,7 @@ struct method_kernels {
 struct pose_method_kernels {
     pose_stream_fn stream;
     pose_indexed_fn indexed;
+    pose_stream_soa_fn stream_soa;
 };
 
 struct kernel_table {

@@ -7,6 +7,7 @@
 
 #include "batch_kernel.hpp"
 #include "pose_lanes.hpp"
+#include "pose_soa_view.hpp"
 #include "record_transpose.hpp"
 
 #include <obbsat/rect_pose.hpp>
@@ -83,6 +84,51 @@ template <class Arch, template <class> class Method>
 std::size_t pose_stream_batch(const float* a, const float* b, std::size_t count, std::uint8_t* verdicts) {
     auto same = [](std::size_t i) { return i; };
     return pose_batch<Arch, Method, false>(a, b, same, same, count, verdicts);
+}
+
+/// The poses [first, first + width) of a view, one vector per field; the caller guarantees they exist.
+template <class Arch>
+OBBSAT_LANE_INLINE pose_lanes<Arch> load_consecutive_poses(const pose_soa_view& v, std::size_t first) {
+    using batch = lanes<Arch>;
+    return pose_lanes<Arch>{batch::load_unaligned(v.fields[0] + first), batch::load_unaligned(v.fields[1] + first),
+                            batch::load_unaligned(v.fields[2] + first), batch::load_unaligned(v.fields[3] + first),
+                            batch::load_unaligned(v.fields[4] + first), batch::load_unaligned(v.fields[5] + first)};
+}
+
+/// verdicts[i] = Method(a[i], b[i]) for i < count over two pose_soa views:
+/// every field is read as a vector, nothing is transposed.
+template <class Arch, template <class> class Method>
+std::size_t pose_stream_soa_batch(const pose_soa_view& a, const pose_soa_view& b, std::size_t count,
+                                  std::uint8_t* verdicts) {
+    constexpr std::size_t width = lanes<Arch>::size;
+    std::size_t settled = 0;
+    std::size_t i = 0;
+    for (; i + width <= count; i += width) {
+        const lane_verdicts v =
+            Method<Arch>::collide(load_consecutive_poses<Arch>(a, i), load_consecutive_poses<Arch>(b, i));
+        settled += finish_vector<width, Method, Arch>(
+            v, verdicts + i, width, [&](std::size_t lane) { return std::make_pair(a.at(i + lane), b.at(i + lane)); });
+    }
+    if (i < count) {
+        // Partial vector: the last pair repeated in the unused lanes, staged locally.
+        alignas(64) float staged[2][pose_field_count][width];
+        for (std::size_t lane = 0; lane < width; ++lane) {
+            const std::size_t k = (i + lane < count) ? i + lane : count - 1;
+            for (unsigned f = 0; f < pose_field_count; ++f) {
+                staged[0][f][lane] = a.fields[f][k];
+                staged[1][f][lane] = b.fields[f][k];
+            }
+        }
+        pose_soa_view sa{}, sb{};
+        for (unsigned f = 0; f < pose_field_count; ++f) {
+            sa.fields[f] = staged[0][f];
+            sb.fields[f] = staged[1][f];
+        }
+        const lane_verdicts v = Method<Arch>::collide(load_consecutive_poses<Arch>(sa, 0), load_consecutive_poses<Arch>(sb, 0));
+        settled += finish_vector<width, Method, Arch>(
+            v, verdicts + i, count - i, [&](std::size_t lane) { return std::make_pair(a.at(i + lane), b.at(i + lane)); });
+    }
+    return settled;
 }
 
 }  // namespace

@@ -67,6 +67,15 @@ std::size_t pose_indexed_pairs(const float* records, const pair_index* pairs, st
     return exact_count<SlowPath>(count);
 }
 
+template <pose_reference_fn Reference, bool SlowPath>
+std::size_t pose_stream_soa_pairs(const pose_soa_view& a, const pose_soa_view& b, std::size_t count,
+                                  std::uint8_t* verdicts) {
+    for (std::size_t i = 0; i < count; ++i) {
+        verdicts[i] = Reference(a.at(i), b.at(i)) ? 1 : 0;
+    }
+    return exact_count<SlowPath>(count);
+}
+
 void pose_corners(const float* records, std::size_t count, rect* out) {
     for (std::size_t i = 0; i < count; ++i) {
         out[i] = ref::corners_of(pose_record_at(records, i));
@@ -96,9 +105,10 @@ constexpr pose_method_kernels pose_kernels_of_row() {
     if constexpr (offered<typename Row::poses>) {
         constexpr pose_reference_fn reference = Row::poses::reference;
         return pose_method_kernels{pose_stream_pairs<reference, Row::has_slow_path>,
-                                   pose_indexed_pairs<reference, Row::has_slow_path>};
+                                   pose_indexed_pairs<reference, Row::has_slow_path>,
+                                   pose_stream_soa_pairs<reference, Row::has_slow_path>};
     } else {
-        return pose_method_kernels{nullptr, nullptr};
+        return pose_method_kernels{nullptr, nullptr, nullptr};
     }
 }
 

@@ -13,11 +13,15 @@
 #include <obbsat/method.hpp>
 #include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_soa.hpp>
 #include <obbsat/ref/pose_corners.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
 #include <cstdio>
 #include <cstring>
 #include <numeric>
@@ -144,6 +148,11 @@ protected:
         EXPECT_EQ(obbsat::collide_stream(a, b, got.data(), forced(m, threads)), GetParam());
         EXPECT_TRUE(same_verdicts(expected, got, pairs)) << "collide_stream";
 
+        const obbsat::pose_soa soa_a(pairs.a), soa_b(pairs.b);
+        std::fill(got.begin(), got.end(), std::uint8_t{0xee});
+        EXPECT_EQ(obbsat::collide_stream(soa_a, soa_b, got.data(), forced(m, threads)), GetParam());
+        EXPECT_TRUE(same_verdicts(expected, got, pairs)) << "collide_stream over pose_soa";
+
         const indexed_poses indexed = scattered(pairs, 99);
         std::fill(got.begin(), got.end(), std::uint8_t{0xee});
         EXPECT_EQ(obbsat::collide_pairs(indexed.pool, indexed.pairs.data(), indexed.pairs.size(), got.data(),
@@ -200,12 +209,16 @@ TEST(pose_golden, reference_reproduces_golden_digests) {
 TEST_P(pose_backends, golden_digests_on_every_path) {
     const pose_pairs pairs = golden_pairs();
     const pose_records a(pairs.a), b(pairs.b);
+    const obbsat::pose_soa soa_a(pairs.a), soa_b(pairs.b);
     const indexed_poses indexed = scattered(pairs, 5);
     for (const golden_entry& e : golden_digests) {
         for (const unsigned threads : {1u, 0u}) {
             const verdicts streamed = obbsat::collide_stream(a, b, forced(e.test, threads));
             EXPECT_EQ(hex_digest(obbsat::verdict_digest(streamed.data(), streamed.size())), hex_digest(e.digest))
                 << obbsat::method_name(e.test) << " stream, " << threads << " threads";
+            const verdicts soa = obbsat::collide_stream(soa_a, soa_b, forced(e.test, threads));
+            EXPECT_EQ(hex_digest(obbsat::verdict_digest(soa.data(), soa.size())), hex_digest(e.digest))
+                << obbsat::method_name(e.test) << " stream over pose_soa, " << threads << " threads";
             const verdicts picked = obbsat::collide_pairs(indexed.pool, indexed.pairs, forced(e.test, threads));
             EXPECT_EQ(hex_digest(obbsat::verdict_digest(picked.data(), picked.size())), hex_digest(e.digest))
                 << obbsat::method_name(e.test) << " indexed, " << threads << " threads";
@@ -240,10 +253,14 @@ TEST_P(pose_backends, ten_million_random_pairs_match_the_reference) {
     for (std::size_t done = 0; done < 10 * chunk; done += chunk) {
         const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, chunk);
         const pose_records a(pairs.a), b(pairs.b);
+        const obbsat::pose_soa soa_a(pairs.a), soa_b(pairs.b);
         for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
             const verdicts expected = reference_verdicts(m, pairs);
             const verdicts got = obbsat::collide_stream(a, b, forced(m, 0));
             ASSERT_TRUE(same_verdicts(expected, got, pairs)) << obbsat::method_name(m) << ", chunk at " << done;
+            const verdicts got_soa = obbsat::collide_stream(soa_a, soa_b, forced(m, 1));
+            ASSERT_TRUE(same_verdicts(expected, got_soa, pairs))
+                << obbsat::method_name(m) << " over pose_soa, chunk at " << done;
         }
     }
 }
@@ -301,5 +318,103 @@ INSTANTIATE_TEST_SUITE_P(every_backend, pose_backends,
                          [](const testing::TestParamInfo<backend>& param_info) {
                              return std::string(obbsat::backend_name(param_info.param));
                          });
+
+}  // namespace
+
+namespace {
+
+TEST(pose_stores, both_stores_refuse_bad_poses_naming_the_pose_and_the_field) {
+    const rect_pose good{{1, 2}, {3, 4}, {0.6f, 0.8f}};
+    struct bad_case {
+        rect_pose pose;
+        const char* message;
+    };
+    const bad_case cases[] = {
+        {{{NAN, 2}, {3, 4}, {1, 0}}, "pose 1: cx is nan, not a finite number"},
+        {{{1, INFINITY}, {3, 4}, {1, 0}}, "pose 1: cy is inf, not a finite number"},
+        {{{1, 2}, {-1, 4}, {1, 0}}, "pose 1: half extent hx is -1, negative"},
+        {{{1, 2}, {3, -0.5f}, {1, 0}}, "pose 1: half extent hy is -0.5, negative"},
+        {{{1, 2}, {3, 4}, {0, -0.0f}}, "pose 1: rotation vector (c, s) is (0, 0)"},
+        {{{1, 2}, {3, 4}, {1, -INFINITY}}, "pose 1: s is -inf, not a finite number"},
+    };
+    for (const bad_case& c : cases) {
+        pose_records records;
+        records.push_back(good);
+        obbsat::pose_soa soa;
+        soa.push_back(good);
+        for (auto push : {std::function<void()>([&] { records.push_back(c.pose); }),
+                          std::function<void()>([&] { soa.push_back(c.pose); }),
+                          std::function<void()>([&] { pose_records(std::vector<rect_pose>{good, c.pose}); })}) {
+            try {
+                push();
+                ADD_FAILURE() << c.message << ": accepted";
+            } catch (const obbsat::invalid_input& e) {
+                EXPECT_EQ(std::string(e.what()), c.message);
+            }
+        }
+        EXPECT_EQ(records.size(), 1u);
+        EXPECT_EQ(soa.size(), 1u);
+        try {
+            records.set(0, c.pose);
+            ADD_FAILURE() << "set accepted " << c.message;
+        } catch (const obbsat::invalid_input& e) {
+            EXPECT_NE(std::string(e.what()).find("pose 0: "), std::string::npos) << e.what();
+        }
+    }
+    // Zero half extents are a segment or a point: valid.
+    pose_records records;
+    records.push_back(rect_pose{{0, 0}, {0, 0}, {1e-30f, 0}});
+    EXPECT_EQ(records.size(), 1u);
+    EXPECT_THROW((void)records.at(1), obbsat::invalid_input);
+}
+
+TEST(pose_stores, records_hold_the_pose_as_given_with_zero_padding) {
+    const rect_pose p{{0x1.000002p+20f, -3.5f}, {0.0f, 7.25f}, {-0x1p-30f, 0x1.8p+40f}};
+    const pose_records records(std::vector<rect_pose>{p, p});
+    const float* v = records.data();
+    const float expected[8] = {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y,
+                               p.rotation.x, p.rotation.y, 0.0f, 0.0f};
+    EXPECT_EQ(std::memcmp(v, expected, sizeof expected), 0);
+    EXPECT_EQ(std::memcmp(v + 8, expected, sizeof expected), 0);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v) % 64, 0u);
+    const obbsat::pose_soa soa(records);
+    EXPECT_EQ(soa[1].rotation.y, p.rotation.y);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(soa.data(obbsat::pose_field::s)) % 64, 0u);
+}
+
+TEST(pose_stores, conversions_from_angles_and_corners) {
+    const obbsat::pose angled{{10, 20}, {3, 1}, 0.5f};
+    const rect_pose p = obbsat::rect_pose_of(angled);
+    EXPECT_EQ(p.rotation.x, static_cast<float>(std::cos(0.5)));
+    EXPECT_EQ(p.rotation.y, static_cast<float>(std::sin(0.5)));
+    const pose_records from_angles = pose_records::from_angles(std::vector<obbsat::pose>{angled});
+    EXPECT_EQ(std::memcmp(from_angles.data(), pose_records(std::vector<rect_pose>{p}).data(), 32), 0);
+    EXPECT_THROW(pose_records::from_angles(std::vector<obbsat::pose>{{{0, 0}, {1, 1}, NAN}}), obbsat::invalid_input);
+    // An exact rectangle of corners gives back its pose: integer corners of a (3, 4) frame.
+    const obbsat::rect r{{-4 - 3, 3 - 4}, {-4 + 3, 3 + 4}, {4 + 3, -3 + 4}, {4 - 3, -3 - 4}};
+    const pose_records from_corners = pose_records::from_corners(obbsat::rect_records(std::vector<obbsat::rect>{r}));
+    const rect_pose q = from_corners[0];
+    EXPECT_EQ(q.center.x, 0.0f);
+    EXPECT_EQ(q.center.y, 0.0f);
+    EXPECT_EQ(q.half_extents.x, 5.0f);
+    EXPECT_EQ(q.half_extents.y, 5.0f);
+    EXPECT_EQ(q.rotation.x, 0.6f);
+    EXPECT_EQ(q.rotation.y, 0.8f);
+    // Degenerate corners still give a valid pose.
+    const obbsat::rect point_rect{{1, 1}, {1, 1}, {1, 1}, {1, 1}};
+    const rect_pose d = pose_records::from_corners(obbsat::rect_records(std::vector<obbsat::rect>{point_rect}))[0];
+    EXPECT_EQ(d.half_extents.x, 0.0f);
+    EXPECT_EQ(d.rotation.x, 1.0f);
+}
+
+TEST(pose_stores, corner_records_of_refuses_corners_that_overflow) {
+    const pose_records poses(std::vector<rect_pose>{{{0, 0}, {1, 1}, {1, 0}}, {{3e38f, 0}, {3e38f, 1}, {1, 0}}});
+    try {
+        (void)obbsat::corner_records_of(poses);
+        ADD_FAILURE() << "accepted";
+    } catch (const obbsat::invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("pose 1:"), std::string::npos) << e.what();
+    }
+}
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_soa.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
@@ -110,5 +111,12 @@ backend collide_stream(const pose_records& a, const pose_records& b, std::uint8_
 /// The verdicts of collide_stream over poses as a vector.
 std::vector<std::uint8_t> collide_stream(const pose_records& a, const pose_records& b,
                                          const collide_options& options);
+
+/// The same over two pose_soa stores, the faster store for streams (each
+/// field read as a vector, nothing transposed); verdicts are identical.
+backend collide_stream(const pose_soa& a, const pose_soa& b, std::uint8_t* verdicts, const collide_options& options);
+
+/// The verdicts of collide_stream over pose_soa stores as a vector.
+std::vector<std::uint8_t> collide_stream(const pose_soa& a, const pose_soa& b, const collide_options& options);
 
 }  // namespace obbsat

@@ -9,6 +9,7 @@
 #include <obbsat/pose.hpp>
 #include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_soa.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>

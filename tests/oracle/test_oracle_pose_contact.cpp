@@ -189,6 +189,24 @@ TEST(pose_contact, slacks_below_double_precision) {
     expect_contact(a, pose(2, down(2 * t), 1, 1, 1, t), O);
     expect_contact(a, pose(1, t, 0, 0, 1, 0), T);            // a point on that edge
     expect_contact(a, pose(1, up(t), 0, 0, 1, 0), S);        // slack -2^-83
+    // A segment from the origin along (1, 4), its center 2^65 away: in double
+    // the small box's center is lost in the differences (float steps there
+    // are 2^42), so double arithmetic finds no separating axis.
+    const float x = 0x1p65f;
+    const rect_pose ray = pose(x, 4 * x, x, 0, 1, 4);        // from (0, 0) to (2x, 8x)
+    expect_contact(ray, pose(0.5f, -0.25f, 0.25f, 0.25f, 1, 0), S);
+    expect_contact(ray, pose(0.25f, -0.25f, 0.25f, 0.25f, 1, 0), T);  // corner on the end
+    expect_contact(ray, pose(0, 0, 0.25f, 0.25f, 1, 0), T);           // the end inside a box
+    expect_contact(ray, pose(-0.25f, 0, 0.25f, 0.25f, 0, 1), T);
+    expect_contact(ray, pose(-0.25f - 0x1p-20f, 0, 0.25f, 0.25f, 0, 1), S);
+    // A segment along (4, 3) centered about 2^-42 from the origin, and a point
+    // 623·(4, 3) away: it misses the segment's line by less than the rounding
+    // of the centers' difference in double (2^-41), so even the sign of that
+    // difference along the axis (-3, 4) must be found exactly.
+    const rect_pose along = pose(0x1.c0ff08p-42f, 0x1.6a928cp-42f, 1246, 0, 4, 3);
+    expect_contact(along, pose(2492, 1869, 0, 0, 1, 0), S);
+    expect_contact(pose(0, 0, 1246, 0, 4, 3), pose(2492, 1869, 0, 0, 1, 0), T);
+    expect_contact(pose(0x1p-42f, 0x1.5555p-42f, 1246, 0, 4, 3), pose(2492, 1869, 0, 0, 1, 0), S);
 }
 
 TEST(pose_contact, far_from_the_origin) {
@@ -220,17 +238,26 @@ TEST(pose_contact, a_zero_half_extent_may_be_negative_zero) {
 TEST(pose_contact, invalid_poses_are_rejected) {
     const rect_pose good = pose(0, 0, 1, 1, 1, 0);
     const rect_pose bad[] = {
-        pose(NAN, 0, 1, 1, 1, 0),     pose(0, INFINITY, 1, 1, 1, 0), pose(0, 0, INFINITY, 1, 1, 0),
-        pose(0, 0, 1, 1, NAN, 0),     pose(0, 0, 1, 1, 1, -INFINITY), pose(0, 0, -1, 1, 1, 0),
-        pose(0, 0, 1, -1e-45f, 1, 0), pose(0, 0, 1, 1, 0, 0),        pose(0, 0, 1, 1, -0.0f, -0.0f),
+        pose(NAN, 0, 1, 1, 1, 0),      pose(0, INFINITY, 1, 1, 1, 0),  pose(0, 0, INFINITY, 1, 1, 0),
+        pose(0, 0, 1, 1, NAN, 0),      pose(0, 0, 1, 1, 1, -INFINITY), pose(0, 0, -1, 1, 1, 0),
+        pose(0, 0, 1, -1e-45f, 1, 0),  pose(0, 0, 1, 1, 0, 0),         pose(0, 0, 1, 1, -0.0f, -0.0f),
+        pose(INFINITY, 0, 0, 0, 0, 1), pose(0, 0, NAN, 0, 1, 0),       pose(0, 0, 0, INFINITY, 0, 1),
+        pose(0, 0, 0, 0, INFINITY, 0), pose(0, 0, -INFINITY, 0, 1, 0), pose(NAN, NAN, 0, 0, 0, 0),
     };
-    EXPECT_EQ(obbsat::oracle::pose_defect(good), nullptr);
+    // Zero half extents and a rotation component 0 in the partners, so that
+    // a product of 0 and an infinity (NaN) must be seen too.
+    const rect_pose partners[] = {good, pose(0, 0, 0, 0, 0, 1)};
+    for (const rect_pose& partner : partners) {
+        EXPECT_EQ(obbsat::oracle::pose_defect(partner), nullptr);
+    }
     for (const rect_pose& p : bad) {
         EXPECT_NE(obbsat::oracle::pose_defect(p), nullptr) << show(p);
-        EXPECT_THROW(classify(p, good), std::invalid_argument) << show(p);
-        EXPECT_THROW(classify(good, p), std::invalid_argument) << show(p);
-        EXPECT_THROW(classify_exact(good, p), std::invalid_argument) << show(p);
-        EXPECT_THROW(intersects(p, good), std::invalid_argument) << show(p);
+        for (const rect_pose& partner : partners) {
+            EXPECT_THROW(classify(p, partner), std::invalid_argument) << show(p);
+            EXPECT_THROW(classify(partner, p), std::invalid_argument) << show(p);
+            EXPECT_THROW(classify_exact(partner, p), std::invalid_argument) << show(p);
+            EXPECT_THROW(intersects(p, partner), std::invalid_argument) << show(p);
+        }
     }
     try {
         classify(good, pose(0, 0, 1, -2, 1, 0));

@@ -30,9 +30,10 @@ enum class batch_mode {
 };
 
 /// Where a batch reads its rectangles from: corner records or structure of
-/// arrays (indexed batches; corner streams always use rect_soa), or poses
-/// (pose_records, for streams and indexed batches alike).
-enum class rect_store { records, soa, poses };
+/// arrays (indexed batches; corner streams always use rect_soa), or poses:
+/// pose_soa for streams, pose_records for indexed batches (poses), and
+/// pose_records for streams too (pose_records_stream).
+enum class rect_store { records, soa, poses, pose_records_stream };
 
 const char* mode_name(batch_mode mode) {
     switch (mode) {
@@ -80,8 +81,12 @@ std::string case_name(const collide_case& c) {
     }
     // A method that runs on corners too is marked when it runs on poses;
     // local runs on nothing else.
-    if (c.store == rect_store::poses && obbsat::runs_on(c.test, obbsat::store_kind::corners)) {
+    const bool on_poses = c.store == rect_store::poses || c.store == rect_store::pose_records_stream;
+    if (on_poses && obbsat::runs_on(c.test, obbsat::store_kind::corners)) {
         name += "/store:poses";
+    }
+    if (c.store == rect_store::pose_records_stream) {
+        name += "/records";
     }
     return name;
 }
@@ -91,9 +96,12 @@ obbsat::backend run_batch(workload& w, const collide_case& c, std::uint8_t* verd
     options.test = c.test;
     options.use = c.use;
     options.threads = c.threads;
+    if (c.store == rect_store::pose_records_stream) {
+        return obbsat::collide_stream(w.pose_stream_a(), w.pose_stream_b(), verdicts, options);
+    }
     if (c.store == rect_store::poses) {
         if (c.mode == batch_mode::stream) {
-            return obbsat::collide_stream(w.pose_stream_a(), w.pose_stream_b(), verdicts, options);
+            return obbsat::collide_stream(w.pose_soa_stream_a(), w.pose_soa_stream_b(), verdicts, options);
         }
         const obbsat::pair_index* pairs =
             c.mode == batch_mode::indexed_sorted ? w.sorted_pairs().data() : w.shuffled_pairs().data();
@@ -117,7 +125,7 @@ obbsat::backend run_batch(workload& w, const collide_case& c, std::uint8_t* verd
 
 const std::vector<std::uint8_t>& expected_verdicts(workload& w, const collide_case& c) {
     // The streams follow the sorted list, so they share its reference.
-    if (c.store == rect_store::poses) {
+    if (c.store == rect_store::poses || c.store == rect_store::pose_records_stream) {
         return c.mode == batch_mode::indexed_random ? w.pose_shuffled_reference(c.test)
                                                     : w.pose_sorted_reference(c.test);
     }
@@ -257,6 +265,13 @@ void register_collide_benchmarks(std::ostream& skipped) {
                                        rect_store::poses});
                     }
                 }
+            }
+        }
+        // Streams over pose_records (transposed in registers), one core.
+        for (const obbsat::backend use : runnable) {
+            for (const std::size_t pairs : grid_sizes) {
+                register_case({test, batch_mode::stream, use, pairs, 1, obbsat::scene_density::typical,
+                               rect_store::pose_records_stream});
             }
         }
     }

@@ -160,6 +160,20 @@ const obbsat::pose_records& workload::pose_stream_b() {
     return *pose_stream_b_;
 }
 
+const obbsat::pose_soa& workload::pose_soa_stream_a() {
+    if (!pose_soa_stream_a_) {
+        pose_soa_stream_a_ = std::make_unique<obbsat::pose_soa>(pose_stream_a());
+    }
+    return *pose_soa_stream_a_;
+}
+
+const obbsat::pose_soa& workload::pose_soa_stream_b() {
+    if (!pose_soa_stream_b_) {
+        pose_soa_stream_b_ = std::make_unique<obbsat::pose_soa>(pose_stream_b());
+    }
+    return *pose_soa_stream_b_;
+}
+
 void workload::build_pose_streams() {
     if (pose_stream_a_) {
         return;

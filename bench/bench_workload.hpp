@@ -11,6 +11,7 @@
 
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_soa.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
@@ -69,6 +70,11 @@ public:
     /// B[i] = poses()[sorted_pairs()[i].b]; built on first use.
     const obbsat::pose_records& pose_stream_b();
 
+    /// pose_stream_a() as a pose_soa; built on first use.
+    const obbsat::pose_soa& pose_soa_stream_a();
+    /// pose_stream_b() as a pose_soa; built on first use.
+    const obbsat::pose_soa& pose_soa_stream_b();
+
     /// A[i] = rects[sorted_pairs()[i].a]; built on first use.
     const obbsat::rect_soa& stream_a();
     /// B[i] = rects[sorted_pairs()[i].b]; built on first use.
@@ -90,6 +96,8 @@ private:
     std::map<obbsat::method, std::vector<std::uint8_t>> pose_shuffled_reference_;
     std::unique_ptr<obbsat::pose_records> pose_stream_a_;
     std::unique_ptr<obbsat::pose_records> pose_stream_b_;
+    std::unique_ptr<obbsat::pose_soa> pose_soa_stream_a_;
+    std::unique_ptr<obbsat::pose_soa> pose_soa_stream_b_;
 };
 
 /// The shared workload of that size and density, built on first request.

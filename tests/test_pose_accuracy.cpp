@@ -45,9 +45,9 @@ std::array<tally, pose_pair_kinds> measure(std::size_t pairs_per_kind, std::uint
         const bool truth = obbsat::oracle::intersects(a, b);
         tally& t = out[kind];
         ++t.pairs;
-        t.colliding += truth ? 1 : 0;
+        t.colliding += truth ? 1u : 0u;
         const bool local = obbsat::ref::local(a, b);
-        t.local_false_positives += (local && !truth) ? 1 : 0;
+        t.local_false_positives += (local && !truth) ? 1u : 0u;
         t.local_false_negatives += (!local && truth) ? 1 : 0;
         const bool conservative = obbsat::ref::conservative(a, b);
         t.conservative_false_negatives += (!conservative && truth) ? 1 : 0;
@@ -127,7 +127,7 @@ TEST(pose_accuracy, exact_on_poses_is_the_oracle_on_every_backend) {
         const std::vector<std::uint8_t> verdicts = obbsat::collide_stream(a, b, options);
         std::size_t wrong = 0;
         for (std::size_t i = 0; i < verdicts.size(); ++i) {
-            wrong += (verdicts[i] != 0) != obbsat::oracle::intersects(pairs.a[i], pairs.b[i]) ? 1 : 0;
+            wrong += (verdicts[i] != 0) != obbsat::oracle::intersects(pairs.a[i], pairs.b[i]) ? 1u : 0u;
         }
         EXPECT_EQ(wrong, 0u) << obbsat::backend_name(use);
         if (use != obbsat::backend::scalar) {

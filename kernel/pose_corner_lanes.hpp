@@ -17,14 +17,14 @@ OBBSAT_LANE_INLINE quad_lanes<Arch> corners_of(const pose_lanes<Arch>& p) {
     using batch = lanes<Arch>;
     const batch ux = p.hx * p.c;
     const batch uy = p.hx * p.s;
-    const batch vx = -(p.hy * p.s);
+    const batch wx = p.hy * p.s;  // v = (-wx, vy); never negated: see obbsat/ref/pose_corners.hpp
     const batch vy = p.hy * p.c;
     const batch left_x = p.cx - ux;
     const batch left_y = p.cy - uy;
     const batch right_x = p.cx + ux;
     const batch right_y = p.cy + uy;
-    return quad_lanes<Arch>{{left_x + vx, left_y + vy, right_x + vx, right_y + vy, right_x - vx, right_y - vy,
-                             left_x - vx, left_y - vy}};
+    return quad_lanes<Arch>{{left_x - wx, left_y + vy, right_x - wx, right_y + vy, right_x + wx, right_y - vy,
+                             left_x + wx, left_y - vy}};
 }
 
 /// out[i] = the corners of pose record i, for i < count.

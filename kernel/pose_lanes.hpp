@@ -139,7 +139,7 @@ struct pose_exact_lanes {
         steps::first_axes(a, b, x, P, Q);
         steps::second_axes(a, b, x, P, Q);
         const batch m = steps::margin(a, b, x);
-        const batch neg = -m;
+        const batch neg = -m;  // m >= 2^-140 or +inf: never a zero whose sign a backend could flip
         mask apart = steps::gap(x, 0) > m;
         mask overlapping = steps::gap(x, 0) < neg;
         for (unsigned k = 1; k < 4; ++k) {

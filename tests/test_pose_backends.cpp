@@ -283,6 +283,20 @@ TEST_P(pose_backends, corners_of_poses_match_the_reference_byte_for_byte) {
     }
 }
 
+TEST_P(pose_backends, corners_keep_the_sign_of_zero_where_products_underflow) {
+    // Found by fuzz_pose_backends: every product underflows to a zero, and a
+    // backend that negated a zero as 0 - x turned -0 corners into +0.
+    const rect_pose tiny{{-0.0f, -0x1.00807ep-82f}, {0x1.000082p-47f, 0x1.04p-143f}, {0x1p-143f, 0x1.0c008p-125f}};
+    const pose_records poses(std::vector<rect_pose>(17, tiny));
+    std::vector<obbsat::rect> got(17);
+    obbsat::convert_to_corners(poses, got.data(), GetParam());
+    const obbsat::rect expected = obbsat::ref::corners_of(tiny);
+    EXPECT_TRUE(std::signbit(expected.ul.x));
+    for (const obbsat::rect& r : got) {
+        EXPECT_EQ(std::memcmp(&expected, &r, sizeof r), 0);
+    }
+}
+
 TEST_P(pose_backends, methods_that_do_not_run_on_poses_are_refused_and_nothing_is_written) {
     obbsat::seeded_random random(4);
     const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, 20);

@@ -10,12 +10,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
-usage() { echo "usage: bash tests/fuzz/run.sh fuzz_backends|fuzz_csv SECONDS" >&2; exit 2; }
+usage() { echo "usage: bash tests/fuzz/run.sh fuzz_backends|fuzz_pose_backends|fuzz_csv SECONDS" >&2; exit 2; }
 [ $# -eq 2 ] || usage
 target=$1
 seconds=$2
 case "$target" in
   fuzz_backends) max_len=2048 ;;
+  fuzz_pose_backends) max_len=2048 ;;
   fuzz_csv) max_len=4096 ;;
   *) usage ;;
 esac

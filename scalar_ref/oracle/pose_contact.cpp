@@ -60,6 +60,12 @@ four_axes axes_of(const rect_pose& a, const rect_pose& b) {
     }};
 }
 
+// Term i of an axis's reach, h[i]·|m[i]|, in double.
+double reach_term(const axis_slack& s, int i) { return s.h[i] * std::fabs(rounded(s.m[i])); }
+
+// d·axis in double.
+double rounded_offset(const axis_slack& s, double dx, double dy) { return dx * s.axis.x + dy * s.axis.y; }
+
 // The slack in double, from dx = fl(xb − xa) and dy = fl(yb − ya):
 //   r = fl(fl(h0·|m0| + h1·|m1|) + h2·|m2|), four roundings per term at most,
 //       all terms >= 0: |r − exact| <= γ4·exact <= 4.0001u·r;
@@ -70,12 +76,9 @@ four_axes axes_of(const rect_pose& a, const rect_pose& b) {
 // (u = 2^-53; scaling by 8u is exact). Nothing underflows: nonzero terms are
 // at least 2^-447, far above double's 2^-1022.
 int rounded_slack_sign(const axis_slack& s, double dx, double dy) {
-    const double r = (s.h[0] * std::fabs(rounded(s.m[0])) + s.h[1] * std::fabs(rounded(s.m[1]))) +
-                     s.h[2] * std::fabs(rounded(s.m[2]));
-    const double px = dx * s.axis.x;
-    const double py = dy * s.axis.y;
-    const double e = px + py;
-    const double t = std::fabs(px) + std::fabs(py);
+    const double r = (reach_term(s, 0) + reach_term(s, 1)) + reach_term(s, 2);
+    const double e = rounded_offset(s, dx, dy);
+    const double t = std::fabs(dx * s.axis.x) + std::fabs(dy * s.axis.y);
     const double value = r - std::fabs(e);
     const double bound = 8.0 * unit_roundoff * (r + t);
     if (value > bound) {
@@ -156,12 +159,20 @@ void check(const rect_pose& p, const char* which) {
     }
 }
 
+double center_dx(const rect_pose& a, const rect_pose& b) {
+    return static_cast<double>(b.center.x) - a.center.x;
+}
+
+double center_dy(const rect_pose& a, const rect_pose& b) {
+    return static_cast<double>(b.center.y) - a.center.y;
+}
+
 // The class from the four slack signs: when `filtered`, each first by its
 // double evaluation, and exactly only where that could not decide.
 contact classify_valid(const rect_pose& a, const rect_pose& b, bool filtered) {
     const four_axes f = axes_of(a, b);
-    const double dx = static_cast<double>(b.center.x) - a.center.x;
-    const double dy = static_cast<double>(b.center.y) - a.center.y;
+    const double dx = center_dx(a, b);
+    const double dy = center_dy(a, b);
     int signs[4];
     for (int k = 0; k < 4; ++k) {
         signs[k] = filtered ? rounded_slack_sign(f.axes[k], dx, dy) : undecided;
@@ -215,6 +226,40 @@ contact classify_exact(const rect_pose& a, const rect_pose& b) {
 
 bool intersects(const rect_pose& a, const rect_pose& b) {
     return classify(a, b) != contact::separated;
+}
+
+std::array<int, 4> slack_signs(const rect_pose& a, const rect_pose& b) {
+    check(a, "a");
+    check(b, "b");
+    const four_axes f = axes_of(a, b);
+    const double dx = center_dx(a, b);
+    const double dy = center_dy(a, b);
+    std::array<int, 4> signs{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        signs[k] = rounded_slack_sign(f.axes[k], dx, dy);
+        if (signs[k] == undecided) {
+            signs[k] = exact_slack_sign(f.axes[k], a.center, b.center, dx, dy, true);
+        }
+    }
+    return signs;
+}
+
+std::array<axis_terms, 4> terms_of_axes(const rect_pose& a, const rect_pose& b) {
+    check(a, "a");
+    check(b, "b");
+    const four_axes f = axes_of(a, b);
+    const double dx = center_dx(a, b);
+    const double dy = center_dy(a, b);
+    std::array<axis_terms, 4> terms{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        const axis_slack& s = f.axes[k];
+        // Term 0 is the axis's own pose, terms 1 and 2 the other's (axes_of).
+        const double own = reach_term(s, 0);
+        const double other = reach_term(s, 1) + reach_term(s, 2);
+        const bool on_a = k < 2;
+        terms[k] = axis_terms{rounded_offset(s, dx, dy), on_a ? own : other, on_a ? other : own};
+    }
+    return terms;
 }
 
 }  // namespace obbsat::oracle

@@ -32,10 +32,12 @@ pose_axes local_axes(const rect_pose& a, const rect_pose& b) {
     return out;
 }
 
+bool shows_overlap(const pose_axes& axes, int k) { return std::fabs(axes.offset[k]) <= axes.reach[k]; }
+
 bool local(const rect_pose& a, const rect_pose& b) {
     const pose_axes axes = local_axes(a, b);
     for (int k = 0; k < 4; ++k) {
-        if (!(std::fabs(axes.offset[k]) <= axes.reach[k])) {
+        if (!shows_overlap(axes, k)) {
             return false;
         }
     }

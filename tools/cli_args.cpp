@@ -157,4 +157,30 @@ backend backend_option(const parsed_options& options) {
     return *parsed;
 }
 
+rectangle_input rectangle_option(const parsed_options& options) {
+    const auto rects = options.value("rects");
+    const auto poses = options.value("poses");
+    if (rects && poses) {
+        throw usage_error("--rects and --poses both given; the rectangles come from one of them");
+    }
+    if (rects) {
+        return rectangle_input{store_kind::corners, "rects", std::string(*rects)};
+    }
+    if (poses) {
+        return rectangle_input{store_kind::poses, "poses", std::string(*poses)};
+    }
+    throw usage_error("missing required option --rects or --poses");
+}
+
+method store_method_option(const parsed_options& options, const rectangle_input& input) {
+    const method m = method_option(options, input.kind == store_kind::corners ? method::sat4 : method::local);
+    if (!runs_on(m, input.kind)) {
+        const std::string store = store_name(input.kind);
+        throw usage_error("--method " + std::string(method_name(m)) + " does not run on " + store + " (--" +
+                          input.option + "); the methods on " + store + " are " +
+                          method_list(methods_on(input.kind)));
+    }
+    return m;
+}
+
 }  // namespace obbsat::cli

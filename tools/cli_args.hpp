@@ -78,4 +78,19 @@ method method_option(const parsed_options& options, method fallback = method::sa
 /// The --backend option (default auto); throws usage_error naming the known backends.
 backend backend_option(const parsed_options& options);
 
+/// The rectangle file of a command that takes corners or poses.
+struct rectangle_input {
+    store_kind kind;
+    std::string option;  ///< "rects" or "poses"
+    std::string path;
+};
+
+/// Exactly one of --rects (corners) and --poses; throws usage_error for both or neither.
+rectangle_input rectangle_option(const parsed_options& options);
+
+/// The --method option for the store of `input`, by default the article's test on each store
+/// (sat4 on corners, local on poses); throws usage_error, before any file is read, for a method
+/// that does not run there, naming those that do (the library would refuse it at the first pair).
+method store_method_option(const parsed_options& options, const rectangle_input& input);
+
 }  // namespace obbsat::cli

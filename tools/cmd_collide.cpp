@@ -45,46 +45,6 @@ const std::vector<option_spec>& collide_option_specs() {
     return specs;
 }
 
-// The rectangle file of a run: exactly one of --rects (corners) and --poses.
-struct rectangle_input {
-    store_kind kind;
-    std::string option;  // "rects" or "poses"
-    std::string path;
-};
-
-rectangle_input rectangle_option(const parsed_options& options) {
-    const auto rects = options.value("rects");
-    const auto poses = options.value("poses");
-    if (rects && poses) {
-        throw usage_error("--rects and --poses both given; the rectangles come from one of them");
-    }
-    if (rects) {
-        return rectangle_input{store_kind::corners, "rects", std::string(*rects)};
-    }
-    if (poses) {
-        return rectangle_input{store_kind::poses, "poses", std::string(*poses)};
-    }
-    throw usage_error("missing required option --rects or --poses");
-}
-
-// The method when --method is not given: the article's test on each store.
-method default_method(store_kind store) {
-    return store == store_kind::corners ? method::sat4 : method::local;
-}
-
-// --method, checked before any file is read against the methods that run on
-// the store: the library would refuse the others only at the first pair.
-method collide_method(const parsed_options& options, const rectangle_input& input) {
-    const method m = method_option(options, default_method(input.kind));
-    if (!runs_on(m, input.kind)) {
-        const std::string store = store_name(input.kind);
-        throw usage_error("--method " + std::string(method_name(m)) + " does not run on " + store + " (--" +
-                          input.option + "); the methods on " + store + " are " +
-                          method_list(methods_on(input.kind)));
-    }
-    return m;
-}
-
 // Where verdict text goes: the atomic file of --out, or standard output.
 class verdict_writer {
 public:
@@ -199,7 +159,7 @@ int run_collide(const arguments& args) {
         throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
     }
     collide_options run;
-    run.test = collide_method(options, input);
+    run.test = store_method_option(options, input);
     if (const auto threads = options.value("threads")) {
         run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
     }

@@ -1,6 +1,8 @@
 // obbsat demo: every backend this CPU runs, timed on one seeded scene, each
-// run checked byte for byte against the scalar reference before its time
-// counts for anything.
+// run checked byte for byte against its reference before its time counts for
+// anything. The scene's rectangles are timed in both corner stores and, for
+// the methods on poses, in a pose store built from the same corners, so that
+// a method on poses is read beside the corner test it stands in for.
 #include "accuracy_brief.hpp"
 #include "cli_args.hpp"
 #include "commands.hpp"
@@ -10,7 +12,11 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/pose.hpp>
+#include <obbsat/pose_conversion.hpp>
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/ref/pose_corners.hpp>
 #include <obbsat/scene.hpp>
 
 #include <algorithm>
@@ -26,6 +32,12 @@ namespace obbsat::cli {
 
 namespace {
 
+using clock = std::chrono::steady_clock;
+
+double seconds_since(clock::time_point start) {
+    return std::chrono::duration<double>(clock::now() - start).count();
+}
+
 struct demo_settings {
     std::size_t rects = 100000;
     std::size_t pairs = 1000000;
@@ -33,30 +45,45 @@ struct demo_settings {
     scene_density density = scene_density::typical;
     const char* density_name = "typical";
     unsigned reps = 7;
-    std::vector<method> methods{method::sat4};
+    // The article's test on corners, and beside it the same test on poses.
+    std::vector<method> methods{method::sat4, method::local};
 };
 
 // One row of the table: a way to compute the scene's verdicts.
 struct demo_entry {
-    method test;
     std::string runner;  // a backend's name, or whatever else computes the verdicts
-    std::string store;   // how the rectangles are laid out in memory
+    std::string store;   // how the rectangles are laid out in memory: soa, records or poses
     unsigned threads;
     std::function<void(std::uint8_t* verdicts)> run;
-    bool is_reference;   // the row the others are checked and compared against
 };
 
-// The scene, with its rectangles in both stores the library takes for pair
-// lists: arrays per coordinate, and packed records (one cache line each).
+// The rows of one method on one kind of store, and the verdicts they must all
+// reproduce: on corners the method on the scalar backend over soa at 1
+// thread, on poses the method's scalar reference on poses called pair by pair.
+struct demo_group {
+    method test;
+    store_kind kind;
+    const char* reference_name;  // for the message when a row differs
+    std::function<void(std::uint8_t* verdicts)> reference;
+    std::vector<demo_entry> entries;  // the first is what 'speedup' compares against
+};
+
+// The scene, with its rectangles in every store the library takes for pair
+// lists: arrays per coordinate, packed corner records (one cache line each),
+// and packed poses (half a cache line each), built from the same corners.
 struct demo_scene {
     scene world;
     rect_records records;
+    pose_records poses;
 };
 
-struct demo_result {
-    double median_seconds;
-    std::uint64_t digest;
-    std::size_t colliding;
+// A row as measured, for the comparisons printed under the table.
+struct measured_row {
+    method test;
+    std::string runner;
+    std::string store;
+    unsigned threads;
+    double seconds;  // the median
 };
 
 const std::vector<option_spec>& demo_option_specs() {
@@ -66,7 +93,7 @@ const std::vector<option_spec>& demo_option_specs() {
         {"seed", "S", "scene seed (default: 1)"},
         {"density", "D", "sparse, typical or dense: about 5%, 30% or 80% collide (default: typical)"},
         {"reps", "K", "timed repetitions per row, after one warm-up; the median counts (default: 7)"},
-        {"method", "NAME", "a collision test, or 'all' for every one this build offers (default: sat4)"},
+        {"method", "NAME", "a collision test, or 'all' for every one this build offers (default: sat4 and local)"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -88,7 +115,7 @@ demo_settings settings_from(const parsed_options& options) {
     }
     if (const auto v = options.value("method")) {
         if (*v == "all") {
-            s.methods = methods_on(store_kind::corners);
+            s.methods = all_methods();
         } else if (const auto m = parse_method(*v)) {
             s.methods = {*m};
         } else {
@@ -135,6 +162,162 @@ std::vector<backend> runnable_backends() {
     return runnable;
 }
 
+// The corner test a method on poses is read beside: local is the article's
+// test taken into A's frame, so it stands beside sat4; conservative and exact
+// run on both kinds of store, so each stands beside itself.
+method corner_counterpart(method m) { return m == method::local ? method::sat4 : m; }
+
+// The method and store groups to time, in table order: by the declaration
+// order of each method's corner counterpart, corners before poses.
+std::vector<std::pair<method, store_kind>> group_order(const std::vector<method>& methods) {
+    const std::vector<method> order = all_methods();
+    const auto rank = [&order](method m) {
+        return std::find(order.begin(), order.end(), corner_counterpart(m)) - order.begin();
+    };
+    std::vector<std::pair<method, store_kind>> groups;
+    for (const method m : methods) {
+        for (const store_kind kind : {store_kind::corners, store_kind::poses}) {
+            if (runs_on(m, kind)) {
+                groups.emplace_back(m, kind);
+            }
+        }
+    }
+    std::stable_sort(groups.begin(), groups.end(), [&rank](const auto& x, const auto& y) {
+        return rank(x.first) < rank(y.first) ||
+               (rank(x.first) == rank(y.first) && x.second == store_kind::corners &&
+                y.second == store_kind::poses);
+    });
+    return groups;
+}
+
+collide_options options_for(method test, backend b, unsigned threads) {
+    collide_options options;
+    options.test = test;
+    options.use = b;
+    options.threads = threads;
+    return options;
+}
+
+// Every group the demo times, each method's rows on corners first.
+std::vector<demo_group> demo_groups(const demo_scene& demo, const std::vector<method>& methods) {
+    std::vector<demo_group> groups;
+    const std::vector<pair_index>& pairs = demo.world.pairs;
+    for (const auto& [test, kind] : group_order(methods)) {
+        demo_group group{test, kind, "", nullptr, {}};
+        if (kind == store_kind::corners) {
+            group.reference_name = "the scalar reference (the scalar backend over soa at 1 thread)";
+            const collide_options reference = options_for(test, backend::scalar, 1);
+            group.reference = [&demo, &pairs, reference](std::uint8_t* verdicts) {
+                collide_pairs(demo.world.rects, pairs.data(), pairs.size(), verdicts, reference);
+            };
+            for (const char* store : {"soa", "records"}) {
+                const bool soa = std::strcmp(store, "soa") == 0;
+                for (const backend b : runnable_backends()) {
+                    for (const unsigned threads : {1u, 2u}) {
+                        const collide_options options = options_for(test, b, threads);
+                        auto run = [&demo, &pairs, soa, options](std::uint8_t* verdicts) {
+                            if (soa) {
+                                collide_pairs(demo.world.rects, pairs.data(), pairs.size(), verdicts,
+                                              options);
+                            } else {
+                                collide_pairs(demo.records, pairs.data(), pairs.size(), verdicts,
+                                              options);
+                            }
+                        };
+                        group.entries.push_back(demo_entry{backend_name(b), store, threads, run});
+                    }
+                }
+            }
+        } else {
+            group.reference_name = "the scalar reference on poses (obbsat::pose_method_reference)";
+            const pose_reference_fn reference = pose_method_reference(test);
+            group.reference = [&demo, &pairs, reference](std::uint8_t* verdicts) {
+                for (std::size_t i = 0; i < pairs.size(); ++i) {
+                    verdicts[i] = reference(demo.poses[pairs[i].a], demo.poses[pairs[i].b]) ? 1 : 0;
+                }
+            };
+            for (const backend b : runnable_backends()) {
+                for (const unsigned threads : {1u, 2u}) {
+                    const collide_options options = options_for(test, b, threads);
+                    auto run = [&demo, &pairs, options](std::uint8_t* verdicts) {
+                        collide_pairs(demo.poses, pairs.data(), pairs.size(), verdicts, options);
+                    };
+                    group.entries.push_back(demo_entry{backend_name(b), "poses", threads, run});
+                }
+            }
+        }
+        // ---- More rows for this method go here. --------------------------
+        // A peer implementation (another library's test on the same scene) is
+        // one more demo_entry with its own `runner` name and a `run` that
+        // writes one 0/1 byte per pair of demo.world.pairs; it is then checked
+        // against the group's reference and timed like every backend. Only add
+        // rows that really run: every figure in the table is measured here.
+        // -------------------------------------------------------------------
+        groups.push_back(std::move(group));
+    }
+    return groups;
+}
+
+double median_of(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+// The first pair where `got` differs from `want`, or count if none does.
+std::size_t first_difference(const std::vector<std::uint8_t>& want,
+                             const std::vector<std::uint8_t>& got) {
+    const auto [a, b] = std::mismatch(want.begin(), want.end(), got.begin());
+    (void)b;
+    return static_cast<std::size_t>(a - want.begin());
+}
+
+void print_mismatch(const demo_group& group, const demo_entry& entry, const scene& world,
+                    const std::vector<std::uint8_t>& want, const std::vector<std::uint8_t>& got,
+                    std::size_t at) {
+    const pair_index& p = world.pairs[at];
+    std::fprintf(stderr,
+                 "obbsat: demo: %s on %s (%s, %u thread(s)) disagrees with %s at pair %zu "
+                 "(rectangles %" PRIu32 " and %" PRIu32 "): verdict %u, reference %u\n",
+                 method_name(group.test), entry.runner.c_str(), entry.store.c_str(), entry.threads,
+                 group.reference_name, at, p.a, p.b, static_cast<unsigned>(got[at]),
+                 static_cast<unsigned>(want[at]));
+}
+
+const measured_row* find_row(const std::vector<measured_row>& rows, method test, const char* store,
+                             const char* runner, unsigned threads) {
+    for (const measured_row& row : rows) {
+        if (row.test == test && row.store == store && row.runner == runner && row.threads == threads) {
+            return &row;
+        }
+    }
+    return nullptr;
+}
+
+// Each method on poses against the corner test it stands in for, both over
+// packed records of the same rectangles on the best backend at 1 thread.
+void print_pose_ratios(const std::vector<measured_row>& rows, double pairs) {
+    const char* best = backend_name(best_supported_backend());
+    bool first = true;
+    for (const measured_row& row : rows) {
+        if (row.store != "poses" || row.runner != best || row.threads != 1) {
+            continue;
+        }
+        const method counterpart = corner_counterpart(row.test);
+        const measured_row* corners = find_row(rows, counterpart, "records", best, 1);
+        if (corners == nullptr) {
+            continue;
+        }
+        if (first) {
+            std::printf("poses against corners (%s, 1 thread, the same pairs):\n", best);
+            first = false;
+        }
+        std::printf("  %s on poses: %.1f Mpairs/s, %.2fx %s on records (%.1f Mpairs/s)\n",
+                    method_name(row.test), pairs / row.seconds / 1e6, corners->seconds / row.seconds,
+                    method_name(counterpart), pairs / corners->seconds / 1e6);
+    }
+}
+
 // Box2D's narrow phase on the same pairs, and the speedup of the best sat4
 // rows over it; `sat4_seconds` holds the best backend's records rows at 1
 // and 2 threads (0 where not timed).
@@ -161,68 +344,82 @@ void print_box2d_comparison(const scene& world, unsigned reps, const std::vector
     }
 }
 
-// Every row the demo times, the reference of each method first.
-std::vector<demo_entry> demo_entries(const demo_scene& demo, const std::vector<method>& methods) {
-    std::vector<demo_entry> entries;
-    const std::vector<pair_index>& pairs = demo.world.pairs;
-    for (const method test : methods) {
-        for (const char* store : {"soa", "records"}) {
-            const bool soa = std::strcmp(store, "soa") == 0;
-            for (const backend b : runnable_backends()) {
-                for (const unsigned threads : {1u, 2u}) {
-                    collide_options options;
-                    options.test = test;
-                    options.use = b;
-                    options.threads = threads;
-                    auto run = [&demo, &pairs, soa, options](std::uint8_t* verdicts) {
-                        if (soa) {
-                            collide_pairs(demo.world.rects, pairs.data(), pairs.size(), verdicts,
-                                          options);
-                        } else {
-                            collide_pairs(demo.records, pairs.data(), pairs.size(), verdicts,
-                                          options);
-                        }
-                    };
-                    entries.push_back(demo_entry{test, backend_name(b), store, threads, run,
-                                                 soa && b == backend::scalar && threads == 1});
-                }
-            }
+// The median time of `reps` runs of `run` after one warm-up, or nothing when
+// `check`, called after every run, returns false; `prepare` runs before each
+// run, untimed.
+template <class Prepare, class Run, class Check>
+std::optional<double> timed_median(unsigned reps, Prepare prepare, Run run, Check check) {
+    std::vector<double> times;
+    for (unsigned rep = 0; rep <= reps; ++rep) {
+        prepare();
+        const clock::time_point start = clock::now();
+        run();
+        const double elapsed = seconds_since(start);
+        if (!check()) {
+            return std::nullopt;
         }
-        // ---- More rows for this method go here. --------------------------
-        // A peer implementation (another library's test on the same scene) is
-        // one more demo_entry with its own `runner` name and a `run` that
-        // writes one 0/1 byte per pair of demo.world.pairs; it is then checked
-        // against the reference and timed like every backend. Only add rows
-        // that really run: every figure in the table is measured here.
-        // -------------------------------------------------------------------
+        if (rep > 0) {  // rep 0 is the warm-up
+            times.push_back(elapsed);
+        }
     }
-    return entries;
+    return median_of(times);
 }
 
-double median_of(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
-
-// The first pair where `got` differs from `want`, or count if none does.
-std::size_t first_difference(const std::vector<std::uint8_t>& want,
-                             const std::vector<std::uint8_t>& got) {
-    const auto [a, b] = std::mismatch(want.begin(), want.end(), got.begin());
-    (void)b;
-    return static_cast<std::size_t>(a - want.begin());
-}
-
-void print_mismatch(const demo_entry& entry, const scene& world,
-                    const std::vector<std::uint8_t>& want, const std::vector<std::uint8_t>& got,
-                    std::size_t at) {
-    const pair_index& p = world.pairs[at];
-    std::fprintf(stderr,
-                 "obbsat: demo: %s on %s (%s, %u thread(s)) disagrees with the scalar reference "
-                 "at pair %zu (rectangles %" PRIu32 " and %" PRIu32 "): verdict %u, reference %u\n",
-                 method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
-                 entry.threads, at, p.a, p.b,
-                 static_cast<unsigned>(got[at]), static_cast<unsigned>(want[at]));
+// Getting a scene's poses into corners for a corner method: the SIMD
+// conversion of rotation-vector poses (convert_to_corners into the caller's
+// buffer, every backend, each run checked byte for byte against
+// ref::corners_of) against corners built from angles (rect_records::from_poses:
+// cos and sin in double per box, into a new checked store). Returns false
+// after a message when a conversion differs from the reference.
+bool print_conversions(const demo_scene& demo, unsigned reps) {
+    const pose_records& poses = demo.poses;
+    const std::size_t count = poses.size();
+    std::vector<rect> want(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        want[i] = ref::corners_of(poses[i]);
+    }
+    std::vector<pose> angles(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        angles[i] = pose_of(demo.records[i]);
+    }
+    const double boxes = static_cast<double>(count);
+    const std::optional<double> from_angles = timed_median(
+        reps, [] {}, [&angles] { rect_records built = rect_records::from_poses(angles); (void)built; },
+        [] { return true; });
+    std::printf("\nposes to corners, %zu boxes, median of %u runs after one warm-up:\n", count, reps);
+    std::printf("  %-16s  %-24s  %-8s  %8s  %9s\n", "pose", "conversion", "backend", "ns/box", "speedup");
+    std::printf("  %-16s  %-24s  %-8s  %8.2f  %8.2fx\n", "angle", "rect_records::from_poses", "-",
+                *from_angles / boxes * 1e9, 1.0);
+    // Filled with NaN bytes before each run, so that a corner a run did not
+    // write cannot pass for the reference's.
+    std::vector<rect> got(count);
+    const auto poison = [&got] { std::memset(static_cast<void*>(got.data()), 0xff, got.size() * sizeof(rect)); };
+    for (const backend b : runnable_backends()) {
+        std::size_t differs = count;
+        const std::optional<double> seconds = timed_median(
+            reps, poison, [&] { convert_to_corners(poses, got.data(), b); },
+            [&] {
+                for (std::size_t i = 0; i < count; ++i) {
+                    if (std::memcmp(&got[i], &want[i], sizeof(rect)) != 0) {
+                        differs = i;
+                        return false;
+                    }
+                }
+                return true;
+            });
+        if (!seconds) {
+            std::fprintf(stderr,
+                         "obbsat: demo: convert_to_corners on %s gives other corners than ref::corners_of "
+                         "for pose %zu\n",
+                         backend_name(b), differs);
+            return false;
+        }
+        std::printf("  %-16s  %-24s  %-8s  %8.2f  %8.2fx\n", "rotation vector", "convert_to_corners",
+                    backend_name(b), *seconds / boxes * 1e9, *from_angles / *seconds);
+    }
+    std::printf("every convert_to_corners run gave the corners of ref::corners_of, byte for byte; speedup\n"
+                "against corners built from angles (cos and sin in double per box, into a new checked store)\n\n");
+    return true;
 }
 
 }  // namespace
@@ -232,13 +429,20 @@ void print_demo_help(std::FILE* out) {
                  "usage: obbsat demo [--rects N] [--pairs N] [--seed S] [--density D] [--reps K]\n"
                  "                   [--method NAME|all]\n"
                  "\n"
-                 "Builds a seeded broadphase-like scene, runs method sat4 (or the --method\n"
-                 "given) on every backend this CPU runs, at 1 and 2 threads, over both rectangle\n"
-                 "stores (soa: one array per coordinate; records: one packed 32-byte record per\n"
-                 "rectangle), and checks every run's verdicts byte for byte against the same\n"
-                 "method on the scalar backend over soa at 1 thread (exit status 1 if any\n"
-                 "differs). Prints throughput, speedup over that reference, the verdict digest\n"
-                 "(FNV-1a) and the share of pairs that collide.\n"
+                 "Builds a seeded broadphase-like scene and runs method sat4 and, beside it,\n"
+                 "method local on the same rectangles as poses (or the --method given, on every\n"
+                 "store it runs on) on every backend this CPU runs, at 1 and 2 threads. Corners\n"
+                 "are timed in both corner stores (soa: one array per coordinate; records: one\n"
+                 "packed 32-byte record per rectangle), poses in a pose store built from the\n"
+                 "same corners (poses: one packed 32-byte record per pose). Every run's verdicts\n"
+                 "are checked byte for byte against the method's reference: on corners the\n"
+                 "scalar backend over soa at 1 thread, on poses the scalar reference on poses\n"
+                 "(exit status 1 if any differs). Prints throughput, speedup over the first row\n"
+                 "of each method and store, the verdict digest (FNV-1a) and the share of pairs\n"
+                 "that collide; then each method on poses against its corner counterpart, the\n"
+                 "conversion of poses to corners (every backend, checked against the reference)\n"
+                 "against corners built from angles, Box2D on the same pairs and the accuracy\n"
+                 "summary.\n"
                  "\n"
                  "options:\n");
     print_options(out, demo_option_specs());
@@ -251,16 +455,13 @@ void print_demo_help(std::FILE* out) {
 
 int run_demo(const arguments& args) {
     const demo_settings settings = settings_from(parse_options(args, demo_option_specs()));
-    using clock = std::chrono::steady_clock;
-    auto seconds_since = [](clock::time_point start) {
-        return std::chrono::duration<double>(clock::now() - start).count();
-    };
 
     const clock::time_point build_start = clock::now();
     demo_scene demo;
     demo.world = make_scene(
         scene_spec_for(settings.density, settings.rects, settings.pairs, settings.seed));
     demo.records = records_of(demo.world.rects);
+    demo.poses = pose_records::from_corners(demo.records);
     const double build_seconds = seconds_since(build_start);
     const scene& world = demo.world;
     const std::size_t count = world.pairs.size();
@@ -273,8 +474,10 @@ int run_demo(const arguments& args) {
                 OBBSAT_VERSION, world.rects.size(), count, settings.density_name, settings.seed,
                 build_seconds);
     std::printf("each row: median of %u timed runs after one warm-up; every run checked byte for "
-                "byte against the reference,\nthe same method on the scalar backend over soa at "
-                "1 thread, which 'speedup' compares against\n\n",
+                "byte against the reference,\non corners the same method on the scalar backend over "
+                "soa at 1 thread, on poses the method's scalar\nreference on poses (the poses are "
+                "built from the same corners); 'speedup' compares against the first\nrow of each "
+                "method and store\n\n",
                 settings.reps);
     int method_width = static_cast<int>(std::strlen("method"));
     for (const method m : settings.methods) {
@@ -285,61 +488,63 @@ int run_demo(const arguments& args) {
                 "colliding");
     std::fflush(stdout);
 
-    const std::vector<demo_entry> entries = demo_entries(demo, settings.methods);
-    std::vector<std::uint8_t> reference;
-    double reference_seconds = 0.0;
+    const std::vector<demo_group> groups = demo_groups(demo, settings.methods);
+    const std::string best = backend_name(best_supported_backend());
+    const double pairs = static_cast<double>(count);
+    std::vector<std::uint8_t> reference(count);
     std::vector<std::uint8_t> verdicts(count);
+    std::vector<measured_row> measured;
     std::vector<accuracy::timed_method> timed;  // for the accuracy lines below
     std::vector<std::uint8_t> sat4_verdicts;    // for the Box2D comparison below
-    double best_sat4_seconds[2] = {0.0, 0.0};   // best backend, records, 1 and 2 threads
-    for (const demo_entry& entry : entries) {
-        if (entry.is_reference) {
-            reference.assign(count, 0);
-            entry.run(reference.data());
+    for (const demo_group& group : groups) {
+        group.reference(reference.data());
+        if (group.test == method::sat4 && group.kind == store_kind::corners) {
+            sat4_verdicts = reference;
         }
-        std::vector<double> times;
-        for (unsigned rep = 0; rep <= settings.reps; ++rep) {
-            std::fill(verdicts.begin(), verdicts.end(), std::uint8_t{0xff});
-            const clock::time_point start = clock::now();
-            entry.run(verdicts.data());
-            const double elapsed = seconds_since(start);
-            const std::size_t at = first_difference(reference, verdicts);
-            if (at != count) {
-                print_mismatch(entry, world, reference, verdicts, at);
+        double baseline_seconds = 0.0;
+        for (const demo_entry& entry : group.entries) {
+            std::size_t at = count;
+            const std::optional<double> seconds = timed_median(
+                settings.reps, [&] { std::fill(verdicts.begin(), verdicts.end(), std::uint8_t{0xff}); },
+                [&] { entry.run(verdicts.data()); },
+                [&] {
+                    at = first_difference(reference, verdicts);
+                    return at == count;
+                });
+            if (!seconds) {
+                print_mismatch(group, entry, world, reference, verdicts, at);
                 return exit_internal_error;
             }
-            if (rep > 0) {  // rep 0 is the warm-up
-                times.push_back(elapsed);
+            if (baseline_seconds == 0.0) {
+                baseline_seconds = *seconds;
             }
+            measured.push_back({group.test, entry.runner, entry.store, entry.threads, *seconds});
+            if (entry.store == "records" && entry.threads == 1 && entry.runner == best) {
+                timed.push_back({group.test, pairs / *seconds / 1e6});
+            }
+            const std::uint64_t digest = verdict_digest(verdicts.data(), count);
+            const auto colliding = std::count(verdicts.begin(), verdicts.end(), std::uint8_t{1});
+            std::printf("%-*s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
+                        method_width, method_name(group.test), entry.runner.c_str(), entry.store.c_str(),
+                        entry.threads, pairs / *seconds / 1e6, *seconds / pairs * 1e9,
+                        baseline_seconds / *seconds, digest,
+                        100.0 * static_cast<double>(colliding) / pairs);
+            std::fflush(stdout);
         }
-        demo_result result{median_of(times), verdict_digest(verdicts.data(), count),
-                           static_cast<std::size_t>(
-                               std::count(verdicts.begin(), verdicts.end(), std::uint8_t{1}))};
-        if (entry.is_reference) {
-            reference_seconds = result.median_seconds;
-        }
-        const double pairs = static_cast<double>(count);
-        if (entry.store == "records" && entry.threads == 1 &&
-            entry.runner == backend_name(best_supported_backend())) {
-            timed.push_back({entry.test, pairs / result.median_seconds / 1e6});
-        }
-        if (entry.test == method::sat4 && entry.is_reference) {
-            sat4_verdicts = verdicts;
-        }
-        if (entry.test == method::sat4 && entry.store == "records" && entry.threads <= 2 &&
-            entry.runner == backend_name(best_supported_backend())) {
-            best_sat4_seconds[entry.threads - 1] = result.median_seconds;
-        }
-        std::printf("%-*s  %-8s  %-7s  %7u  %9.1f  %8.2f  %7.2fx  %016" PRIx64 "  %8.2f%%\n",
-                    method_width, method_name(entry.test), entry.runner.c_str(), entry.store.c_str(),
-                    entry.threads,
-                    pairs / result.median_seconds / 1e6, result.median_seconds / pairs * 1e9,
-                    reference_seconds / result.median_seconds, result.digest,
-                    100.0 * static_cast<double>(result.colliding) / pairs);
-        std::fflush(stdout);
     }
-    std::printf("\nall %zu rows agree with the scalar reference (best backend here: %s)\n",
-                entries.size(), backend_name(best_supported_backend()));
+    std::printf("\nall %zu rows agree with the scalar reference of their method and store (best backend "
+                "here: %s)\n",
+                measured.size(), best.c_str());
+    print_pose_ratios(measured, pairs);
+    if (!print_conversions(demo, settings.reps)) {
+        return exit_internal_error;
+    }
+    double best_sat4_seconds[2] = {0.0, 0.0};  // best backend, records, 1 and 2 threads
+    for (unsigned t = 1; t <= 2; ++t) {
+        if (const measured_row* row = find_row(measured, method::sat4, "records", best.c_str(), t)) {
+            best_sat4_seconds[t - 1] = row->seconds;
+        }
+    }
     print_box2d_comparison(world, settings.reps, sat4_verdicts, best_sat4_seconds);
     accuracy::print_accuracy_brief(stdout, timed);
     return exit_success;

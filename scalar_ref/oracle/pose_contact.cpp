@@ -267,4 +267,38 @@ bool intersects(const rect_pose& a, const rect_pose& b) {
     return classify(a, b) != contact::separated;
 }
 
+std::array<int, 4> slack_signs(const rect_pose& a, const rect_pose& b) {
+    check(a, "a");
+    check(b, "b");
+    const rounded_slacks rounded = rounded_slacks_of(a, b);
+    std::array<int, 4> signs{};
+    for (int k = 0; k < 4; ++k) {
+        const std::size_t i = static_cast<std::size_t>(k);
+        signs[i] = rounded_sign(rounded.value[k], rounded.bound[k]);
+        if (signs[i] == undecided) {
+            signs[i] = exact_slack_sign(axis_slack_of(a, b, k), a.center, b.center, true);
+        }
+    }
+    return signs;
+}
+
+std::array<axis_terms, 4> terms_of_axes(const rect_pose& a, const rect_pose& b) {
+    check(a, "a");
+    check(b, "b");
+    const double dx = static_cast<double>(b.center.x) - a.center.x;
+    const double dy = static_cast<double>(b.center.y) - a.center.y;
+    std::array<axis_terms, 4> terms{};
+    for (int k = 0; k < 4; ++k) {
+        const axis_slack s = axis_slack_of(a, b, k);
+        auto reach_term = [&](int i) { return s.h[i] * std::fabs(rounded(s.m[i])); };
+        // Term 0 is the axis's own pose, terms 1 and 2 the other's (axis_slack_of).
+        const double own = reach_term(0);
+        const double other = reach_term(1) + reach_term(2);
+        const bool on_a = k < 2;
+        terms[static_cast<std::size_t>(k)] =
+            axis_terms{dx * s.axis.x + dy * s.axis.y, on_a ? own : other, on_a ? other : own};
+    }
+    return terms;
+}
+
 }  // namespace obbsat::oracle

@@ -1,11 +1,14 @@
 // obbsat draw, run as a user runs it: the SVG it writes is parsed (a small XML
 // reader below) and checked against the methods' references and the exact
-// oracle called in process; bad usage and bad input leave no file behind.
+// oracles called in process, for corners (--rects) and poses (--poses); bad
+// usage and bad input leave no file behind.
 #include "program_runner.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 
 #include <gtest/gtest.h>
 
@@ -29,6 +32,7 @@ namespace fs = std::filesystem;
 using obbsat::method;
 using obbsat::point;
 using obbsat::rect;
+using obbsat::rect_pose;
 
 using obbsat::cli_test::read_file;
 using obbsat::cli_test::run_result;
@@ -595,6 +599,258 @@ TEST(draw_any_corners, degenerate_self_crossing_and_extreme_quads_draw_with_fini
         for (const double v : geometry_numbers(doc)) {
             ASSERT_TRUE(std::isfinite(v) && std::fabs(v) <= 1e5) << v;
         }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Poses: the same picture over --poses, with the pose test's axes.
+
+std::string pose_line(const rect_pose& p) {
+    return hex(p.center.x) + "," + hex(p.center.y) + "," + hex(p.half_extents.x) + "," + hex(p.half_extents.y) +
+           "," + hex(p.rotation.x) + "," + hex(p.rotation.y) + "\n";
+}
+
+rect_pose pose(float cx, float cy, float hx, float hy, float c, float s) {
+    return rect_pose{{cx, cy}, {hx, hy}, {c, s}};
+}
+
+struct labelled_pose_pair {
+    const char* kind;
+    rect_pose a;
+    rect_pose b;
+    const char* exact_separating_axis;  // the axis method exact shows, "" for none
+};
+
+std::vector<labelled_pose_pair> interesting_pose_pairs() {
+    const float diagonal = 0.70710677f;
+    return {
+        {"touching tiles", pose(0.5f, 0.5f, 0.5f, 0.5f, 1, 0), pose(1.5f, 0.5f, 0.5f, 0.5f, 1, 0), ""},
+        {"crossed, rotations of length 5", pose(0, 0, 1, 0.1f, 3, 4), pose(0, 0, 1, 0.1f, -4, 3), ""},
+        {"one-ulp gap far from the origin", pose(1e6f, 1e6f, 5, 5, 1, 0), pose(1000010.0625f, 1e6f, 5, 5, 1, 0),
+         "A.x"},
+        // Only B's diagonal axis separates: on A's axes B's extents overlap A's.
+        {"apart across B's diagonal", pose(0, 0, 1, 1, 1, 0), pose(1.9f, 1.9f, 1, 1, diagonal, diagonal), "B.x"},
+        {"a point on a segment", pose(0, 0, 2, 0, 1, 0), pose(1, 0, 0, 0, 1, 0), ""},
+    };
+}
+
+class draw_poses_test : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string poses, pairs = "# i,j\n";
+        for (std::size_t i = 0; i < cases_.size(); ++i) {
+            poses += pose_line(cases_[i].a) + pose_line(cases_[i].b);
+            pairs += std::to_string(2 * i) + "," + std::to_string(2 * i + 1) + "\n";
+        }
+        write_file(s_.file("poses.csv"), poses);
+        write_file(s_.file("pairs.csv"), pairs);
+    }
+
+    // Draws `select` with `method_name` (none: the default), expecting success;
+    // the document, for the panels and what they hold.
+    xml_document draw(const std::string& select, const std::string& method_name = "") {
+        const run_result r = s_.run("draw --poses poses.csv --pairs pairs.csv --select " + select +
+                                    (method_name.empty() ? "" : " --method " + method_name) + " --out poses.svg");
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err, "");
+        xml_document doc = parse_xml(read_file(s_.file("poses.svg")));
+        EXPECT_EQ(doc.elements[0].name, "svg");
+        return doc;
+    }
+
+    const std::vector<labelled_pose_pair> cases_ = interesting_pose_pairs();
+    scratch s_;
+};
+
+TEST_F(draw_poses_test, one_panel_per_pair_with_the_verdict_of_each_method_and_the_exact_class) {
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        const std::vector<panel_reading> panels = read_panels(draw("0-4", obbsat::method_name(m)));
+        ASSERT_EQ(panels.size(), cases_.size());
+        for (std::size_t i = 0; i < cases_.size(); ++i) {
+            SCOPED_TRACE(cases_[i].kind);
+            const panel_reading& panel = panels[i];
+            EXPECT_EQ(panel.id, "panel-" + std::to_string(i));
+            const bool collides = obbsat::pose_method_reference(m)(cases_[i].a, cases_[i].b);
+            const obbsat::oracle::contact exact = obbsat::oracle::classify(cases_[i].a, cases_[i].b);
+            const std::string verdict = collides ? "collide" : "apart";
+            EXPECT_NE(panel.title.find(std::string(obbsat::method_name(m)) + " says " + verdict + ";"),
+                      std::string::npos)
+                << panel.title;
+            EXPECT_NE(panel.title.find(std::string("exact class: ") + contact_name(exact)), std::string::npos)
+                << panel.title;
+            const bool agrees = collides == (exact != obbsat::oracle::contact::separated);
+            EXPECT_EQ(panel.title.find("agrees with the exact answer") != std::string::npos, agrees)
+                << panel.title;
+            EXPECT_NE(panel.title.find("A = pose " + std::to_string(2 * i) + ", B = pose " +
+                                       std::to_string(2 * i + 1)),
+                      std::string::npos)
+                << panel.title;
+            EXPECT_EQ(panel.frame_says_apart, !collides);
+            EXPECT_EQ(panel.separating_axes.size(), collides ? 0u : 1u);
+            // The caption holds each pose as a line of a pose file.
+            const std::string line_a = pose_line(cases_[i].a);
+            EXPECT_NE(panel.caption.find("A pose " + std::to_string(2 * i) + ": " +
+                                         line_a.substr(0, line_a.size() - 1)),
+                      std::string::npos)
+                << panel.caption;
+            // The legend lists the pose test's four axes.
+            for (const char* axis : {"A.x  A's (c, s)", "A.y  A's (-s, c)", "B.x  B's (c, s)", "B.y  B's (-s, c)"}) {
+                EXPECT_NE(panel.legend.find(axis), std::string::npos) << axis << "\n" << panel.legend;
+            }
+        }
+    }
+}
+
+TEST_F(draw_poses_test, the_separating_axis_is_drawn_with_both_projections) {
+    const xml_document doc = draw("0-4", "exact");
+    const std::vector<panel_reading> panels = read_panels(doc);
+    ASSERT_EQ(panels.size(), cases_.size());
+    for (std::size_t i = 0; i < cases_.size(); ++i) {
+        SCOPED_TRACE(cases_[i].kind);
+        const std::string want = cases_[i].exact_separating_axis;
+        EXPECT_EQ(panels[i].separating_axes, want.empty() ? std::vector<std::string>{} : std::vector<std::string>{want});
+    }
+    // A's projection and B's, each one bar along the axis.
+    std::size_t separating_groups = 0;
+    for (const std::size_t e : doc.descendants(0)) {
+        if (!doc.has_class(e, "separating-axis")) {
+            continue;
+        }
+        ++separating_groups;
+        EXPECT_EQ(doc.descendants_with_class(e, "extent-a").size(), 1u);
+        EXPECT_EQ(doc.descendants_with_class(e, "extent-b").size(), 1u);
+    }
+    EXPECT_EQ(separating_groups, 2u);
+    // The gap along A.x is exactly one float step at 1e6; along B's diagonal
+    // it is 1.9·√2 − 1 − √2 (the float diagonal is not quite √2/2).
+    EXPECT_NE(panels[2].legend.find("A.x  A's (c, s)  gap 0.0625"), std::string::npos) << panels[2].legend;
+    EXPECT_NE(panels[3].legend.find("B.x  B's (c, s)  gap 0.273"), std::string::npos) << panels[3].legend;
+}
+
+TEST_F(draw_poses_test, local_is_the_default_and_replays_its_own_float_steps) {
+    const std::vector<panel_reading> panels = read_panels(draw("2,3"));
+    ASSERT_EQ(panels.size(), 2u);
+    EXPECT_NE(panels[0].title.find("local says apart"), std::string::npos) << panels[0].title;
+    EXPECT_NE(panels[0].legend.find("axes of local (float)"), std::string::npos) << panels[0].legend;
+    EXPECT_EQ(panels[0].separating_axes, std::vector<std::string>{"A.x"});
+    EXPECT_EQ(panels[1].separating_axes, std::vector<std::string>{"B.x"});
+}
+
+TEST_F(draw_poses_test, a_zoomed_inset_shows_grazing_contacts_only) {
+    const std::vector<panel_reading> panels = read_panels(draw("0-4", "exact"));
+    ASSERT_EQ(panels.size(), 5u);
+    EXPECT_TRUE(panels[0].has_inset) << "touching tiles";
+    EXPECT_NE(panels[0].inset_text.find("outlines meet"), std::string::npos) << panels[0].inset_text;
+    EXPECT_FALSE(panels[1].has_inset) << "crossed";
+    EXPECT_TRUE(panels[2].has_inset) << "one-ulp gap";
+    EXPECT_NE(panels[2].inset_text.find("gap 0.0625"), std::string::npos) << panels[2].inset_text;
+    EXPECT_FALSE(panels[3].has_inset) << "clearly separated";
+    EXPECT_NE(panels[4].legend.find("A is a segment (hy = 0)"), std::string::npos) << panels[4].legend;
+    EXPECT_NE(panels[4].legend.find("B is a point (hx = hy = 0)"), std::string::npos) << panels[4].legend;
+    EXPECT_NE(panels[1].legend.find("A: |(c, s)| = 5 scales it"), std::string::npos) << panels[1].legend;
+}
+
+// Any valid pose draws: zero half extents, values at both ends of the float
+// range (subnormals included), rotation vectors far from unit length, tiny
+// poses far from the origin, each against each, with every method on poses.
+TEST(draw_any_poses, extreme_and_degenerate_poses_draw_with_finite_coordinates) {
+    const float huge = FLT_MAX;
+    const float tiny = 1e-45f;  // the smallest subnormal
+    const std::vector<rect_pose> poses = {
+        pose(0, 0, 0, 0, 1, 0),
+        pose(0, 0, 1, 0, 1, 0),
+        pose(0, 0, 0, 1, 0.6f, 0.8f),
+        pose(huge, huge, huge, huge, huge, -huge),
+        pose(-3e38f, 3e38f, 3e38f, 1, 1, 0),
+        pose(0, 0, 3e38f, 3e38f, tiny, 0),
+        pose(tiny, -tiny, tiny, tiny, tiny, tiny),
+        pose(0, 0, tiny, 0, tiny, -tiny),
+        pose(1e30f, -1e30f, 1e-30f, 1e-30f, 1, 0),
+        pose(1e30f, -1e30f, 1e-30f, 0, 0.6f, 0.8f),
+        pose(1, 1, 1, 1, 1e20f, 1e-20f),
+        pose(1, 1, 1e-20f, 1e20f, 1e-20f, 1e20f),
+        pose(0.5f, 0.5f, 0.5f, 0.5f, 3, 4),
+        pose(-1, 2, 2, 0, -1e-30f, 1),
+        pose(5, 7, 0, 0, 1e38f, 1e38f),
+        pose(5, 7, 0, 0, -1, 0),
+    };
+    std::string pose_text;
+    for (const rect_pose& p : poses) {
+        pose_text += pose_line(p);
+    }
+    std::string pair_text;
+    std::vector<obbsat::oracle::contact> exact;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        for (std::size_t j = 0; j < poses.size(); ++j) {
+            pair_text += std::to_string(i) + "," + std::to_string(j) + "\n";
+            exact.push_back(obbsat::oracle::classify(poses[i], poses[j]));
+        }
+    }
+    const scratch s;
+    write_file(s.file("poses.csv"), pose_text);
+    write_file(s.file("pairs.csv"), pair_text);
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        const run_result r = s.run("draw --poses poses.csv --pairs pairs.csv --select 0-" +
+                                   std::to_string(exact.size() - 1) + " --method " + obbsat::method_name(m) +
+                                   " --out poses.svg");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err, "");
+        const xml_document doc = parse_xml(read_file(s.file("poses.svg")));
+        const std::vector<panel_reading> panels = read_panels(doc);
+        ASSERT_EQ(panels.size(), exact.size());
+        for (std::size_t i = 0; i < panels.size(); ++i) {
+            EXPECT_NE(panels[i].title.find(std::string("exact class: ") + contact_name(exact[i])), std::string::npos)
+                << panels[i].title;
+        }
+        for (const double v : geometry_numbers(doc)) {
+            ASSERT_TRUE(std::isfinite(v) && std::fabs(v) <= 1e5) << v;
+        }
+    }
+}
+
+TEST_F(draw_poses_test, bad_usage_and_bad_input_exit_2_and_write_nothing) {
+    write_file(s_.file("keep.svg"), "old");
+    write_file(s_.file("rects.csv"), rect_line(box(0, 1, 0, 1)) + rect_line(box(1, 2, 0, 1)));
+    write_file(s_.file("bad_poses.csv"), "0,0,1,1,1,0\n0,0,1,-1,1,0\n");
+    write_file(s_.file("far_pairs.csv"), "0,1\n0,10\n");
+    const std::vector<std::string> before = s_.entries();
+    struct bad_case {
+        std::string args;
+        std::string message;
+    };
+    const std::string tail = "--pairs pairs.csv --select 0 --out keep.svg";
+    const std::vector<bad_case> cases = {
+        {"--rects rects.csv --poses poses.csv " + tail, "draw: --rects and --poses both given"},
+        {tail, "draw: missing required option --rects or --poses"},
+        {"--poses poses.csv --method sat4 " + tail,
+         "draw: --method sat4 does not run on poses (--poses); the methods on poses are conservative, exact, "
+         "local"},
+        {"--rects rects.csv --method local " + tail, "draw: --method local does not run on corners (--rects)"},
+        {"--poses poses.csv --pairs pairs.csv --select 10 --out keep.svg",
+         "--select: pair 10 is out of range: pairs.csv holds 5 pairs"},
+        {"--poses bad_poses.csv " + tail, "bad_poses.csv:2: "},
+        {"--poses poses.csv --pairs far_pairs.csv --select 0 --out keep.svg", "far_pairs.csv:2: "},
+        {"--poses nothere.csv " + tail, "nothere.csv"},
+        {"--poses poses.csv --pairs poses.csv --select 0 --out keep.svg", "name the same input"},
+    };
+    for (const bad_case& c : cases) {
+        SCOPED_TRACE(c.args);
+        const run_result r = s_.run("draw " + c.args);
+        EXPECT_EQ(r.status, 2);
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_EQ(r.out, "");
+        EXPECT_EQ(s_.entries(), before);
+        EXPECT_EQ(read_file(s_.file("keep.svg")), "old");
+    }
+}
+
+TEST_F(draw_poses_test, help_names_both_kinds_of_file) {
+    const run_result r = s_.run("draw --help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* word : {"--rects", "--poses", "A.x", "obbsat draw --poses"}) {
+        EXPECT_NE(r.out.find(word), std::string::npos) << word;
     }
 }
 

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -335,6 +336,50 @@ TEST(pose_contact, invariant_under_swap_and_power_of_two_scaling) {
                     << show(a) << " " << show(b) << " " << exponent << " " << rotation_exponent;
             }
         }
+    }
+}
+
+TEST(pose_contact, slack_signs_and_terms_of_each_axis_by_hand) {
+    // A: u = (3, 4), v = (-4, 3), half extents 1 and 2; B axis-aligned, half
+    // extents 2 and 1, at d = (6, 8). na = 25, nb = 1, p = 3, q = -4.
+    const rect_pose a = pose(0, 0, 1, 2, 3, 4);
+    const rect_pose b = pose(6, 8, 2, 1, 1, 0);
+    const auto terms = obbsat::oracle::terms_of_axes(a, b);
+    const double want[4][3] = {{50, 25, 10}, {0, 50, 11}, {6, 11, 2}, {8, 10, 1}};
+    for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(terms[k].offset, want[k][0]) << k;
+        EXPECT_EQ(terms[k].reach_a, want[k][1]) << k;
+        EXPECT_EQ(terms[k].reach_b, want[k][2]) << k;
+    }
+    EXPECT_EQ(obbsat::oracle::slack_signs(a, b), (std::array<int, 4>{-1, 1, 1, 1}));
+    // Edge to edge along A's u (see above): zero slack there and on B's u.
+    const rect_pose c = pose(0, 0, 1, 1, 3, 4);
+    EXPECT_EQ(obbsat::oracle::slack_signs(c, pose(6, 8, 1, 1, 3, 4)), (std::array<int, 4>{0, 1, 0, 1}));
+    EXPECT_EQ(obbsat::oracle::slack_signs(c, pose(up(6), 8, 1, 1, 3, 4)), (std::array<int, 4>{-1, 1, -1, 1}));
+    EXPECT_THROW(obbsat::oracle::slack_signs(c, pose(0, 0, 1, 1, 0, 0)), std::invalid_argument);
+    EXPECT_THROW(obbsat::oracle::terms_of_axes(pose(0, 0, -1, 1, 1, 0), c), std::invalid_argument);
+}
+
+TEST(pose_contact, slack_signs_agree_with_the_class_and_with_the_terms) {
+    // On the lattice every term is a small integer, exact in double: the sign
+    // of reach_a + reach_b - |offset| is the slack's sign.
+    obbsat::seeded_random random(34);
+    for (int i = 0; i < 50000; ++i) {
+        const rect_pose a = lattice_pose(random);
+        const rect_pose b = lattice_pose(random);
+        const std::array<int, 4> signs = obbsat::oracle::slack_signs(a, b);
+        const auto terms = obbsat::oracle::terms_of_axes(a, b);
+        bool some_negative = false, all_positive = true;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const double slack = terms[k].reach_a + terms[k].reach_b - std::fabs(terms[k].offset);
+            ASSERT_EQ(signs[k], (slack > 0) - (slack < 0)) << show(a) << " " << show(b) << " axis " << k;
+            some_negative = some_negative || signs[k] < 0;
+            all_positive = all_positive && signs[k] > 0;
+        }
+        const bool areas = a.half_extents.x > 0 && a.half_extents.y > 0 && b.half_extents.x > 0 &&
+                           b.half_extents.y > 0;
+        const contact want = some_negative ? S : all_positive && areas ? O : T;
+        ASSERT_EQ(classify(a, b), want) << show(a) << " " << show(b);
     }
 }
 

@@ -1,5 +1,6 @@
 // obbsat draw: an SVG picture of chosen pairs, one panel each, showing what
-// the chosen method decided and why (see svg_pair_panel.hpp for the panel).
+// the chosen method decided and why (see svg_pair_panel.hpp for the panel),
+// for rectangles given as corners (--rects) or as poses (--poses).
 //
 // The verdicts drawn are the library's own (collide_pairs on the chosen
 // backend); the panel replays the method's steps to find the separating axis
@@ -15,6 +16,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/pose_contact.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -35,10 +37,12 @@ constexpr double picture_margin = 10;
 constexpr double header_height = 40;
 
 const std::vector<option_spec>& draw_option_specs() {
-    static const std::string method_help = "collision test: " + method_list() + " (default: sat4)";
+    static const std::string method_help =
+        "collision test: " + method_list() + " (default: sat4 on --rects, local on --poses)";
     static const std::vector<option_spec> specs = {
-        {"rects", "FILE", "rectangles, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line (required)"},
-        {"pairs", "FILE", "pairs, one 'i,j' of 0-based rectangle indices per line (required)"},
+        {"rects", "FILE", "corners, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line"},
+        {"poses", "FILE", "poses, one 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' per line"},
+        {"pairs", "FILE", "pairs, one 'i,j' of 0-based indices per line (required)"},
         {"select", "LIST", "pairs to draw: 0-based pair numbers and ranges, e.g. 0,4,9-12 (required)"},
         {"out", "FILE", "the SVG file to write, all or nothing (required)"},
         {"method", "NAME", method_help},
@@ -157,21 +161,58 @@ void draw_key(svg::writer& out, method m, backend ran, const std::string& rects_
     swatch(svg::color_apart, false, "frame: the method says apart");
 }
 
+// The picture: the key, then one panel per pair, in rows; `drawing_of(i)`
+// gives the panel of the i-th chosen pair.
+template <class DrawingOf>
+std::string picture(std::size_t count, method m, backend ran, const std::string& rects_name,
+                    const std::string& pairs_name, DrawingOf drawing_of) {
+    const std::size_t columns = count <= 1 ? 1 : count <= 4 ? 2 : 3;
+    const std::size_t rows = (count + columns - 1) / columns;
+    const double width = 2 * picture_margin + static_cast<double>(columns) * svg::panel_width +
+                         static_cast<double>(columns - 1) * picture_margin;
+    const double height = header_height + picture_margin +
+                          static_cast<double>(rows) * (svg::panel_height + picture_margin);
+    svg::writer out(width, height);
+    out.open("g", svg::attributes().set("font-family", "DejaVu Sans, Arial, sans-serif"));
+    draw_key(out, m, ran, rects_name, pairs_name);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto pair = drawing_of(i);
+        const double left = picture_margin + static_cast<double>(i % columns) * (svg::panel_width + picture_margin);
+        const double top = header_height + static_cast<double>(i / columns) * (svg::panel_height + picture_margin);
+        try {
+            svg::draw_pair_panel(out, pair, left, top);
+        } catch (const std::logic_error& e) {
+            // A replay that contradicts the library, or geometry placed outside
+            // the picture: a bug, reported with the pair that shows it.
+            throw std::logic_error("pair " + std::to_string(pair.pair_number) + ": " + e.what());
+        }
+    }
+    out.close();
+    return out.finish();
+}
+
 }  // namespace
 
 void print_draw_help(std::FILE* out) {
     std::fprintf(out,
-                 "usage: obbsat draw --rects FILE --pairs FILE --select LIST --out FILE.svg\n"
-                 "                   [--method NAME] [--backend NAME]\n"
+                 "usage: obbsat draw (--rects FILE | --poses FILE) --pairs FILE --select LIST\n"
+                 "                   --out FILE.svg [--method NAME] [--backend NAME]\n"
                  "\n"
-                 "Draws the chosen pairs as an SVG picture, one panel per pair: both rects with\n"
-                 "their corners UL UR LR LL (A blue, B purple), the article's four axes through\n"
-                 "the pair's centre, and, when the method says apart, the axis that separates\n"
-                 "them with both extents as bars along it. The frame is red when the method\n"
-                 "says collide, green when it says apart; the title gives the exact class\n"
+                 "Draws the chosen pairs as an SVG picture, one panel per pair: both rectangles\n"
+                 "(A blue, B purple), the four axes of the method's test through the pair's\n"
+                 "centre, and, when the method says apart, the axis that separates them with\n"
+                 "both extents as bars along it. The frame is red when the method says\n"
+                 "collide, green when it says apart; the title gives the exact class\n"
                  "(separated, touching, overlapping) and whether the method agrees with it.\n"
-                 "A contact too fine to see at the pair's scale gets a zoomed inset. The caption\n"
-                 "lists the corners as hex floats, ready to paste into a rectangle file.\n"
+                 "A contact too fine to see at the pair's scale gets a zoomed inset.\n"
+                 "\n"
+                 "With --rects, the quads are drawn as given with their corners UL UR LR LL\n"
+                 "and the article's four axes; the caption lists the corners as hex floats.\n"
+                 "With --poses, each pose's rectangle is drawn with its centre marked, and the\n"
+                 "axes are the pose test's: A.x and A.y, A's (c,s) and (-s,c), then B's; each\n"
+                 "extent is the pose's centre plus or minus its reach on the axis; the exact\n"
+                 "class is the pose oracle's, and the caption lists the poses as hex floats.\n"
+                 "The methods on each kind of file are those of obbsat collide.\n"
                  "\n"
                  "options:\n");
     print_options(out, draw_option_specs());
@@ -185,68 +226,73 @@ void print_draw_help(std::FILE* out) {
                  "\n"
                  "example:\n"
                  "  obbsat draw --rects rects.csv --pairs pairs.csv --select 0,7,12-15 \\\n"
-                 "              --method sat4 --out pairs.svg\n",
+                 "              --method sat4 --out pairs.svg\n"
+                 "  obbsat draw --poses poses.csv --pairs pairs.csv --select 0-3 --out poses.svg\n",
                  static_cast<unsigned long long>(max_selected_pairs));
 }
 
 int run_draw(const arguments& args) {
     const parsed_options options = parse_options(args, draw_option_specs());
-    const std::string rects_path(options.required("rects"));
+    const rectangle_input input = rectangle_option(options);
     const std::string pairs_path(options.required("pairs"));
     const std::vector<std::uint64_t> chosen = parse_selection(options.required("select"));
     const std::string out_path(*output_option(options, "out", true));
     collide_options run;
-    run.test = method_option(options);
+    run.test = store_method_option(options, input);
     run.use = resolve_backend(backend_option(options));
 
-    const io::input_file rects_file(rects_path);
+    const io::input_file rects_file(input.path);
     const io::input_file pairs_file(pairs_path);
     // Both are read to the end in turn: one stream named twice leaves no pairs.
     if (io::same_input(rects_file, pairs_file)) {
-        throw same_input_error("rects", rects_path, pairs_path);
+        throw same_input_error(input.option, input.path, pairs_path);
     }
     io::atomic_output output(out_path);
 
-    rect_records rects;
-    {
-        io::line_reader lines(rects_file.get(), rects_file.name());
-        rects = io::read_rect_records(lines);
-    }
-    const std::vector<pair_index> pairs =
-        read_chosen_pairs(pairs_file, rects.size(), rects_file.name(), chosen);
-    std::vector<std::uint8_t> verdicts(pairs.size());
-    const backend ran = collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), run);
-
-    const std::size_t columns = pairs.size() <= 1 ? 1 : pairs.size() <= 4 ? 2 : 3;
-    const std::size_t rows = (pairs.size() + columns - 1) / columns;
-    const double width = 2 * picture_margin + static_cast<double>(columns) * svg::panel_width +
-                         static_cast<double>(columns - 1) * picture_margin;
-    const double height = header_height + picture_margin +
-                          static_cast<double>(rows) * (svg::panel_height + picture_margin);
-    svg::writer out(width, height);
-    out.open("g", svg::attributes().set("font-family", "DejaVu Sans, Arial, sans-serif"));
-    draw_key(out, run.test, ran, rects_file.name(), pairs_file.name());
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-        svg::pair_drawing pair{};
-        pair.pair_number = chosen[i];
-        pair.rects = pairs[i];
-        pair.a = rects[pairs[i].a];
-        pair.b = rects[pairs[i].b];
-        pair.test = run.test;
-        pair.collides = verdicts[i] != 0;
-        pair.exact = oracle::classify(pair.a, pair.b);
-        const double left = picture_margin + static_cast<double>(i % columns) * (svg::panel_width + picture_margin);
-        const double top = header_height + static_cast<double>(i / columns) * (svg::panel_height + picture_margin);
-        try {
-            svg::draw_pair_panel(out, pair, left, top);
-        } catch (const std::logic_error& e) {
-            // A replay that contradicts the library, or geometry placed outside
-            // the picture: a bug, reported with the pair that shows it.
-            throw std::logic_error("pair " + std::to_string(pair.pair_number) + ": " + e.what());
+    std::string text;
+    if (input.kind == store_kind::corners) {
+        rect_records rects;
+        {
+            io::line_reader lines(rects_file.get(), rects_file.name());
+            rects = io::read_rect_records(lines);
         }
+        const std::vector<pair_index> pairs =
+            read_chosen_pairs(pairs_file, rects.size(), rects_file.name(), chosen);
+        std::vector<std::uint8_t> verdicts(pairs.size());
+        const backend ran = collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), run);
+        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
+            svg::pair_drawing pair{};
+            pair.pair_number = chosen[i];
+            pair.rects = pairs[i];
+            pair.a = rects[pairs[i].a];
+            pair.b = rects[pairs[i].b];
+            pair.test = run.test;
+            pair.collides = verdicts[i] != 0;
+            pair.exact = oracle::classify(pair.a, pair.b);
+            return pair;
+        });
+    } else {
+        pose_records poses;
+        {
+            io::line_reader lines(rects_file.get(), rects_file.name());
+            poses = io::read_pose_records(lines);
+        }
+        const std::vector<pair_index> pairs =
+            read_chosen_pairs(pairs_file, poses.size(), rects_file.name(), chosen);
+        std::vector<std::uint8_t> verdicts(pairs.size());
+        const backend ran = collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), run);
+        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
+            svg::pose_pair_drawing pair{};
+            pair.pair_number = chosen[i];
+            pair.poses = pairs[i];
+            pair.a = poses[pairs[i].a];
+            pair.b = poses[pairs[i].b];
+            pair.test = run.test;
+            pair.collides = verdicts[i] != 0;
+            pair.exact = oracle::classify(pair.a, pair.b);
+            return pair;
+        });
     }
-    out.close();
-    const std::string text = out.finish();
     output.write(text.data(), text.size());
     output.commit();
     return exit_success;

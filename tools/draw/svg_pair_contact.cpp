@@ -25,6 +25,10 @@ struct vec {
     double y;
 };
 
+// A corner in double: a float corner exactly, a double corner as it is.
+vec vec_of(point p) { return {p.x, p.y}; }
+vec vec_of(world_point p) { return {p.x, p.y}; }
+
 vec operator-(vec u, vec v) { return {u.x - v.x, u.y - v.y}; }
 vec operator+(vec u, vec v) { return {u.x + v.x, u.y + v.y}; }
 vec operator*(double s, vec v) { return {s * v.x, s * v.y}; }
@@ -54,8 +58,17 @@ vec closest_on_segment(vec p, vec q, vec r) {
     return p + t * d;
 }
 
+// Which side of the line p -> q the point r lies on: exact for float
+// corners, in double for double ones.
+int orientation_of(point p, point q, point r) { return oracle::orientation(p, q, r); }
+int orientation_of(world_point p, world_point q, world_point r) {
+    const double turn = cross(vec_of(q) - vec_of(p), vec_of(r) - vec_of(p));
+    return (turn > 0.0) - (turn < 0.0);
+}
+
 // True iff r, already known collinear with p and q, lies on the closed segment.
-bool within_segment(point p, point q, point r) {
+template <class Corner>
+bool within_segment(Corner p, Corner q, Corner r) {
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
            r.y <= std::max(p.y, q.y);
 }
@@ -94,16 +107,18 @@ class outline_geometry {
 public:
     explicit outline_geometry(world_point center) : center_(center) {}
 
-    vec relative(point p) const {
-        return {static_cast<double>(p.x) - center_.x, static_cast<double>(p.y) - center_.y};
+    template <class Corner>
+    vec relative(Corner p) const {
+        return vec_of(p) - vec{center_.x, center_.y};
     }
 
     // Segment [a0, a1] of A against [b0, b1] of B.
-    segment_contact between(point a0, point a1, point b0, point b1) const {
-        const int side_b0 = oracle::orientation(a0, a1, b0);
-        const int side_b1 = oracle::orientation(a0, a1, b1);
-        const int side_a0 = oracle::orientation(b0, b1, a0);
-        const int side_a1 = oracle::orientation(b0, b1, a1);
+    template <class Corner>
+    segment_contact between(Corner a0, Corner a1, Corner b0, Corner b1) const {
+        const int side_b0 = orientation_of(a0, a1, b0);
+        const int side_b1 = orientation_of(a0, a1, b1);
+        const int side_a0 = orientation_of(b0, b1, a0);
+        const int side_a1 = orientation_of(b0, b1, a1);
         const vec pa0 = relative(a0), pa1 = relative(a1), pb0 = relative(b0), pb1 = relative(b1);
         if (side_b0 * side_b1 < 0 && side_a0 * side_a1 < 0) {
             const vec at = crossing(a0, a1, b0, b1);
@@ -154,14 +169,15 @@ public:
     world_point absolute(vec v) const { return {center_.x + v.x, center_.y + v.y}; }
 
 private:
-    // Where [a0, a1] crosses [b0, b1], given that the exact signs say they
-    // cross at one point inside both. The edge vectors come from the float
-    // corners themselves: measured from the centre, a short edge beside a
+    // Where [a0, a1] crosses [b0, b1], given that the signs say they cross
+    // at one point inside both. The edge vectors come from the corners
+    // themselves: measured from the centre, a short edge beside a
     // huge one (corners 1e17 and 1 apart) rounds to nothing, and the
     // intersection to 0 / 0. Rounding may still put the parameter a little
     // outside the segment, or (edges parallel after rounding) nowhere: it is
     // kept within the segment, as the exact point is.
-    vec crossing(point a0, point a1, point b0, point b1) const {
+    template <class Corner>
+    vec crossing(Corner a0, Corner a1, Corner b0, Corner b1) const {
         const vec da = vec_of(a1) - vec_of(a0);
         const vec db = vec_of(b1) - vec_of(b0);
         const double t = cross(vec_of(b0) - vec_of(a0), db) / cross(da, db);
@@ -169,17 +185,16 @@ private:
         return relative(a0) + inside * (relative(a1) - relative(a0));
     }
 
-    static vec vec_of(point p) { return {p.x, p.y}; }
-
     world_point center_;
 };
 
 // How far the interiors overlap: the smallest overlap of the two rects'
 // extents over the normals of all eight edges (the penetration depth of two
 // convex quads), in double.
-double overlap_depth(const rect& a, const rect& b, const outline_geometry& geometry) {
+template <class Corner>
+double overlap_depth(const std::array<Corner, 4>& fa, const std::array<Corner, 4>& fb,
+                     const outline_geometry& geometry) {
     std::array<vec, 4> ca, cb;
-    const std::array<point, 4> fa = corners_of(a), fb = corners_of(b);
     for (std::size_t i = 0; i < 4; ++i) {
         ca[i] = geometry.relative(fa[i]);
         cb[i] = geometry.relative(fb[i]);
@@ -217,24 +232,32 @@ double float_spacing(double magnitude) {
     return std::ldexp(1.0, exponent - 24);
 }
 
-contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact) {
+namespace {
+
+// The float spacing at `p`, a point measured from the world point `origin`.
+double spacing_at(world_point origin, world_point p) {
+    return float_spacing(std::max(std::fabs(origin.x + p.x), std::fabs(origin.y + p.y)));
+}
+
+template <class Corner>
+contact_view contact_of(const std::array<Corner, 4>& fa, const std::array<Corner, 4>& fb, oracle::contact exact,
+                        world_point origin) {
     contact_view view;
-    const std::array<point, 4> fa = corners_of(a), fb = corners_of(b);
     double x_min = HUGE_VAL, x_max = -HUGE_VAL, y_min = HUGE_VAL, y_max = -HUGE_VAL;
     for (const auto* quad : {&fa, &fb}) {
-        for (const point p : *quad) {
-            x_min = std::min(x_min, static_cast<double>(p.x));
-            x_max = std::max(x_max, static_cast<double>(p.x));
-            y_min = std::min(y_min, static_cast<double>(p.y));
-            y_max = std::max(y_max, static_cast<double>(p.y));
+        for (const Corner& corner : *quad) {
+            const vec p = vec_of(corner);
+            x_min = std::min(x_min, p.x);
+            x_max = std::max(x_max, p.x);
+            y_min = std::min(y_min, p.y);
+            y_max = std::max(y_max, p.y);
         }
     }
     view.center = {0.5 * x_min + 0.5 * x_max, 0.5 * y_min + 0.5 * y_max};
     view.size = std::max(x_max - x_min, y_max - y_min);
     if (view.size == 0.0) {
         // Eight equal corners: show a few ulps around them.
-        view.size = inset_min_ulps *
-                    float_spacing(std::max(std::fabs(view.center.x), std::fabs(view.center.y)));
+        view.size = inset_min_ulps * spacing_at(origin, view.center);
     }
 
     const outline_geometry geometry(view.center);
@@ -260,7 +283,7 @@ contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact
     view.closest_b = geometry.absolute(best.on_b);
     view.outlines_meet = best.meet;
     view.distance = best.meet ? 0.0 : best.distance;
-    view.depth = exact == oracle::contact::overlapping ? overlap_depth(a, b, geometry) : 0.0;
+    view.depth = exact == oracle::contact::overlapping ? overlap_depth(fa, fb, geometry) : 0.0;
 
     const double limit = grazing_fraction * view.size;
     const bool grazing = view.outlines_meet ? view.depth < limit : view.distance < limit;
@@ -268,12 +291,22 @@ contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact
         const vec middle = 0.5 * (best.on_a + best.on_b);
         view.inset_center = geometry.absolute(middle);
         const double measure = view.outlines_meet ? view.depth : view.distance;
-        const double ulp = float_spacing(
-            std::max(std::fabs(view.inset_center.x), std::fabs(view.inset_center.y)));
-        view.inset_span = std::max(inset_gaps_across * measure, inset_min_ulps * ulp);
+        view.inset_ulp = spacing_at(origin, view.inset_center);
+        view.inset_span = std::max(inset_gaps_across * measure, inset_min_ulps * view.inset_ulp);
         view.has_inset = view.inset_span * inset_min_zoom <= view.size;
     }
     return view;
+}
+
+}  // namespace
+
+contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact) {
+    return contact_of(corners_of(a), corners_of(b), exact, world_point{0.0, 0.0});
+}
+
+contact_view view_of_contact(const std::array<world_point, 4>& a, const std::array<world_point, 4>& b,
+                             oracle::contact exact, world_point origin) {
+    return contact_of(a, b, exact, origin);
 }
 
 }  // namespace obbsat::svg

@@ -3,14 +3,19 @@
 // grazing contact too fine to see at the scale of the pair, the region a
 // zoomed inset should show.
 //
-// Whether two edges meet is decided by exact orientation signs, so touching
-// and one-ulp gaps are told apart exactly; distances, depths and points are
-// then computed in double, relative to the pair's centre so that they keep
-// their precision far from the world origin.
+// For corner rectangles, whether two edges meet is decided by exact
+// orientation signs, so touching and one-ulp gaps are told apart exactly;
+// distances, depths and points are then computed in double, relative to the
+// pair's centre so that they keep their precision far from the world origin.
+// Quads given by corners in double (the corners of poses, themselves rounded)
+// are measured the same way with every sign taken in double: the exact class
+// comes from the oracle, the picture only has to show it.
 #pragma once
 
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect.hpp>
+
+#include <array>
 
 namespace obbsat::svg {
 
@@ -33,6 +38,7 @@ struct contact_view {
     bool has_inset = false;  ///< the closest features are too close to see at the pair's scale
     world_point inset_center;
     double inset_span = 0;  ///< side of the square region the inset shows
+    double inset_ulp = 0;   ///< the float spacing at the inset's centre, in the world
 };
 
 /// A contact is grazing when the outline distance, or the overlap depth of
@@ -41,6 +47,12 @@ inline constexpr double grazing_fraction = 0.01;
 
 /// The contact view of (a, b); `exact` is the oracle's class of the pair.
 contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact);
+
+/// The same for two quads whose corners (in order around each) are given in
+/// double, measured from the world point `origin`; the view's points are
+/// measured from it too, and its float spacings are those at origin + point.
+contact_view view_of_contact(const std::array<world_point, 4>& a, const std::array<world_point, 4>& b,
+                             oracle::contact exact, world_point origin);
 
 /// The spacing of float values near `magnitude` (the float ulp there).
 double float_spacing(double magnitude);

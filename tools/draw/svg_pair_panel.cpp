@@ -2,6 +2,7 @@
 
 #include "svg_pair_axes.hpp"
 #include "svg_pair_contact.hpp"
+#include "svg_pose_axes.hpp"
 #include "svg_window.hpp"
 
 #include <obbsat/oracle/quad_region.hpp>
@@ -32,6 +33,55 @@ constexpr double line_height = 11.5;
 constexpr std::array<const char*, 4> corner_names = {"UL", "UR", "LR", "LL"};
 
 std::array<point, 4> corners_of(const rect& r) { return {r.ul, r.ur, r.lr, r.ll}; }
+
+// A quad as a panel draws it: its corners in order around it, in the panel's
+// world coordinates, and whether they carry the names UL UR LR LL (a pose's
+// corners carry none; its centre is marked instead).
+struct outline {
+    std::array<world_point, 4> corners;
+    bool named_corners;
+};
+
+outline outline_of(const rect& r) {
+    outline o{{}, true};
+    const std::array<point, 4> corners = corners_of(r);
+    for (std::size_t i = 0; i < 4; ++i) {
+        o.corners[i] = world_point{corners[i].x, corners[i].y};
+    }
+    return o;
+}
+
+// The corners of pose `p` in double, measured from `origin`, in the order of
+// ref::corners_of (UL, UR, LR, LL): each product of two floats is exact, each
+// corner two roundings from the pose's own, whatever the pose's scale.
+outline outline_of(const rect_pose& p, world_point origin) {
+    const double cx = static_cast<double>(p.center.x) - origin.x;
+    const double cy = static_cast<double>(p.center.y) - origin.y;
+    const double hx = p.half_extents.x, hy = p.half_extents.y;
+    const double ux = hx * p.rotation.x, uy = hx * p.rotation.y;
+    const double vx = -(hy * p.rotation.y), vy = hy * p.rotation.x;
+    return outline{{{{(cx - ux) + vx, (cy - uy) + vy},
+                     {(cx + ux) + vx, (cy + uy) + vy},
+                     {(cx + ux) - vx, (cy + uy) - vy},
+                     {(cx - ux) - vx, (cy - uy) - vy}}},
+                   false};
+}
+
+// Everything a panel draws, whatever kind of pair it shows.
+struct panel_content {
+    std::uint64_t pair_number;
+    std::string members;  // who A and B are, e.g. "A = rect 3, B = rect 4"
+    method test;
+    bool collides;
+    oracle::contact exact;
+    outline a;
+    outline b;
+    method_view axes;
+    contact_view contact;
+    std::vector<std::string> remarks;  // about the shapes, for the legend
+    std::string caption_a;
+    std::string caption_b;
+};
 
 const char* contact_name(oracle::contact c) {
     switch (c) {
@@ -116,13 +166,13 @@ void clip_path(writer& out, const std::string& id, const window& w) {
 }
 
 // A quad: translucent fill, outline, corner dots and, for corners inside the
-// window, their names placed outwards from the quad's middle.
-void draw_quad(writer& out, const window& w, const rect& r, const char* color, const char* css_class,
+// window, their names placed outwards from the quad's middle (or, for a quad
+// without corner names, a mark at its middle).
+void draw_quad(writer& out, const window& w, const outline& quad, const char* color, const char* css_class,
                double stroke_width) {
-    const std::array<point, 4> corners = corners_of(r);
     std::vector<svg_point> polygon;
-    for (const point p : corners) {
-        polygon.push_back(w.at(p));
+    for (const world_point p : quad.corners) {
+        polygon.push_back(w.at(p.x, p.y));
     }
     out.open("g", attributes().set("class", css_class));
     const std::vector<svg_point> fill = cut_polygon(w, polygon);
@@ -142,12 +192,25 @@ void draw_quad(writer& out, const window& w, const rect& r, const char* color, c
         middle.x += 0.25 * p.x;
         middle.y += 0.25 * p.y;
     }
+    if (!quad.named_corners && w.contains(middle)) {
+        out.leaf("circle", attributes()
+                               .set("class", "center")
+                               .set("cx", middle.x)
+                               .set("cy", middle.y)
+                               .set("r", 3)
+                               .set("fill", "white")
+                               .set("stroke", color)
+                               .set("stroke-width", 1.5));
+    }
     for (std::size_t i = 0; i < 4; ++i) {
         const svg_point p = polygon[i];
         if (!w.contains(p)) {
             continue;
         }
         out.leaf("circle", attributes().set("cx", p.x).set("cy", p.y).set("r", 2.4).set("fill", color));
+        if (!quad.named_corners) {
+            continue;
+        }
         // Inside the quad, where a label cannot be taken for the corner of a
         // neighbour sharing it; outside when the quad is too small to hold it.
         double dx = middle.x - p.x, dy = middle.y - p.y;
@@ -166,10 +229,10 @@ void draw_quad(writer& out, const window& w, const rect& r, const char* color, c
 }
 
 // The average of a quad's corners, in the window.
-svg_point middle_of(const window& w, const rect& r) {
+svg_point middle_of(const window& w, const outline& quad) {
     svg_point sum{0, 0};
-    for (const point p : corners_of(r)) {
-        const svg_point q = w.at(p);
+    for (const world_point p : quad.corners) {
+        const svg_point q = w.at(p.x, p.y);
         sum.x += 0.25 * q.x;
         sum.y += 0.25 * q.y;
     }
@@ -311,7 +374,7 @@ std::string axis_status(const axis_view& axis) {
     return "gap " + format("%.3g", gap);
 }
 
-void draw_main_view(writer& out, const pair_drawing& pair, const method_view& axes,
+void draw_main_view(writer& out, const panel_content& pair, const method_view& axes,
                     const contact_view& contact, const window& w, const std::string& id) {
     out.open("g", attributes().set("class", "main-view").set("clip-path", "url(#" + id + "-main)"));
     out.leaf("rect", window_square(w).set("fill", "#fbfbfb"));
@@ -349,7 +412,7 @@ void draw_main_view(writer& out, const pair_drawing& pair, const method_view& ax
     out.leaf("rect", window_square(w).set("fill", "none").set("stroke", "#bbb"));
 }
 
-void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
+void draw_inset(writer& out, const panel_content& pair, const method_view& axes,
                 const contact_view& contact, const window& w, const window& main,
                 const std::string& id) {
     out.open("g", attributes().set("class", "inset"));
@@ -380,8 +443,7 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
     draw_label(out, svg_point{w.left + 5, w.top + 9}, "inset, zoom \xC3\x97" + format("%.3g", zoom), 9,
                "#111", "start");
     draw_label(out, svg_point{w.left + 5, w.top + 21}, "width " + format("%.3g", contact.inset_span) + " = " +
-                   format("%.3g", contact.inset_span / float_spacing(std::max(std::fabs(contact.inset_center.x),
-                                                                               std::fabs(contact.inset_center.y)))) +
+                   format("%.3g", contact.inset_span / contact.inset_ulp) +
                    " float ulps there", 8,
                "#333", "start");
     const std::string measure =
@@ -395,7 +457,7 @@ void draw_inset(writer& out, const pair_drawing& pair, const method_view& axes,
 // Words per legend line: the side column holds about this many characters.
 constexpr std::size_t legend_line_chars = 50;
 
-void draw_legend(writer& out, const pair_drawing& pair, const method_view& axes,
+void draw_legend(writer& out, const panel_content& pair, const method_view& axes,
                  const contact_view& contact, double left, double top) {
     out.open("g", attributes().set("class", "legend").set("font-size", 9.5));
     double y = top;
@@ -434,12 +496,8 @@ void draw_legend(writer& out, const pair_drawing& pair, const method_view& axes,
     if (!axes.note.empty()) {
         line(axes.note, false, "#8a5a00");
     }
-    const oracle::quad_form form_a = oracle::region_of(pair.a).form;
-    const oracle::quad_form form_b = oracle::region_of(pair.b).form;
-    if (form_a != oracle::quad_form::convex || form_b != oracle::quad_form::convex) {
-        line(std::string("as the exact oracle reads them: A is ") + quad_form_article(form_a) +
-                 ", B is " + quad_form_article(form_b),
-             false, "#8a5a00");
+    for (const std::string& remark : pair.remarks) {
+        line(remark, false, "#8a5a00");
     }
     if (contact.outlines_meet) {
         line(contact.depth > 0 ? "outlines cross; overlap depth " + format("%.3g", contact.depth)
@@ -451,13 +509,10 @@ void draw_legend(writer& out, const pair_drawing& pair, const method_view& axes,
     out.close();
 }
 
-}  // namespace
 
-const char* verdict_word(bool collides) { return collides ? "collide" : "apart"; }
-
-void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double top) {
-    const method_view axes = view_of_method(pair.test, pair.a, pair.b, pair.collides);
-    const contact_view contact = view_of_contact(pair.a, pair.b, pair.exact);
+void draw_panel(writer& out, const panel_content& pair, double left, double top) {
+    const method_view& axes = pair.axes;
+    const contact_view& contact = pair.contact;
     const bool exact_collides = pair.exact != oracle::contact::separated;
     const char* frame_color = pair.collides ? color_collide : color_apart;
     const std::string id = "panel-" + std::to_string(pair.pair_number);
@@ -502,8 +557,7 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
                  .set("dy", 17)
                  .set("font-size", 11)
                  .set("fill", pair.collides == exact_collides ? "#333" : "#b00000"),
-             agreement + "   (A = rect " + std::to_string(pair.rects.a) + ", B = rect " +
-                 std::to_string(pair.rects.b) + ")");
+             agreement + "   (" + pair.members + ")");
     out.close();
 
     // A badge in the verdict's colour, readable at a glance across a grid.
@@ -534,12 +588,81 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     draw_legend(out, pair, axes, contact, side_left, legend_top);
 
     out.open("g", attributes().set("class", "caption").set("font-family", "monospace").set("font-size", 6.5).set("fill", "#333"));
-    out.text("text", attributes().set("x", margin).set("y", caption_top),
-             "A rect " + std::to_string(pair.rects.a) + ": " + hex_rect(pair.a));
-    out.text("text", attributes().set("x", margin).set("y", caption_top + 10),
-             "B rect " + std::to_string(pair.rects.b) + ": " + hex_rect(pair.b));
+    out.text("text", attributes().set("x", margin).set("y", caption_top), pair.caption_a);
+    out.text("text", attributes().set("x", margin).set("y", caption_top + 10), pair.caption_b);
     out.close();
     out.close();
+}
+
+// The shape of a pose in words, when it has no area or its rotation vector
+// scales it noticeably; empty otherwise.
+std::string pose_remark(const std::string& name, const rect_pose& p) {
+    std::string shape;
+    if (p.half_extents.x == 0.0f && p.half_extents.y == 0.0f) {
+        shape = name + " is a point (hx = hy = 0)";
+    } else if (p.half_extents.x == 0.0f || p.half_extents.y == 0.0f) {
+        shape = name + " is a segment (" + (p.half_extents.x == 0.0f ? "hx" : "hy") + " = 0)";
+    }
+    const double length = std::hypot(static_cast<double>(p.rotation.x), static_cast<double>(p.rotation.y));
+    if (std::fabs(length - 1.0) <= 1e-3) {
+        return shape;
+    }
+    const std::string scale = "|(c, s)| = " + format("%.3g", length) + " scales it";
+    return shape.empty() ? name + ": " + scale : shape + "; " + scale;
+}
+
+std::string hex_pose(const rect_pose& p) {
+    return hex_float(p.center.x) + "," + hex_float(p.center.y) + "," + hex_float(p.half_extents.x) + "," +
+           hex_float(p.half_extents.y) + "," + hex_float(p.rotation.x) + "," + hex_float(p.rotation.y);
+}
+
+}  // namespace
+
+const char* verdict_word(bool collides) { return collides ? "collide" : "apart"; }
+
+void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double top) {
+    panel_content content{};
+    content.pair_number = pair.pair_number;
+    content.members = "A = rect " + std::to_string(pair.rects.a) + ", B = rect " + std::to_string(pair.rects.b);
+    content.test = pair.test;
+    content.collides = pair.collides;
+    content.exact = pair.exact;
+    content.a = outline_of(pair.a);
+    content.b = outline_of(pair.b);
+    content.axes = view_of_method(pair.test, pair.a, pair.b, pair.collides);
+    content.contact = view_of_contact(pair.a, pair.b, pair.exact);
+    const oracle::quad_form form_a = oracle::region_of(pair.a).form;
+    const oracle::quad_form form_b = oracle::region_of(pair.b).form;
+    if (form_a != oracle::quad_form::convex || form_b != oracle::quad_form::convex) {
+        content.remarks.push_back(std::string("as the exact oracle reads them: A is ") + quad_form_article(form_a) +
+                                  ", B is " + quad_form_article(form_b));
+    }
+    content.caption_a = "A rect " + std::to_string(pair.rects.a) + ": " + hex_rect(pair.a);
+    content.caption_b = "B rect " + std::to_string(pair.rects.b) + ": " + hex_rect(pair.b);
+    draw_panel(out, content, left, top);
+}
+
+void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top) {
+    // Everything is measured from A's centre, where the axes' scalars start.
+    const world_point origin{pair.a.center.x, pair.a.center.y};
+    panel_content content{};
+    content.pair_number = pair.pair_number;
+    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b);
+    content.test = pair.test;
+    content.collides = pair.collides;
+    content.exact = pair.exact;
+    content.a = outline_of(pair.a, origin);
+    content.b = outline_of(pair.b, origin);
+    content.axes = view_of_pose_method(pair.test, pair.a, pair.b, pair.collides);
+    content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin);
+    for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
+        if (!remark.empty()) {
+            content.remarks.push_back(remark);
+        }
+    }
+    content.caption_a = "A pose " + std::to_string(pair.poses.a) + ": " + hex_pose(pair.a);
+    content.caption_b = "B pose " + std::to_string(pair.poses.b) + ": " + hex_pose(pair.b);
+    draw_panel(out, content, left, top);
 }
 
 }  // namespace obbsat::svg

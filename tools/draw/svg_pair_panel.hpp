@@ -1,8 +1,15 @@
-// One pair drawn as a panel: both quads with their corners, the article's four
-// axes through the pair's centre, the axis that separated them (with both
-// extents as bars along it and the two facing extent ends as lines across),
-// the verdict of the method against the exact class, a zoomed inset around a
-// grazing contact, and the corner coordinates as hex floats.
+// One pair drawn as a panel: both quads with their corners, the four axes of
+// the method's test through the pair's centre, the axis that separated them
+// (with both extents as bars along it and the two facing extent ends as lines
+// across), the verdict of the method against the exact class, a zoomed inset
+// around a grazing contact, and the input values as hex floats.
+//
+// A pair of corner rectangles shows its quads as given, corners named UL UR
+// LR LL, and the article's four axes (svg_pair_axes.hpp). A pair of poses
+// shows each pose's rectangle from corners computed in double, measured from
+// A's centre, so that a pose far smaller than its distance from the origin
+// keeps its shape; each centre is marked, and the axes are the pose test's,
+// A's x and y and B's x and y (svg_pose_axes.hpp).
 //
 // Every panel is scaled on its own so that the pair fills it, with positions
 // computed in double relative to the pair's centre: coordinates written to the
@@ -18,6 +25,7 @@
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 
 #include <cstdint>
 #include <string>
@@ -44,10 +52,24 @@ struct pair_drawing {
     oracle::contact exact;   ///< the exact class
 };
 
+/// Everything a panel shows about one pair of poses.
+struct pose_pair_drawing {
+    std::uint64_t pair_number;  ///< 0-based line of the pair file (non-comment lines)
+    pair_index poses;           ///< the pose indices of A and B
+    rect_pose a;
+    rect_pose b;
+    method test;
+    bool collides;          ///< the method's verdict, as the library gave it
+    oracle::contact exact;  ///< the exact class, by the pose oracle
+};
+
 /// "collide" or "apart".
 const char* verdict_word(bool collides);
 
 /// Draws the panel of `pair` with its top-left corner at (left, top).
 void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double top);
+
+/// Draws the panel of a pair of poses with its top-left corner at (left, top).
+void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top);
 
 }  // namespace obbsat::svg

@@ -44,6 +44,8 @@
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect_pose.hpp>
 
+#include <array>
+
 namespace obbsat::oracle {
 
 /// nullptr for a valid pose, else what makes it invalid: a value that is not finite, a
@@ -59,5 +61,21 @@ contact classify_exact(const rect_pose& a, const rect_pose& b);
 
 /// True iff the closed sets of `a` and `b` share a point (touching counts); throws as classify.
 bool intersects(const rect_pose& a, const rect_pose& b);
+
+/// The exact sign of each slack (−1, 0 or +1), on A's u, A's v, B's u, B's v in that order:
+/// the pair is separated iff some sign is −1; throws as classify.
+std::array<int, 4> slack_signs(const rect_pose& a, const rect_pose& b);
+
+/// One axis's terms as the slacks above sum them, each evaluated in double (a few roundings):
+/// the slack is reach_a + reach_b − |offset|. For pictures and messages; the signs above decide.
+struct axis_terms {
+    double offset;   ///< d·n, d = B's center − A's center (its difference rounded once)
+    double reach_a;  ///< A's half width along n, times |n| (on A's u, A's v, B's u, B's v:
+                     ///< hxa·na, hya·na, hxa·|p| + hya·|q|, hxa·|q| + hya·|p|)
+    double reach_b;  ///< B's, the same way round
+};
+
+/// The terms of the four axes, in the order of slack_signs; throws as classify.
+std::array<axis_terms, 4> terms_of_axes(const rect_pose& a, const rect_pose& b);
 
 }  // namespace obbsat::oracle

@@ -44,6 +44,9 @@ struct pose_axes {
 /// Steps 1 to 4 of the contract above.
 pose_axes local_axes(const rect_pose& a, const rect_pose& b);
 
+/// Step 5 for axis k (0 to 3, in the order above): |offset| <= reach.
+bool shows_overlap(const pose_axes& axes, int k);
+
 /// Method local: true iff |offset| <= reach on all four axes, as specified above.
 bool local(const rect_pose& a, const rect_pose& b);
 

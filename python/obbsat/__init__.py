@@ -1,16 +1,25 @@
 """obbsat: which pairs of 2D rotated rectangles collide, decided in batches.
 
-Rectangles are numpy arrays of corners, four float32 corners UL, UR, LR, LL in
-cyclic order (either winding), shaped ``(N, 4, 2)`` or ``(N, 8)``. Pairs are
-integer arrays shaped ``(M, 2)`` of 0-based indices. Each call decides the
-whole batch in C++ with the SIMD backend this CPU runs best, with the GIL
-released; every backend gives verdicts bitwise identical to the method's
-scalar reference.
+Rectangles are numpy arrays in one of two forms, told apart by shape:
 
-Zero copy: a C-contiguous float32 rectangle array and a C-contiguous uint32
-pair array are read where they are. Anything else (float64 corners, int64
-pairs, a strided view) is converted once per call, which costs one pass and a
-temporary of N * 32 bytes (rectangles) or M * 8 bytes (pairs).
+- corners: four corners UL, UR, LR, LL in cyclic order (either winding),
+  shaped ``(N, 4, 2)`` or ``(N, 8)``;
+- poses: rows ``cx, cy, hx, hy, c, s`` shaped ``(N, 6)``, the closed set
+  ``{(cx, cy) + a*(c, s) + b*(-s, c) : |a| <= hx, |b| <= hy}`` (the rotation
+  vector ``(c, s)`` need not be a unit: its length scales the rectangle).
+
+Pairs are integer arrays shaped ``(M, 2)`` of 0-based indices. Each call
+decides the whole batch in C++ with the SIMD backend this CPU runs best, with
+the GIL released; every backend gives verdicts bitwise identical to the
+method's scalar reference. The methods differ per form (:func:`methods`).
+
+Zero copy: a C-contiguous float32 corner array and a C-contiguous uint32 pair
+array are read where they are. Anything else (float64 corners, int64 pairs, a
+strided view) is converted once per call, which costs one pass and a
+temporary of N * 32 bytes (rectangles) or M * 8 bytes (pairs). Poses are
+copied once per call into the library's 32-byte pose records (the layout its
+pose kernels read); a :class:`PoseRecords` store (:func:`records`) pays that
+copy once.
 
 >>> import numpy as np, obbsat
 >>> rects = np.array([[0, 1, 2, 1, 2, 0, 0, 0],
@@ -18,22 +27,29 @@ temporary of N * 32 bytes (rectangles) or M * 8 bytes (pairs).
 ...                   [9, 10, 10, 10, 10, 9, 9, 9]], dtype=np.float32)
 >>> obbsat.collide(rects, [[0, 1], [0, 2]])
 array([ True, False])
+>>> poses = np.array([[1, 0.5, 1, 0.5, 1, 0],          # the same rectangles as poses
+...                   [2, 1.25, 1, 0.75, 1, 0],
+...                   [9.5, 9.5, 0.5, 0.5, 1, 0]], dtype=np.float32)
+>>> obbsat.collide(poses, [[0, 1], [0, 2]])
+array([ True, False])
 """
 
 import numpy as _np
 
 from . import _core, testing
-from ._core import RectRecords, UnsupportedBackendError
+from ._core import PoseRecords, RectRecords, UnsupportedBackendError
 
 __version__ = _core.__version__
 
 __all__ = [
+    "PoseRecords",
     "RectRecords",
     "UnsupportedBackendError",
     "backends",
     "collide",
     "collide_stream",
     "colliding_pairs",
+    "corners_of_poses",
     "methods",
     "records",
     "resolved_backend",
@@ -41,14 +57,22 @@ __all__ = [
 
 _MAX_INDEX = 2**32 - 1
 
+# The method when none is given: the article's test on each form (as the
+# command-line program's ``collide --rects`` and ``collide --poses``).
+_DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
 
-def methods():
-    """The collision tests this build offers on corner rectangles, in the library's order.
 
-    >>> "sat4" in obbsat.methods()
-    True
+def methods(poses=False):
+    """The collision tests that run on corner rectangles, or with
+    ``poses=True`` on poses, in the library's order. A method named for the
+    other form is refused with ``ValueError``.
+
+    >>> obbsat.methods()
+    ['sat4', 'sat4_centered', 'sat4_double', 'conservative', 'exact']
+    >>> obbsat.methods(poses=True)
+    ['conservative', 'exact', 'local']
     """
-    return list(_core.methods())
+    return list(_core.methods("poses" if poses else "corners"))
 
 
 def backends(compiled=False):
@@ -74,42 +98,65 @@ def resolved_backend(backend="auto"):
     return _core.resolved_backend(backend)
 
 
-def _corners(rects, what):
-    """The rectangles as the library stores them: a C-contiguous float32 array
-    whose rows are eight floats (the array itself when it already is one).
+def _form(rects, what):
+    """``(form, array)``: which store the rectangles go to, ``"corners"`` or
+    ``"poses"``, and the array as the library reads it, C-contiguous float32
+    (the array itself when it already is one).
 
-    This is the one place that maps an array's shape to a store; a further
-    store (say, poses) is one more shape recognised here and one more entry
-    point in _core.
+    This is the one place that maps an array's shape to a store: rows of
+    eight floats (``(N, 8)`` or ``(N, 4, 2)``) are corners, rows of six
+    (``(N, 6)``) are poses.
     """
     if not isinstance(rects, _np.ndarray):
         rects = _np.asarray(rects)
     if rects.dtype.kind not in "fiu":
         raise TypeError(f"{what}: expected real numbers, got dtype {rects.dtype}")
     shape = rects.shape
-    if not ((len(shape) == 2 and shape[1] == 8) or (len(shape) == 3 and shape[1:] == (4, 2))):
-        raise ValueError(f"{what}: expected shape (N, 8) or (N, 4, 2) (corners UL, UR, LR, LL), got {shape}")
-    return _np.ascontiguousarray(rects, dtype=_np.float32)
+    if (len(shape) == 2 and shape[1] == 8) or (len(shape) == 3 and shape[1:] == (4, 2)):
+        form = "corners"
+    elif len(shape) == 2 and shape[1] == 6:
+        form = "poses"
+    else:
+        raise ValueError(f"{what}: expected shape (N, 8) or (N, 4, 2) (corners UL, UR, LR, LL) "
+                         f"or (N, 6) (poses cx, cy, hx, hy, c, s), got {shape}")
+    return form, _np.ascontiguousarray(rects, dtype=_np.float32)
+
+
+def _poses(poses, what):
+    """The poses as the library reads them: a C-contiguous float32 (N, 6) array."""
+    if not isinstance(poses, _np.ndarray):
+        poses = _np.asarray(poses)
+    if poses.dtype.kind not in "fiu":
+        raise TypeError(f"{what}: expected real numbers, got dtype {poses.dtype}")
+    if poses.ndim != 2 or poses.shape[1] != 6:
+        raise ValueError(f"{what}: expected shape (N, 6) (cx, cy, hx, hy, c, s), got {poses.shape}")
+    return _np.ascontiguousarray(poses, dtype=_np.float32)
 
 
 def records(rects):
-    """A :class:`RectRecords` store: the rectangles copied once into the
-    library's packed records (32 bytes each, 64-byte aligned), every
-    coordinate checked finite once.
+    """A store of the rectangles in the library's packed records (32 bytes
+    each, 64-byte aligned), copied and checked once: a :class:`RectRecords`
+    for corners, a :class:`PoseRecords` for poses (shape (N, 6)).
 
-    :func:`collide` reads a float32 array in place but checks its coordinates
-    on every call (one pass over the N rectangles); a store is checked when it
-    is built, so calls over it read only the pairs. Use one when many pair
-    lists meet the same rectangles. ``store.corners`` is a read-only (N, 8)
-    view of its records. A store pickles (for Dask workers, say) as its corners.
+    :func:`collide` reads a float32 corner array in place but checks its
+    coordinates on every call (one pass over the N rectangles), and copies a
+    pose array into pose records on every call; a store is checked (and
+    copied) when it is built, so calls over it read only the pairs. Use one
+    when many pair lists meet the same rectangles. ``store.corners`` (or
+    ``store.poses``) is a read-only view of its records. A store pickles (for
+    Dask workers, say) as its corners (or poses).
 
     >>> store = obbsat.records(np.array([[0, 1, 2, 1, 2, 0, 0, 0]] * 2, dtype=np.float32))
     >>> len(store), obbsat.collide(store, [[0, 1]])
     (2, array([ True]))
+    >>> poses = obbsat.records(np.array([[0, 0, 1, 1, 1, 0], [2, 0, 1, 1, 0, 1]], dtype=np.float32))
+    >>> type(poses).__name__, obbsat.collide(poses, [[0, 1]], method="exact")
+    ('PoseRecords', array([ True]))
     """
-    if isinstance(rects, RectRecords):
+    if isinstance(rects, (RectRecords, PoseRecords)):
         return rects
-    return RectRecords(_corners(rects, "rects"))
+    form, rects = _form(rects, "rects")
+    return PoseRecords(rects) if form == "poses" else RectRecords(rects)
 
 
 def _pairs(pairs, rect_count):
@@ -142,22 +189,42 @@ def _verdicts(out, count):
     return out
 
 
-def collide(rects, pairs, method="sat4", backend="auto", threads=1, out=None):
+def _store(rects, method):
+    """``(rects, call, method)``: the rectangles as the library reads them, the
+    ``_core`` call for their store, and the method (the store's default for
+    ``None``)."""
+    if isinstance(rects, RectRecords):
+        form, call = "corners", _core.collide_store
+    elif isinstance(rects, PoseRecords):
+        form, call = "poses", _core.collide_pose_store
+    else:
+        form, rects = _form(rects, "rects")
+        call = _core.collide_poses if form == "poses" else _core.collide_records
+    return rects, call, _DEFAULT_METHOD[form] if method is None else method
+
+
+def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
     """Whether each pair of rectangles collides.
 
     Parameters
     ----------
-    rects : array_like, shape (N, 4, 2) or (N, 8), or RectRecords
-        Corners UL, UR, LR, LL of each rectangle (x, y each). float32 and
-        C-contiguous is read in place; anything else is converted once.
-        Every coordinate must be finite (checked on every call: one read
-        pass; a :func:`records` store was checked once, when built).
+    rects : array_like, shape (N, 4, 2), (N, 8) or (N, 6), or a store
+        Corners UL, UR, LR, LL of each rectangle (x, y each), or poses
+        ``cx, cy, hx, hy, c, s`` (shape (N, 6)), or a :func:`records` store
+        (:class:`RectRecords`, :class:`PoseRecords`). float32 C-contiguous
+        corners are read in place; anything else is converted once. Every
+        coordinate must be finite (checked on every call: one read pass).
+        Poses are copied once per call into the library's 32-byte pose
+        records, checked as they are copied (finite, half extents >= 0,
+        rotation not (0, 0)). A store was checked once, when built.
     pairs : array_like of int, shape (M, 2)
         Indices into ``rects``: row i asks whether ``rects[pairs[i, 0]]``
         and ``rects[pairs[i, 1]]`` collide. C-contiguous uint32 is read in
         place; any other integer dtype is range-checked and converted once.
-    method : str
-        One of :func:`methods` (``"sat4"``, ``"exact"``, ...).
+    method : str, optional
+        One of :func:`methods` for the form of ``rects`` (``methods()`` on
+        corners, ``methods(poses=True)`` on poses). ``None``: ``"sat4"`` on
+        corners, ``"local"`` on poses.
     backend : str
         ``"auto"`` or one of :func:`backends`; verdicts never depend on it.
     threads : int
@@ -176,8 +243,11 @@ def collide(rects, pairs, method="sat4", backend="auto", threads=1, out=None):
         An index is negative or not below N (the message names the pair).
     ValueError
         A coordinate is NaN or infinite (the message names the rectangle and
-        the coordinate), a shape is wrong, a method or backend unknown, or the
-        backend cannot run here (``UnsupportedBackendError``).
+        the coordinate), a pose is invalid (the message names the pose and the
+        field, e.g. ``pose 3: half extent hy is -1, negative``), a shape is
+        wrong, a method unknown or not one that runs on the form of
+        ``rects``, a backend unknown, or the backend cannot run here
+        (``UnsupportedBackendError``).
     TypeError
         A dtype is not numeric (rects), not integer (pairs), or ``out`` is not
         a writable C-contiguous bool/uint8 array.
@@ -188,21 +258,31 @@ def collide(rects, pairs, method="sat4", backend="auto", threads=1, out=None):
     ...                   [[1, 2], [3, 2], [3, .5], [1, .5]]], dtype=np.float32)
     >>> obbsat.collide(rects, np.array([[0, 1]], dtype=np.uint32), method="exact")
     array([ True])
+
+    Poses: the square [-1, 1] x [-1, 1], and a square of half extents 1
+    scaled by its rotation vector (3, 4) to a half side of 5, whose corner
+    (1, 1) touches the first square's:
+
+    >>> poses = np.array([[0, 0, 1, 1, 1, 0],
+    ...                   [8, 2, 1, 1, 3, 4]], dtype=np.float32)
+    >>> obbsat.collide(poses, [[0, 1]], method="exact"), obbsat.collide(poses, [[0, 1]])
+    (array([ True]), array([ True]))
+    >>> obbsat.collide(poses, [[0, 1]], method="sat4")
+    Traceback (most recent call last):
+    ...
+    ValueError: method sat4 does not run on poses (pose_records take conservative, exact, local)
     """
-    if isinstance(rects, RectRecords):
-        decide = _core.collide_store
-    else:
-        rects = _corners(rects, "rects")
-        decide = _core.collide_records
+    rects, call, method = _store(rects, method)
     pairs = _pairs(pairs, len(rects))
     verdicts = _verdicts(out, len(pairs))
-    decide(rects, pairs, verdicts, method, backend, int(threads))
+    call(rects, pairs, verdicts, method, backend, int(threads))
     return verdicts
 
 
-def colliding_pairs(rects, pairs, method="sat4", backend="auto", threads=1):
+def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1):
     """The rows of ``pairs`` whose rectangles collide, in their input order,
-    shape (K, 2), with the dtype of ``pairs``. Arguments as :func:`collide`.
+    shape (K, 2), with the dtype of ``pairs``. Arguments as :func:`collide`
+    (corners or poses).
 
     >>> rects = np.array([[0, 1, 2, 1, 2, 0, 0, 0],
     ...                   [1, 2, 3, 2, 3, 0.5, 1, 0.5],
@@ -210,6 +290,9 @@ def colliding_pairs(rects, pairs, method="sat4", backend="auto", threads=1):
     >>> obbsat.colliding_pairs(rects, np.array([[0, 1], [0, 2], [1, 0]]))
     array([[0, 1],
            [1, 0]])
+    >>> poses = np.array([[1, 0.5, 1, 0.5, 1, 0], [9.5, 9.5, 0.5, 0.5, 0, 1]], dtype=np.float32)
+    >>> obbsat.colliding_pairs(poses, [[0, 1], [1, 1]], method="conservative")
+    array([[1, 1]])
     """
     if not isinstance(pairs, _np.ndarray):
         pairs = _np.asarray(pairs)
@@ -219,23 +302,71 @@ def colliding_pairs(rects, pairs, method="sat4", backend="auto", threads=1):
     return pairs[hits]
 
 
-def collide_stream(a, b, method="sat4", backend="auto", threads=1, out=None):
+def collide_stream(a, b, method=None, backend="auto", threads=1, out=None):
     """Whether ``a[i]`` and ``b[i]`` collide, for every i: two batches of
-    rectangles of equal length, each shaped (N, 4, 2) or (N, 8).
+    rectangles of equal length and the same form, each shaped (N, 4, 2) or
+    (N, 8) (corners), or each (N, 6) (poses).
 
     Both batches are copied into the library's structure-of-arrays store
-    (eight coordinate arrays), which is what the streaming kernels read; the
-    copy checks that every coordinate is finite. Other arguments, the result
-    and the errors are as in :func:`collide`; a length mismatch is a
-    ``ValueError``.
+    (eight coordinate arrays for corners, six field arrays for poses), which
+    is what the streaming kernels read; the copy checks every coordinate (or
+    pose). Other arguments, the default method, the result and the errors
+    are as in :func:`collide`; a length mismatch, or corners against poses,
+    is a ``ValueError``.
 
     >>> a = np.array([[0, 1, 2, 1, 2, 0, 0, 0]] * 2, dtype=np.float32)
     >>> b = np.array([[1, 2, 3, 2, 3, .5, 1, .5], [5, 6, 6, 6, 6, 5, 5, 5]], dtype=np.float32)
     >>> obbsat.collide_stream(a, b)
     array([ True, False])
+    >>> obbsat.collide_stream(np.array([[0, 0, 1, 1, 1, 0]] * 2, dtype=np.float32),
+    ...                       np.array([[1.5, 1, 0.5, 0.5, 0.6, 0.8], [3, 0, 1, 1, 0, 1]], dtype=np.float32))
+    array([ True, False])
     """
-    a = _corners(a, "a")
-    b = _corners(b, "b")
+    form_a, a = _form(a, "a")
+    form_b, b = _form(b, "b")
+    if form_a != form_b:
+        raise ValueError(f"a holds {form_a} (shape {a.shape}), b holds {form_b} (shape {b.shape}): "
+                         "a stream compares one form")
+    if method is None:
+        method = _DEFAULT_METHOD[form_a]
     verdicts = _verdicts(out, len(a))
-    _core.collide_stream(a, b, verdicts, method, backend, int(threads))
+    decide = _core.collide_pose_stream if form_a == "poses" else _core.collide_stream
+    decide(a, b, verdicts, method, backend, int(threads))
     return verdicts
+
+
+def corners_of_poses(poses, backend="auto"):
+    """The corners UL, UR, LR, LL of each pose, float32 of shape (N, 4, 2):
+    the library's conversion (``obbsat::convert_to_corners``), which every
+    backend computes bit for bit as stated in ``obbsat/ref/pose_corners.hpp``.
+    With ``u = (hx*c, hx*s)`` and ``v = (-(hy*s), hy*c)``, in float32, each
+    operation rounded once, no fused multiply-add::
+
+        UL = ((cx - ux) + vx, (cy - uy) + vy)    UR = ((cx + ux) + vx, (cy + uy) + vy)
+        LR = ((cx + ux) - vx, (cy + uy) - vy)    LL = ((cx - ux) - vx, (cy - uy) - vy)
+
+    ``poses`` is a (N, 6) array (copied once into pose records and checked,
+    as in :func:`collide`) or a :class:`PoseRecords` store. Use it to run a
+    corner method (``sat4``, ...) on poses; the corner methods then answer
+    for the rounded quads, not for the poses. A pose near the end of the
+    float range can give infinite corners, which :func:`collide` refuses.
+
+    >>> obbsat.corners_of_poses(np.array([[1, 0.5, 1, 0.5, 1, 0], [8, 2, 1, 1, 3, 4]], dtype=np.float32))
+    array([[[ 0.,  1.],
+            [ 2.,  1.],
+            [ 2.,  0.],
+            [ 0.,  0.]],
+    <BLANKLINE>
+           [[ 1.,  1.],
+            [ 7.,  9.],
+            [15.,  3.],
+            [ 9., -5.]]], dtype=float32)
+    """
+    if isinstance(poses, PoseRecords):
+        out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
+        _core.store_corners(poses, out, backend)
+        return out
+    poses = _poses(poses, "poses")
+    out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
+    _core.pose_corners(poses, out, backend)
+    return out

@@ -1,9 +1,10 @@
-from typing import Any, TypeVar
+from typing import Any, TypeVar, overload
 
 import numpy as np
 import numpy.typing as npt
 
 from . import testing as testing
+from ._core import PoseRecords as PoseRecords
 from ._core import RectRecords as RectRecords
 from ._core import UnsupportedBackendError as UnsupportedBackendError
 
@@ -11,30 +12,36 @@ __version__: str
 
 _Out = TypeVar("_Out", npt.NDArray[np.bool_], npt.NDArray[np.uint8])
 
-def methods() -> list[str]: ...
+def methods(poses: bool = ...) -> list[str]: ...
 def backends(compiled: bool = ...) -> list[str]: ...
 def resolved_backend(backend: str = ...) -> str: ...
-def records(rects: npt.ArrayLike | RectRecords) -> RectRecords: ...
+@overload
+def records(rects: RectRecords) -> RectRecords: ...
+@overload
+def records(rects: PoseRecords) -> PoseRecords: ...
+@overload
+def records(rects: npt.ArrayLike) -> RectRecords | PoseRecords: ...
 def collide(
-    rects: npt.ArrayLike | RectRecords,
+    rects: npt.ArrayLike | RectRecords | PoseRecords,
     pairs: npt.ArrayLike,
-    method: str = ...,
+    method: str | None = ...,
     backend: str = ...,
     threads: int = ...,
     out: _Out | None = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
 def colliding_pairs(
-    rects: npt.ArrayLike | RectRecords,
+    rects: npt.ArrayLike | RectRecords | PoseRecords,
     pairs: npt.ArrayLike,
-    method: str = ...,
+    method: str | None = ...,
     backend: str = ...,
     threads: int = ...,
 ) -> npt.NDArray[np.integer[Any]]: ...
 def collide_stream(
     a: npt.ArrayLike,
     b: npt.ArrayLike,
-    method: str = ...,
+    method: str | None = ...,
     backend: str = ...,
     threads: int = ...,
     out: _Out | None = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
+def corners_of_poses(poses: npt.ArrayLike | PoseRecords, backend: str = ...) -> npt.NDArray[np.float32]: ...

@@ -1,9 +1,11 @@
 """Pair lists larger than one machine, decided on a Dask cluster.
 
 The pairs are a chunked ``dask.array`` of shape (M, 2); the rectangles are one
-array that every worker needs whole (any pair may name any rectangle). It is
-copied once into a :class:`obbsat.RectRecords` store (checked once) and, with a
-``distributed`` client, sent to every worker once (``Client.scatter(...,
+array that every worker needs whole (any pair may name any rectangle), corners
+or poses as :func:`obbsat.collide` takes them. It is copied once into a
+:func:`obbsat.records` store (a :class:`obbsat.RectRecords` or
+:class:`obbsat.PoseRecords`, checked once) and, with a ``distributed`` client,
+sent to every worker once (``Client.scatter(...,
 broadcast=True)``); each chunk of pairs then becomes one task that decides its
 pairs against the worker's copy. The verdicts are a lazy boolean
 ``dask.array`` chunked like the pairs' rows, byte-identical to
@@ -42,7 +44,8 @@ def _client_or_none(client):
 
 def shared_records(rects, client=None):
     """The rectangles as every worker will read them: a checked
-    :class:`obbsat.RectRecords` store, broadcast to all workers of
+    :func:`obbsat.records` store (:class:`obbsat.RectRecords` for corners,
+    :class:`obbsat.PoseRecords` for poses), broadcast to all workers of
     ``client`` (or of the default client) when there is one, in which case a
     ``distributed.Future`` is returned. Pass the result as ``rects`` to
     :func:`collide` to reuse one broadcast for many pair lists.
@@ -50,6 +53,9 @@ def shared_records(rects, client=None):
     >>> store = obbsat.dask.shared_records(np.zeros((3, 8), dtype=np.float32))
     >>> len(store)
     3
+    >>> poses = obbsat.dask.shared_records(np.array([[0, 0, 1, 1, 1, 0]] * 2, dtype=np.float32))
+    >>> type(poses).__name__, len(poses)
+    ('PoseRecords', 2)
     """
     store = _obbsat.records(rects)
     client = _client_or_none(client)
@@ -85,19 +91,21 @@ def _as_pair_array(pairs):
     return pairs
 
 
-def collide(rects, pairs, method="sat4", backend="auto", threads=1, client=None):
+def collide(rects, pairs, method=None, backend="auto", threads=1, client=None):
     """Whether each pair collides, as a lazy boolean ``dask.array`` of shape
     (M,) chunked like the rows of ``pairs``.
 
     Parameters
     ----------
-    rects : array_like (N, 4, 2) or (N, 8), RectRecords, or the result of :func:`shared_records`
-        Checked and broadcast once per call (once overall when you pass a
+    rects : array_like (N, 4, 2), (N, 8) or (N, 6), a store, or the result of :func:`shared_records`
+        Corners or poses, as in :func:`obbsat.collide`. Checked and
+        broadcast once per call (once overall when you pass a
         :func:`shared_records` result).
     pairs : dask.array of int, shape (M, 2)
         Chunked along rows; each chunk is one task.
     method, backend, threads
-        As in :func:`obbsat.collide`, for each chunk (``threads`` per task).
+        As in :func:`obbsat.collide`, for each chunk (``threads`` per task);
+        ``method=None`` is ``"sat4"`` on corners, ``"local"`` on poses.
     client : distributed.Client, optional
         Where to broadcast the rectangles; the default client if omitted.
         Without any client (Dask's local schedulers) the store is shared in
@@ -115,7 +123,7 @@ def collide(rects, pairs, method="sat4", backend="auto", threads=1, client=None)
 
 
 def _is_shared(rects):
-    if isinstance(rects, _obbsat.RectRecords):
+    if isinstance(rects, (_obbsat.RectRecords, _obbsat.PoseRecords)):
         return False
     try:
         from distributed import Future
@@ -124,7 +132,7 @@ def _is_shared(rects):
     return isinstance(rects, Future)
 
 
-def colliding_pairs(rects, pairs, method="sat4", backend="auto", threads=1, client=None):
+def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1, client=None):
     """The rows of ``pairs`` that collide, in order, as a lazy ``dask.array``
     of shape (K, 2) (K unknown until computed). Arguments as :func:`collide`.
     """

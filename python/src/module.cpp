@@ -5,15 +5,26 @@
 // names are the Python layer's business; this file only refuses what would be
 // unsafe to read or write.
 //
+// Two stores: corners (rows of eight floats, read in place or kept in a
+// rect_records) and poses (rows of six floats cx, cy, hx, hy, c, s, copied
+// into a pose_records or, for streams, a pose_soa on every call, or kept in a
+// pose_records). A method is checked against the store before anything is
+// read or copied.
+//
 // Errors: obbsat::invalid_input becomes IndexError when it names a pair (an
-// index out of range) and ValueError otherwise (a non-finite coordinate,
-// batches of unequal length); obbsat::unsupported_backend becomes
-// obbsat.UnsupportedBackendError, a ValueError. Nothing is written then.
+// index out of range) and ValueError otherwise (a non-finite coordinate, a bad
+// pose field, a method that does not run on the store, batches of unequal
+// length); obbsat::unsupported_backend becomes obbsat.UnsupportedBackendError,
+// a ValueError. Nothing is written then.
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/pose_conversion.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/pose_soa.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 #include <obbsat/scene.hpp>
@@ -26,6 +37,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -35,12 +47,17 @@ namespace {
 
 static_assert(sizeof(obbsat::rect) == 8 * sizeof(float), "a rect is eight packed floats");
 static_assert(sizeof(obbsat::pair_index) == 2 * sizeof(std::uint32_t), "a pair is two packed uint32");
+// A row cx, cy, hx, hy, c, s of a float32 (N, 6) array is one rect_pose, so
+// the pose stores copy from the caller's array with no temporary.
+static_assert(sizeof(obbsat::rect_pose) == obbsat::pose_field_count * sizeof(float) &&
+                  std::is_standard_layout<obbsat::rect_pose>::value,
+              "a rect_pose is six packed floats cx, cy, hx, hy, c, s");
 
 obbsat::method method_named(const std::string& name) {
     const auto m = obbsat::parse_method(name);
     if (!m) {
         std::string known;
-        for (const obbsat::method each : obbsat::methods_on(obbsat::store_kind::corners)) {
+        for (const obbsat::method each : obbsat::all_methods()) {
             known += known.empty() ? "" : ", ";
             known += obbsat::method_name(each);
         }
@@ -94,6 +111,14 @@ std::pair<const obbsat::rect*, std::size_t> corners_in_place(const py::array& a,
     return {static_cast<const obbsat::rect*>(a.data()), static_cast<std::size_t>(a.shape(0))};
 }
 
+/// The poses of `a`, read in place: float32, native order, C-contiguous, shape (N, 6).
+std::pair<const obbsat::rect_pose*, std::size_t> poses_in_place(const py::array& a, const char* what) {
+    if (a.ndim() != 2 || a.shape(1) != 6 || !holds<float>(a) || !is_c_contiguous(a)) {
+        throw py::type_error(std::string(what) + ": expected a C-contiguous float32 array of shape (N, 6)");
+    }
+    return {static_cast<const obbsat::rect_pose*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+}
+
 /// The pairs of `a`, read in place: uint32, native order, C-contiguous, shape (M, 2).
 std::pair<const obbsat::pair_index*, std::size_t> pairs_in_place(const py::array& a) {
     if (a.ndim() != 2 || a.shape(1) != 2 || !holds<std::uint32_t>(a) ||
@@ -144,6 +169,20 @@ obbsat::backend without_gil(const Call& call) {
     return ran;
 }
 
+/// Throws the library's invalid_input when options.test does not run on
+/// `store`: it is the refusal of an empty batch over that store, so the
+/// message is the library's own and nothing has been read or copied yet.
+void require_runs_on(const obbsat::collide_options& options, obbsat::store_kind store) {
+    if (obbsat::runs_on(options.test, store)) {
+        return;
+    }
+    if (store == obbsat::store_kind::poses) {
+        obbsat::collide_pairs(obbsat::pose_records{}, nullptr, 0, nullptr, options);
+    } else {
+        obbsat::collide_pairs(obbsat::rect_records{}, nullptr, 0, nullptr, options);
+    }
+}
+
 std::string collide_records(const py::array& rects, const py::array& pairs, py::array& out,
                             const std::string& method, const std::string& backend, long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
@@ -152,6 +191,7 @@ std::string collide_records(const py::array& rects, const py::array& pairs, py::
     std::uint8_t* verdicts = verdicts_in_place(out, count);
     const obbsat::backend ran = without_gil([&, records = records, rect_count = rect_count,
                                              pair_list = pair_list, count = count] {
+        require_runs_on(options, obbsat::store_kind::corners);
         return obbsat::collide_pairs(records, rect_count, pair_list, count, verdicts, options);
     });
     return obbsat::backend_name(ran);
@@ -165,6 +205,7 @@ std::string collide_store(const obbsat::rect_records& store, const py::array& pa
     const auto [pair_list, count] = pairs_in_place(pairs);
     std::uint8_t* verdicts = verdicts_in_place(out, count);
     const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
+        require_runs_on(options, obbsat::store_kind::corners);
         return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
     });
     return obbsat::backend_name(ran);
@@ -210,9 +251,128 @@ std::string collide_stream(const py::array& a, const py::array& b, py::array& ou
     std::uint8_t* verdicts = verdicts_in_place(out, count_a);
     const obbsat::backend ran = without_gil([&, rects_a = rects_a, rects_b = rects_b,
                                              count_a = count_a, count_b = count_b] {
+        require_runs_on(options, obbsat::store_kind::corners);
         const obbsat::rect_soa soa_a = soa_copy(rects_a, count_a, "a");
         const obbsat::rect_soa soa_b = soa_copy(rects_b, count_b, "b");
         return obbsat::collide_stream(soa_a, soa_b, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// A pose_records store holding a checked copy of `poses` (float32 (N, 6), read in place).
+obbsat::pose_records pose_records_of(const py::array& poses) {
+    const auto [list, count] = poses_in_place(poses, "poses");
+    obbsat::pose_records store;
+    without_gil([&, list = list, count = count] {
+        store = obbsat::pose_records(list, count);
+        return obbsat::backend::automatic;
+    });
+    return store;
+}
+
+/// The poses of `store` as a read-only float32 (N, 6) array over its records
+/// (rows 32 bytes apart: the two padding floats are skipped), kept alive by `owner`.
+py::array poses_view(const obbsat::pose_records& store, py::handle owner) {
+    constexpr py::ssize_t row_bytes = obbsat::pose_records::record_floats * sizeof(float);
+    py::array_t<float> view({static_cast<py::ssize_t>(store.size()), py::ssize_t{6}},
+                            {row_bytes, static_cast<py::ssize_t>(sizeof(float))}, store.data(), owner);
+    view.attr("setflags")(py::arg("write") = false);
+    return std::move(view);
+}
+
+/// The poses of `store` as a new C-contiguous float32 (N, 6) array.
+py::array_t<float> poses_copy(const obbsat::pose_records& store) {
+    py::array_t<float> copy({static_cast<py::ssize_t>(store.size()), py::ssize_t{6}});
+    obbsat::rect_pose* rows = reinterpret_cast<obbsat::rect_pose*>(copy.mutable_data());
+    for (std::size_t i = 0; i < store.size(); ++i) {
+        rows[i] = store[i];
+    }
+    return copy;
+}
+
+std::string collide_poses(const py::array& poses, const py::array& pairs, py::array& out,
+                          const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [list, pose_count] = poses_in_place(poses, "poses");
+    const auto [pair_list, count] = pairs_in_place(pairs);
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    const obbsat::backend ran = without_gil([&, list = list, pose_count = pose_count, pair_list = pair_list,
+                                             count = count] {
+        require_runs_on(options, obbsat::store_kind::poses);
+        // The library's pose calls read its 32-byte records only: one copy per call.
+        const obbsat::pose_records store(list, pose_count);
+        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// collide_poses over a prepared store: no copy, no check of the poses.
+std::string collide_pose_store(const obbsat::pose_records& store, const py::array& pairs, py::array& out,
+                               const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [pair_list, count] = pairs_in_place(pairs);
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
+        require_runs_on(options, obbsat::store_kind::poses);
+        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// A pose_soa copy of a batch; the error names the batch.
+obbsat::pose_soa pose_soa_copy(const obbsat::rect_pose* poses, std::size_t count, const char* what) {
+    try {
+        return obbsat::pose_soa(poses, count);
+    } catch (const obbsat::invalid_input& e) {
+        throw obbsat::invalid_input(std::string(what) + ": " + e.what());
+    }
+}
+
+std::string collide_pose_stream(const py::array& a, const py::array& b, py::array& out,
+                                const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [poses_a, count_a] = poses_in_place(a, "a");
+    const auto [poses_b, count_b] = poses_in_place(b, "b");
+    if (count_a != count_b) {
+        throw py::value_error("stream batches differ in length: " + std::to_string(count_a) + " poses in a, " +
+                              std::to_string(count_b) + " in b");
+    }
+    std::uint8_t* verdicts = verdicts_in_place(out, count_a);
+    const obbsat::backend ran = without_gil([&, poses_a = poses_a, poses_b = poses_b, count_a = count_a,
+                                             count_b = count_b] {
+        require_runs_on(options, obbsat::store_kind::poses);
+        const obbsat::pose_soa soa_a = pose_soa_copy(poses_a, count_a, "a");
+        const obbsat::pose_soa soa_b = pose_soa_copy(poses_b, count_b, "b");
+        return obbsat::collide_stream(soa_a, soa_b, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// The corner rows of `out`: float32, C-contiguous, writable, shape (count, 4, 2).
+obbsat::rect* corners_out(py::array& out, std::size_t count) {
+    if (out.ndim() != 3 || out.shape(1) != 4 || out.shape(2) != 2 || !holds<float>(out) || !is_c_contiguous(out) ||
+        !out.writeable() || static_cast<std::size_t>(out.shape(0)) != count) {
+        throw py::type_error("out: expected a writable, C-contiguous float32 array of shape (" +
+                             std::to_string(count) + ", 4, 2)");
+    }
+    return static_cast<obbsat::rect*>(out.mutable_data());
+}
+
+std::string store_corners(const obbsat::pose_records& store, py::array& out, const std::string& backend) {
+    const obbsat::backend requested = backend_named(backend);
+    obbsat::rect* corners = corners_out(out, store.size());
+    const obbsat::backend ran = without_gil([&] { return obbsat::convert_to_corners(store, corners, requested); });
+    return obbsat::backend_name(ran);
+}
+
+std::string pose_corners(const py::array& poses, py::array& out, const std::string& backend) {
+    const obbsat::backend requested = backend_named(backend);
+    const auto [list, count] = poses_in_place(poses, "poses");
+    obbsat::rect* corners = corners_out(out, count);
+    const obbsat::backend ran = without_gil([&, list = list, count = count] {
+        const obbsat::backend resolved = obbsat::resolve_backend(requested);
+        const obbsat::pose_records store(list, count);
+        return obbsat::convert_to_corners(store, corners, resolved);
     });
     return obbsat::backend_name(ran);
 }
@@ -235,9 +395,17 @@ std::vector<std::string> compiled_backend_names() {
     return names;
 }
 
-std::vector<std::string> method_names() {
+std::vector<std::string> method_names(const std::string& store) {
+    obbsat::store_kind kind;
+    if (store == obbsat::store_name(obbsat::store_kind::corners)) {
+        kind = obbsat::store_kind::corners;
+    } else if (store == obbsat::store_name(obbsat::store_kind::poses)) {
+        kind = obbsat::store_kind::poses;
+    } else {
+        throw py::value_error("unknown store '" + store + "' (known: corners, poses)");
+    }
     std::vector<std::string> names;
-    for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::corners)) {
+    for (const obbsat::method m : obbsat::methods_on(kind)) {
         names.emplace_back(obbsat::method_name(m));
     }
     return names;
@@ -317,9 +485,40 @@ PYBIND11_MODULE(_core, m) {
           py::arg("backend"), py::arg("threads"),
           "Verdicts of a[i] against b[i] (float32 (N, 8) each, copied to the structure-of-arrays store); "
           "returns the backend that ran.");
+    py::class_<obbsat::pose_records>(m, "PoseRecords",
+                                     "Poses as the library's 32-byte records, copied and checked once.")
+        .def(py::init(&pose_records_of), py::arg("poses"),
+             "A checked copy of float32 (N, 6) poses (ValueError naming the first bad pose and field).")
+        .def("__len__", &obbsat::pose_records::size)
+        .def_property_readonly(
+            "poses", [](py::object self) { return poses_view(self.cast<const obbsat::pose_records&>(), self); },
+            "The poses as a read-only float32 (N, 6) view of the store's own records (rows 32 bytes apart).")
+        .def(py::pickle([](const obbsat::pose_records& store) { return py::make_tuple(poses_copy(store)); },
+                        [](const py::tuple& state) {
+                            if (state.size() != 1) {
+                                throw py::value_error("PoseRecords: bad pickled state");
+                            }
+                            return pose_records_of(state[0].cast<py::array>());
+                        }));
+    m.def("collide_poses", &collide_poses, py::arg("poses"), py::arg("pairs"), py::arg("out"), py::arg("method"),
+          py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over poses (float32 (N, 6), copied once into 32-byte records); "
+          "returns the backend that ran.");
+    m.def("collide_pose_store", &collide_pose_store, py::arg("store"), py::arg("pairs"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over a PoseRecords store; returns the backend that ran.");
+    m.def("collide_pose_stream", &collide_pose_stream, py::arg("a"), py::arg("b"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of a[i] against b[i] (float32 (N, 6) each, copied to pose_soa stores); "
+          "returns the backend that ran.");
+    m.def("pose_corners", &pose_corners, py::arg("poses"), py::arg("out"), py::arg("backend"),
+          "The corners of float32 (N, 6) poses written to out, float32 (N, 4, 2); returns the backend that ran.");
+    m.def("store_corners", &store_corners, py::arg("store"), py::arg("out"), py::arg("backend"),
+          "The corners of a PoseRecords store written to out, float32 (N, 4, 2); returns the backend that ran.");
     m.def("runnable_backends", &runnable_backends, "Backends this build and CPU run, best first.");
     m.def("compiled_backends", &compiled_backend_names, "Backends compiled into this build, best first.");
-    m.def("methods", &method_names, "Every method, in the library's order.");
+    m.def("methods", &method_names, py::arg("store"),
+          "The methods that run on a store ('corners' or 'poses'), in the library's order.");
     m.def("resolved_backend", &resolved_backend, py::arg("name"),
           "The backend a request resolves to here (OBBSAT_BACKEND applies to 'auto').");
     m.def("make_scene", &make_scene, py::arg("rects"), py::arg("pairs"), py::arg("density"), py::arg("seed"),

@@ -36,6 +36,19 @@ def random_rects(rng, n, spread=20.0):
     return corners.reshape(n, 8).astype(np.float32)
 
 
+def random_poses(rng, n, spread=20.0):
+    """n random poses as float32 (n, 6) rows cx, cy, hx, hy, c, s: half extents
+    in [0, 3] (a few exactly 0: segments and points), rotation vectors of
+    random direction, half of them unit length and half scaled by 0.25 to 4."""
+    centers = rng.uniform(-spread / 2, spread / 2, size=(n, 2))
+    half = rng.uniform(0.0, 3.0, size=(n, 2))
+    half[rng.random(size=(n, 2)) < 0.02] = 0.0
+    angle = rng.uniform(0, 2 * np.pi, size=n)
+    length = np.where(rng.random(size=n) < 0.5, 1.0, rng.uniform(0.25, 4.0, size=n))
+    rotation = np.stack([np.cos(angle), np.sin(angle)], axis=-1) * length[:, None]
+    return np.concatenate([centers, half, rotation], axis=1).astype(np.float32)
+
+
 def random_pairs(rng, n, m):
     return rng.integers(0, n, size=(m, 2)).astype(np.uint32)
 

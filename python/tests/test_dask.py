@@ -1,6 +1,7 @@
 """obbsat.dask on a LocalCluster of two worker processes (loopback only):
-verdicts identical to the single-process call, the rectangles sent to each
-worker once, errors named by their row in the whole list."""
+verdicts identical to the single-process call, for corners and for poses, the
+rectangles sent to each worker once, errors named by their row in the whole
+list."""
 
 import doctest
 
@@ -8,6 +9,7 @@ import numpy as np
 import pytest
 
 import obbsat
+from conftest import random_pairs, random_poses
 
 da = pytest.importorskip("dask.array")
 distributed = pytest.importorskip("distributed")
@@ -87,3 +89,28 @@ def test_bad_arguments_are_refused_before_any_work(client, scene):
         obbsat.dask.collide(rects, pairs)
     with pytest.raises(ValueError, match=r"pairs: expected shape \(M, 2\)"):
         obbsat.dask.collide(rects, da.zeros((10, 3), dtype=np.uint32, chunks=5))
+
+
+def test_poses_on_two_workers(client):
+    rng = np.random.default_rng(9)
+    poses = random_poses(rng, 20_000, spread=100.0)
+    pairs = random_pairs(rng, len(poses), 200_000)
+    lazy_pairs = da.from_array(pairs, chunks=(40_000, 2))
+    for method in [None] + obbsat.methods(poses=True):
+        expected = obbsat.collide(poses, pairs, method=method)
+        assert 0 < expected.sum() < len(pairs)
+        got = obbsat.dask.collide(poses, lazy_pairs, method=method, client=client).compute()
+        assert got.dtype == np.bool_ and got.tobytes() == expected.tobytes(), method
+    store = obbsat.dask.shared_records(poses, client)
+    assert len(client.who_has([store])[store.key]) == 2, "the pose store is on both workers"
+    hits = obbsat.dask.colliding_pairs(store, lazy_pairs.astype(np.int64), method="exact").compute()
+    assert (hits == obbsat.colliding_pairs(poses, pairs.astype(np.int64), method="exact")).all()
+    with pytest.raises(ValueError, match=r"^method sat4 does not run on poses \(pose_records take "):
+        obbsat.dask.collide(store, lazy_pairs, method="sat4").compute()
+
+
+def test_a_bad_pose_is_refused_before_any_work(client):
+    poses = np.tile(np.array([0, 0, 1, 1, 1, 0], dtype=np.float32), (10, 1))
+    poses[7, 3] = -2
+    with pytest.raises(ValueError, match="^pose 7: half extent hy is -2, negative$"):
+        obbsat.dask.collide(poses, da.zeros((10, 2), dtype=np.uint32, chunks=5))

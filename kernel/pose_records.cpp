@@ -44,10 +44,36 @@ void require_valid_pose(const rect_pose& p, std::size_t index) {
     }
 }
 
+namespace {
+
+/// True iff `p` is valid, without branches, so that a batch checks at copy speed.
+bool valid_pose(const rect_pose& p) {
+    const float values[6] = {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y};
+    bool finite = true;
+    for (const float v : values) {
+        finite &= std::isfinite(v);
+    }
+    return finite & (p.half_extents.x >= 0.0f) & (p.half_extents.y >= 0.0f) &
+           ((p.rotation.x != 0.0f) | (p.rotation.y != 0.0f));
+}
+
+}  // namespace
+
 pose_records::pose_records(const rect_pose* poses, std::size_t count) {
-    records_.reserve(count);
+    // One pass copies and checks; only a batch with a bad pose is searched
+    // again, to name the first one.
+    records_.resize(count);
+    bool all_valid = true;
     for (std::size_t i = 0; i < count; ++i) {
-        push_back(poses[i]);
+        const rect_pose& p = poses[i];
+        records_[i] = record{{p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x,
+                              p.rotation.y, 0.0f, 0.0f}};
+        all_valid &= valid_pose(p);
+    }
+    if (!all_valid) {
+        for (std::size_t i = 0; i < count; ++i) {
+            require_valid_pose(poses[i], i);
+        }
     }
 }
 

@@ -1,15 +1,20 @@
 // The gen and accuracy commands run through the shell as a user runs them:
-// gen's files are the library's suite byte for byte, collide reads them, and
-// their truth is the oracle's; gen's errors leave nothing behind; accuracy's
-// JSON holds the counts the library's references give, and its SVG is
-// well-formed with one point per method; demo prints the short form.
+// gen's files are the library's suite byte for byte (of rects, or with
+// --poses of poses), collide reads them, and their truth is the oracle's;
+// gen's errors leave nothing behind; accuracy's JSON holds the counts the
+// library's references give, for the methods on corners and on poses, and its
+// SVG is well-formed with one point per method and store; demo prints the
+// short form.
 #include "csv_input.hpp"
 #include "program_runner.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/suites/family.hpp>
+#include <obbsat/suites/pose_family.hpp>
+#include <obbsat/suites/pose_suite.hpp>
 #include <obbsat/suites/suite.hpp>
 
 #include <gtest/gtest.h>
@@ -31,8 +36,10 @@ namespace {
 namespace fs = std::filesystem;
 using obbsat::method;
 using obbsat::rect;
+using obbsat::rect_pose;
 using obbsat::oracle::contact;
 using obbsat::suites::family;
+using obbsat::suites::pose_family;
 
 using obbsat::cli_test::lines_of;
 using obbsat::cli_test::read_file;
@@ -41,6 +48,7 @@ using obbsat::cli_test::scratch;
 using obbsat::cli_test::write_file;
 
 const char* const suite_files[] = {"rects.csv", "pairs.csv", "truth_class.txt", "truth.txt", "tags.txt"};
+const char* const pose_suite_files[] = {"poses.csv", "pairs.csv", "truth_class.txt", "truth.txt", "tags.txt"};
 
 std::string family_list() {
     std::string known;
@@ -50,12 +58,38 @@ std::string family_list() {
     return known;
 }
 
+std::string pose_family_list() {
+    std::string known;
+    for (const pose_family f : obbsat::suites::all_pose_families()) {
+        known += (known.empty() ? "" : ", ") + std::string(obbsat::suites::pose_family_name(f));
+    }
+    return known;
+}
+
+// The poses of a pose file, read by the program's own reader.
+std::vector<rect_pose> read_poses(const fs::path& path) {
+    const std::string text = read_file(path);
+    obbsat::io::line_reader lines(std::string_view(text), path.string());
+    const obbsat::pose_records records = obbsat::io::read_pose_records(lines);
+    std::vector<rect_pose> out;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        out.push_back(records[i]);
+    }
+    return out;
+}
+
 bool same_bits(float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
 bool same_rect_bits(const rect& a, const rect& b) {
     return same_bits(a.ul.x, b.ul.x) && same_bits(a.ul.y, b.ul.y) && same_bits(a.ur.x, b.ur.x) &&
            same_bits(a.ur.y, b.ur.y) && same_bits(a.lr.x, b.lr.x) && same_bits(a.lr.y, b.lr.y) &&
            same_bits(a.ll.x, b.ll.x) && same_bits(a.ll.y, b.ll.y);
+}
+
+bool same_pose_bits(const rect_pose& a, const rect_pose& b) {
+    return same_bits(a.center.x, b.center.x) && same_bits(a.center.y, b.center.y) &&
+           same_bits(a.half_extents.x, b.half_extents.x) && same_bits(a.half_extents.y, b.half_extents.y) &&
+           same_bits(a.rotation.x, b.rotation.x) && same_bits(a.rotation.y, b.rotation.y);
 }
 
 // ---------------------------------------------------------------------------
@@ -490,6 +524,134 @@ TEST(gen, output_errors_exit_2_name_the_path_and_leave_everything_as_it_was) {
 }
 
 // ===========================================================================
+// gen --poses
+
+TEST(gen_poses, writes_the_pose_suite_the_library_builds_with_the_pose_oracles_truth) {
+    const scratch s;
+    for (const pose_family f : obbsat::suites::all_pose_families()) {
+        const std::string name = obbsat::suites::pose_family_name(f);
+        const run_result r = s.run("gen --poses " + name + " --out " + name + " --pairs 300 --seed 3");
+        ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+        EXPECT_EQ(r.err, "");
+        EXPECT_EQ(r.out, name + ": 300 pairs of pose family " + name + " (seed 3) over 600 poses\n");
+        EXPECT_FALSE(fs::exists(s.file(name + "/rects.csv"))) << name;
+        const obbsat::suites::pose_suite want = obbsat::suites::make_pose_family(f, 3, 300);
+
+        // Poses: read back by the program's own reader, bit for bit.
+        const std::vector<rect_pose> poses = read_poses(s.file(name + "/poses.csv"));
+        ASSERT_EQ(poses.size(), want.poses.size()) << name;
+        for (std::size_t i = 0; i < want.poses.size(); ++i) {
+            ASSERT_TRUE(same_pose_bits(poses[i], want.poses[i])) << name << " pose " << i;
+        }
+        const std::vector<std::string> pairs = lines_of(read_file(s.file(name + "/pairs.csv")));
+        const std::vector<std::string> classes = lines_of(read_file(s.file(name + "/truth_class.txt")));
+        const std::vector<std::string> truth = lines_of(read_file(s.file(name + "/truth.txt")));
+        const std::vector<std::string> tags = lines_of(read_file(s.file(name + "/tags.txt")));
+        ASSERT_EQ(pairs.size(), 300u);
+        ASSERT_EQ(classes.size(), 300u);
+        ASSERT_EQ(truth.size(), 300u);
+        ASSERT_EQ(tags.size(), 300u);
+        for (std::size_t i = 0; i < 300; ++i) {
+            const obbsat::pair_index p = want.pairs[i];
+            EXPECT_EQ(pairs[i], std::to_string(p.a) + "," + std::to_string(p.b)) << name << " " << i;
+            const contact c = obbsat::oracle::classify(want.poses[p.a], want.poses[p.b]);
+            EXPECT_EQ(classes[i], std::string(1, obbsat::oracle::contact_letter(c))) << name << " " << i;
+            EXPECT_EQ(truth[i], c == contact::separated ? "0" : "1") << name << " " << i;
+            EXPECT_EQ(tags[i], want.tag_of(i)) << name << " " << i;
+        }
+    }
+}
+
+TEST(gen_poses, collide_poses_reads_its_files_and_every_pose_method_prints_its_reference) {
+    const scratch s;
+    for (const pose_family f : obbsat::suites::all_pose_families()) {
+        const std::string name = obbsat::suites::pose_family_name(f);
+        ASSERT_EQ(s.run("gen --poses " + name + " --out d --pairs 2000").status, 0) << name;
+        const std::string truth = read_file(s.file("d/truth.txt"));
+        const run_result exact = s.run("collide --poses d/poses.csv --pairs d/pairs.csv --method exact");
+        ASSERT_EQ(exact.status, 0) << name << ": " << exact.err;
+        EXPECT_EQ(exact.out, truth) << name;
+
+        // Every method on poses prints what its scalar reference says on the
+        // poses as read; local, collide's default on poses, without --method too.
+        const std::vector<rect_pose> poses = read_poses(s.file("d/poses.csv"));
+        const obbsat::suites::pose_suite want = obbsat::suites::make_pose_family(f, 1, 2000);
+        for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+            const run_result r = s.run("collide --poses d/poses.csv --pairs d/pairs.csv --method " +
+                                       std::string(obbsat::method_name(m)));
+            ASSERT_EQ(r.status, 0) << r.err;
+            std::string expected;
+            for (const obbsat::pair_index& p : want.pairs) {
+                expected += obbsat::pose_method_reference(m)(poses[p.a], poses[p.b]) ? "1\n" : "0\n";
+            }
+            EXPECT_EQ(r.out, expected) << name << " " << obbsat::method_name(m);
+            if (m == method::local) {
+                EXPECT_EQ(s.run("collide --poses d/poses.csv --pairs d/pairs.csv").out, expected) << name;
+            }
+        }
+    }
+}
+
+TEST(gen_poses, is_deterministic_and_leaves_the_other_files_of_a_directory_alone) {
+    const scratch s;
+    // A pose family beside a corner family of the same name in one directory:
+    // the pose files replace pairs, truth and tags and leave rects.csv.
+    ASSERT_EQ(s.run("gen tiny --out d --pairs 100").status, 0);
+    const std::string rects = read_file(s.file("d/rects.csv"));
+    ASSERT_EQ(s.run("gen tiny --poses --out d --pairs=100 --seed 9").status, 0);
+    ASSERT_EQ(s.run("gen --out=fresh/ --seed 9 --poses tiny --pairs 100").status, 0);
+    for (const char* name : pose_suite_files) {
+        EXPECT_EQ(read_file(s.file(std::string("d/") + name)), read_file(s.file(std::string("fresh/") + name)))
+            << name;
+    }
+    EXPECT_EQ(read_file(s.file("d/rects.csv")), rects);
+    const std::vector<std::string> expected = {"d",
+                                               "d/pairs.csv",
+                                               "d/poses.csv",
+                                               "d/rects.csv",
+                                               "d/tags.txt",
+                                               "d/truth.txt",
+                                               "d/truth_class.txt",
+                                               "fresh",
+                                               "fresh/pairs.csv",
+                                               "fresh/poses.csv",
+                                               "fresh/tags.txt",
+                                               "fresh/truth.txt",
+                                               "fresh/truth_class.txt"};
+    EXPECT_EQ(s.tree(), expected);  // no temporary directory left behind
+}
+
+TEST(gen_poses, usage_and_output_errors_exit_2_and_write_nothing) {
+    const scratch s;
+    write_file(s.file("R.csv"), "0,1,1,1,1,0,0,0\n");
+    const std::string see = " (see 'obbsat gen --help')\n";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"gen --poses --out d", "missing FAMILY (one of " + pose_family_list() + ")"},
+        {"gen --poses tiles --out d", "unknown pose family 'tiles' (known: " + pose_family_list() + ")"},
+        {"gen --poses=yes near --out d", "option --poses takes no value"},
+        {"gen --poses near --poses --out d", "option --poses given twice"},
+        {"gen near --out d", "unknown family 'near' (known: " + family_list() + ")"},
+        {"gen --poses near contact --out d", "unexpected argument 'contact'"},
+    };
+    for (const auto& [args, reason] : cases) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, "obbsat: gen: " + reason + see) << args;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(s.tree(), std::vector<std::string>{"R.csv"}) << args;
+    }
+    // The pose file's name taken by a directory: refused before any file moves.
+    fs::create_directories(s.file("d/poses.csv"));
+    write_file(s.file("d/pairs.csv"), "old\n");
+    const run_result r = s.run("gen --poses contact --out d");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "obbsat: d/poses.csv: is a directory, not a file name\n");
+    EXPECT_EQ(read_file(s.file("d/pairs.csv")), "old\n");
+    const std::vector<std::string> expected = {"R.csv", "d", "d/pairs.csv", "d/poses.csv"};
+    EXPECT_EQ(s.tree(), expected);
+}
+
+// ===========================================================================
 // accuracy
 
 TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed) {
@@ -645,6 +807,7 @@ TEST(accuracy, help_and_the_program_help_name_both_commands) {
         EXPECT_NE(r.out.find("example:\n  obbsat"), std::string::npos) << args;
     }
     EXPECT_NE(s.run("gen --help").out.find(family_list()), std::string::npos);
+    EXPECT_NE(s.run("gen --help").out.find("pose families: " + pose_family_list()), std::string::npos);
     const run_result main_help = s.run("--help");
     EXPECT_NE(main_help.out.find("\n  gen "), std::string::npos) << main_help.out;
     EXPECT_NE(main_help.out.find("\n  accuracy "), std::string::npos) << main_help.out;

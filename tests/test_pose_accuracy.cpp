@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,40 @@ TEST(pose_accuracy, local_is_exact_on_small_integers_and_errs_only_near_contact)
         false_negatives += t.local_false_negatives;
     }
     EXPECT_GT(false_negatives, 0u);
+}
+
+TEST(pose_accuracy, measured_errors_stay_under_their_bounds) {
+    // Set just above the counts measured at 100,000 pairs per family, seed 42
+    // (printed by the first test): the suites are the same bytes everywhere and
+    // the references are exact IEEE operations, so the counts are too; a change
+    // that makes local or conservative on poses less accurate fails here.
+    struct bound {
+        pose_family family;
+        std::size_t local_false_positives;
+        std::size_t local_false_negatives;
+        std::size_t conservative_false_positives;
+    };
+    const bound bounds[] = {
+        {pose_family::near, 5, 5, 5},
+        {pose_family::contact, 75, 13, 6800},
+        {pose_family::integer_contact, 0, 0, 5},
+        {pose_family::far, 5, 5, 80},
+        {pose_family::rotation_scale, 75, 13, 56000},
+        {pose_family::zero_extents, 15, 3, 2550},
+        {pose_family::slivers, 7, 2, 1620},
+        {pose_family::near_parallel, 104, 27, 11500},
+        {pose_family::tiny, 76, 15, 6600},
+        {pose_family::huge, 79, 19, 6750},
+    };
+    // One bound per family, so a new one cannot go unmeasured.
+    EXPECT_EQ(std::size(bounds), obbsat::suites::all_pose_families().size());
+    for (const bound& b : bounds) {
+        const tally& t = measured(b.family);
+        const char* const name = obbsat::suites::pose_family_name(b.family);
+        EXPECT_LE(t.local_false_positives, b.local_false_positives) << name;
+        EXPECT_LE(t.local_false_negatives, b.local_false_negatives) << name;
+        EXPECT_LE(t.conservative_false_positives, b.conservative_false_positives) << name;
+    }
 }
 
 TEST(pose_accuracy, exact_on_poses_is_the_oracle_on_every_backend) {

@@ -654,6 +654,17 @@ TEST(gen_poses, usage_and_output_errors_exit_2_and_write_nothing) {
 // ===========================================================================
 // accuracy
 
+// One row of the report as the test recomputes it: a method on a store, and
+// per family of that store the pairs' truth and the reference's verdicts.
+struct expected_row {
+    method test;
+    obbsat::store_kind store;
+    std::string label;
+    std::vector<std::string> family_names;
+    std::vector<std::vector<contact>> truths;
+    std::vector<std::vector<bool>> said;
+};
+
 TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed) {
     const scratch s;
     const run_result r = s.run("accuracy --pairs 400 --seed 5 --threads 2 --reps 1 --json out/acc.json "
@@ -669,55 +680,100 @@ TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed)
                                 "--svg acc.svg");
     ASSERT_EQ(ok.status, 0) << ok.err;
     const json report = json_reader(read_file(s.file("out/acc.json"))).document();
-    EXPECT_EQ(report["format"].text, "obbsat-accuracy-1");
+    EXPECT_EQ(report["format"].text, "obbsat-accuracy-2");
     EXPECT_EQ(report["pairs_per_family"].count(), 400u);
     EXPECT_EQ(report["seed"].count(), 5u);
-    const std::vector<family>& families = obbsat::suites::all_families();
-    ASSERT_EQ(report["families"].items.size(), families.size());
+    EXPECT_EQ(report["throughput_scene"]["store"].text, "rect_records");
+    EXPECT_EQ(report["throughput_scene"]["pose_store"].text, "pose_records");
 
     // The truth and every count, recomputed here from the suites, the
-    // oracle and each method's scalar reference.
-    std::vector<obbsat::suites::suite> suites;
-    std::vector<std::vector<contact>> truths;
-    for (std::size_t f = 0; f < families.size(); ++f) {
-        suites.push_back(obbsat::suites::make_family(families[f], 5, 400));
-        std::vector<contact> truth;
+    // oracles and each method's scalar reference: the methods on corners on
+    // the corner families, then the methods on poses on the pose families.
+    std::vector<expected_row> rows;
+    for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
+        rows.push_back({m, obbsat::store_kind::corners, obbsat::method_name(m), {}, {}, {}});
+    }
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        rows.push_back({m, obbsat::store_kind::poses, obbsat::method_name(m) + std::string(" (poses)"), {}, {}, {}});
+    }
+    auto check_truth = [](const json& t, const std::string& name, const std::vector<contact>& truth) {
         std::uint64_t by_class[3] = {0, 0, 0};
-        for (const obbsat::pair_index& p : suites.back().pairs) {
-            truth.push_back(obbsat::oracle::classify(suites.back().rects[p.a], suites.back().rects[p.b]));
-            ++by_class[static_cast<int>(truth.back())];
+        for (const contact c : truth) {
+            ++by_class[static_cast<int>(c)];
         }
-        truths.push_back(truth);
-        const json& t = report["families"].items[f];
-        EXPECT_EQ(t["name"].text, obbsat::suites::family_name(families[f]));
-        EXPECT_EQ(t["pairs"].count(), 400u);
-        EXPECT_EQ(t["separated"].count(), by_class[0]);
-        EXPECT_EQ(t["touching"].count(), by_class[1]);
-        EXPECT_EQ(t["overlapping"].count(), by_class[2]);
+        EXPECT_EQ(t["name"].text, name);
+        EXPECT_EQ(t["pairs"].count(), 400u) << name;
+        EXPECT_EQ(t["separated"].count(), by_class[0]) << name;
+        EXPECT_EQ(t["touching"].count(), by_class[1]) << name;
+        EXPECT_EQ(t["overlapping"].count(), by_class[2]) << name;
+    };
+    const std::vector<family>& families = obbsat::suites::all_families();
+    ASSERT_EQ(report["families"].items.size(), families.size());
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        const obbsat::suites::suite suite = obbsat::suites::make_family(families[f], 5, 400);
+        std::vector<contact> truth;
+        for (const obbsat::pair_index& p : suite.pairs) {
+            truth.push_back(obbsat::oracle::classify(suite.rects[p.a], suite.rects[p.b]));
+        }
+        check_truth(report["families"].items[f], obbsat::suites::family_name(families[f]), truth);
+        for (expected_row& row : rows) {
+            if (row.store != obbsat::store_kind::corners) {
+                continue;
+            }
+            std::vector<bool> said;
+            for (const obbsat::pair_index& p : suite.pairs) {
+                said.push_back(obbsat::method_reference(row.test)(suite.rects[p.a], suite.rects[p.b]));
+            }
+            row.family_names.push_back(obbsat::suites::family_name(families[f]));
+            row.truths.push_back(truth);
+            row.said.push_back(said);
+        }
+    }
+    const std::vector<pose_family>& pose_families = obbsat::suites::all_pose_families();
+    ASSERT_EQ(report["pose_families"].items.size(), pose_families.size());
+    for (std::size_t f = 0; f < pose_families.size(); ++f) {
+        const obbsat::suites::pose_suite suite = obbsat::suites::make_pose_family(pose_families[f], 5, 400);
+        std::vector<contact> truth;
+        for (const obbsat::pair_index& p : suite.pairs) {
+            truth.push_back(obbsat::oracle::classify(suite.poses[p.a], suite.poses[p.b]));
+        }
+        check_truth(report["pose_families"].items[f], obbsat::suites::pose_family_name(pose_families[f]), truth);
+        for (expected_row& row : rows) {
+            if (row.store != obbsat::store_kind::poses) {
+                continue;
+            }
+            std::vector<bool> said;
+            for (const obbsat::pair_index& p : suite.pairs) {
+                said.push_back(obbsat::pose_method_reference(row.test)(suite.poses[p.a], suite.poses[p.b]));
+            }
+            row.family_names.push_back(obbsat::suites::pose_family_name(pose_families[f]));
+            row.truths.push_back(truth);
+            row.said.push_back(said);
+        }
     }
 
-    const std::vector<method> methods = obbsat::methods_on(obbsat::store_kind::corners);
-    ASSERT_EQ(report["methods"].items.size(), methods.size());
-    for (std::size_t m = 0; m < methods.size(); ++m) {
+    ASSERT_EQ(report["methods"].items.size(), rows.size());
+    for (std::size_t m = 0; m < rows.size(); ++m) {
+        const expected_row& row = rows[m];
         const json& result = report["methods"].items[m];
-        EXPECT_EQ(result["name"].text, obbsat::method_name(methods[m]));
-        EXPECT_EQ(result["mpairs_per_second"].type, json::kind::number);
-        EXPECT_GT(result["mpairs_per_second"].value, 0.0);
-        ASSERT_EQ(result["families"].items.size(), families.size());
+        EXPECT_EQ(result["name"].text, obbsat::method_name(row.test));
+        EXPECT_EQ(result["store"].text, obbsat::store_name(row.store));
+        EXPECT_EQ(result["label"].text, row.label);
+        EXPECT_EQ(result["mpairs_per_second"].type, json::kind::number) << row.label;
+        EXPECT_GT(result["mpairs_per_second"].value, 0.0) << row.label;
+        ASSERT_EQ(result["families"].items.size(), row.family_names.size()) << row.label;
         std::uint64_t total_fp = 0, total_fn = 0;
-        for (std::size_t f = 0; f < families.size(); ++f) {
+        for (std::size_t f = 0; f < row.family_names.size(); ++f) {
             std::uint64_t fp = 0, fn_touching = 0, fn_overlapping = 0;
-            for (std::size_t i = 0; i < suites[f].pairs.size(); ++i) {
-                const obbsat::pair_index p = suites[f].pairs[i];
-                const bool said = obbsat::method_reference(methods[m])(suites[f].rects[p.a], suites[f].rects[p.b]);
-                fp += truths[f][i] == contact::separated && said;
-                fn_touching += truths[f][i] == contact::touching && !said;
-                fn_overlapping += truths[f][i] == contact::overlapping && !said;
+            for (std::size_t i = 0; i < row.said[f].size(); ++i) {
+                const bool said = row.said[f][i];
+                fp += row.truths[f][i] == contact::separated && said;
+                fn_touching += row.truths[f][i] == contact::touching && !said;
+                fn_overlapping += row.truths[f][i] == contact::overlapping && !said;
             }
             const json& counts = result["families"].items[f];
-            const std::string where = std::string(obbsat::method_name(methods[m])) + " on " +
-                                      obbsat::suites::family_name(families[f]);
-            EXPECT_EQ(counts["family"].text, obbsat::suites::family_name(families[f])) << where;
+            const std::string where = row.label + " on " + row.family_names[f];
+            EXPECT_EQ(counts["family"].text, row.family_names[f]) << where;
             EXPECT_EQ(counts["pairs"].count(), 400u) << where;
             EXPECT_GT(counts["mpairs_per_second"].value, 0.0) << where;
             EXPECT_EQ(counts["false_positives"].count(), fp) << where;
@@ -727,7 +783,7 @@ TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed)
             EXPECT_EQ(counts["errors"].count(), fp + fn_touching + fn_overlapping) << where;
             EXPECT_EQ(counts["error_rate"].value, static_cast<double>(fp + fn_touching + fn_overlapping) / 400.0)
                 << where;
-            if (methods[m] != method::exact) {
+            if (row.test != method::exact) {
                 EXPECT_EQ(counts["slow_path_pairs"].count(), 0u) << where;
             } else {
                 EXPECT_LE(counts["slow_path_pairs"].count(), 400u) << where;
@@ -735,22 +791,29 @@ TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed)
             total_fp += fp;
             total_fn += fn_touching + fn_overlapping;
         }
-        EXPECT_EQ(result["total"]["pairs"].count(), 400u * families.size());
-        EXPECT_EQ(result["total"]["false_positives"].count(), total_fp);
-        EXPECT_EQ(result["total"]["false_negatives"].count(), total_fn);
-        if (methods[m] == method::exact) {
-            EXPECT_EQ(total_fp + total_fn, 0u);
-            EXPECT_GT(result["total"]["slow_path_pairs"].count(), 0u);  // the suites sit on the boundary
+        EXPECT_EQ(result["total"]["pairs"].count(), 400u * row.family_names.size()) << row.label;
+        EXPECT_EQ(result["total"]["false_positives"].count(), total_fp) << row.label;
+        EXPECT_EQ(result["total"]["false_negatives"].count(), total_fn) << row.label;
+        if (row.test == method::exact) {
+            EXPECT_EQ(result["total"]["errors"].count(), 0u) << row.label;
+            EXPECT_GT(result["total"]["slow_path_pairs"].count(), 0u) << row.label;  // the suites sit on the boundary
         }
-        if (methods[m] == method::conservative) {
-            EXPECT_EQ(total_fn, 0u);
+        if (row.test == method::conservative) {
+            EXPECT_EQ(result["total"]["false_negatives"].count(), 0u) << row.label;
         }
-        // The summary line on stdout names the method and its totals.
-        const std::string summary_start = "  " + std::string(obbsat::method_name(methods[m]));
-        EXPECT_NE(ok.out.find(summary_start), std::string::npos) << ok.out;
+        // The summary line on stdout names the row and its totals.
+        char summary[160];
+        std::snprintf(summary, sizeof summary, "\n  %-20s %9u ", row.label.c_str(),
+                      static_cast<unsigned>(400u * row.family_names.size()));
+        EXPECT_NE(ok.out.find(summary), std::string::npos) << summary << "\n" << ok.out;
+        // So does its table.
+        const std::string table = "\nmethod " + row.label +
+                                  (row.store == obbsat::store_kind::poses ? ", on the pose families:\n" : ":\n");
+        EXPECT_NE(ok.out.find(table), std::string::npos) << table;
     }
+    EXPECT_NE(ok.out.find("\n  all pose families      4000 "), std::string::npos) << ok.out;
 
-    // The plot: well-formed, one point and one label per method, nothing else plotted.
+    // The plot: well-formed, one point and one label per method and store, nothing else plotted.
     const std::vector<xml_element> elements = parse_xml_elements(read_file(s.file("acc.svg")));
     ASSERT_FALSE(elements.empty());
     EXPECT_EQ(elements.front().name, "svg");
@@ -771,11 +834,11 @@ TEST(accuracy, json_holds_the_counts_the_references_give_and_svg_is_well_formed)
             EXPECT_EQ(e.text.rfind(e.attributes.at("data-method") + " (", 0), 0u) << e.text;
         }
     }
-    ASSERT_EQ(points.size(), methods.size());
-    ASSERT_EQ(labels.size(), methods.size());
-    for (const method m : methods) {
-        EXPECT_EQ(points[obbsat::method_name(m)], 1) << obbsat::method_name(m);
-        EXPECT_EQ(labels[obbsat::method_name(m)], 1) << obbsat::method_name(m);
+    ASSERT_EQ(points.size(), rows.size());
+    ASSERT_EQ(labels.size(), rows.size());
+    for (const expected_row& row : rows) {
+        EXPECT_EQ(points[row.label], 1) << row.label;
+        EXPECT_EQ(labels[row.label], 1) << row.label;
     }
 }
 
@@ -813,13 +876,34 @@ TEST(accuracy, help_and_the_program_help_name_both_commands) {
     EXPECT_NE(main_help.out.find("\n  accuracy "), std::string::npos) << main_help.out;
 }
 
-TEST(demo, prints_one_accuracy_line_per_method) {
+TEST(demo, prints_one_accuracy_line_per_method_and_store) {
     const scratch s;
     const run_result r = s.run("demo --rects 2000 --pairs 10000 --reps 1 --method all");
     ASSERT_EQ(r.status, 0) << r.err;
-    const std::size_t start = r.out.find("accuracy against the exact oracle: 2000 pairs of each of 11");
+    const std::size_t start = r.out.find("accuracy against the exact oracle: 2000 pairs of each of 11 hard-case "
+                                         "families (methods on poses: of each of 10 pose families;");
     ASSERT_NE(start, std::string::npos) << r.out;
     const std::vector<std::string> lines = lines_of(r.out.substr(start));
+    for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        // The methods on poses: scored on the pose families, timed on the
+        // accuracy scene's rects as poses; this demo times them on no record store.
+        char name[32];
+        std::snprintf(name, sizeof name, "  %-20s ", (obbsat::method_name(m) + std::string(" (poses)")).c_str());
+        const auto line = std::find_if(lines.begin(), lines.end(),
+                                       [&](const std::string& l) { return l.rfind(name, 0) == 0; });
+        ASSERT_NE(line, lines.end()) << name << "\n" << r.out;
+        std::istringstream fields(line->substr(std::strlen(name)));
+        std::string rate, false_negatives, speed, demo_speed;
+        fields >> rate >> false_negatives >> speed >> demo_speed;
+        EXPECT_GT(std::stod(speed), 0.0) << *line;
+        EXPECT_EQ(demo_speed, "-") << *line;
+        if (m == method::exact) {
+            EXPECT_EQ(rate, "0") << *line;
+        }
+        if (m == method::exact || m == method::conservative) {
+            EXPECT_EQ(false_negatives, "0") << *line;
+        }
+    }
     for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
         const std::string prefix = "  " + std::string(obbsat::method_name(m)) + " ";
         const auto line = std::find_if(lines.begin(), lines.end(),

@@ -1,6 +1,7 @@
 #include <obbsat/suites/boundary.hpp>
 
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/pose_contact.hpp>
 
 #include <cmath>
 
@@ -16,7 +17,7 @@ float step_floats(float v, int steps) {
     return v;
 }
 
-point nudge(point p, int steps_x, int steps_y) {
+point nudge_point(point p, int steps_x, int steps_y) {
     return point{step_floats(p.x, steps_x), step_floats(p.y, steps_y)};
 }
 
@@ -26,14 +27,26 @@ bool is_finite(const rect& r) {
            std::isfinite(r.ll.x) && std::isfinite(r.ll.y);
 }
 
+bool is_finite(const rect_pose& p) {
+    return std::isfinite(p.center.x) && std::isfinite(p.center.y);
+}
+
 }  // namespace
 
 rect nudge(const rect& r, int steps_x, int steps_y) {
-    return rect{nudge(r.ul, steps_x, steps_y), nudge(r.ur, steps_x, steps_y),
-                nudge(r.lr, steps_x, steps_y), nudge(r.ll, steps_x, steps_y)};
+    return rect{nudge_point(r.ul, steps_x, steps_y), nudge_point(r.ur, steps_x, steps_y),
+                nudge_point(r.lr, steps_x, steps_y), nudge_point(r.ll, steps_x, steps_y)};
 }
 
-bool near_contact_boundary(const rect& a, const rect& b, unsigned steps) {
+rect_pose nudge(const rect_pose& p, int steps_x, int steps_y) {
+    return rect_pose{nudge_point(p.center, steps_x, steps_y), p.half_extents, p.rotation};
+}
+
+namespace {
+
+// Shape is rect or rect_pose: b moved by 1..steps floats in each direction.
+template <class Shape>
+bool near_boundary(const Shape& a, const Shape& b, unsigned steps) {
     using oracle::contact;
     const contact here = oracle::classify(a, b);
     if (here == contact::touching) {
@@ -43,13 +56,23 @@ bool near_contact_boundary(const rect& a, const rect& b, unsigned steps) {
     for (const auto& d : directions) {
         for (unsigned s = 1; s <= steps; ++s) {
             const int k = static_cast<int>(s);
-            const rect moved = nudge(b, d[0] * k, d[1] * k);
+            const Shape moved = nudge(b, d[0] * k, d[1] * k);
             if (is_finite(moved) && oracle::classify(a, moved) != here) {
                 return true;
             }
         }
     }
     return false;
+}
+
+}  // namespace
+
+bool near_contact_boundary(const rect& a, const rect& b, unsigned steps) {
+    return near_boundary(a, b, steps);
+}
+
+bool near_contact_boundary(const rect_pose& a, const rect_pose& b, unsigned steps) {
+    return near_boundary(a, b, steps);
 }
 
 }  // namespace obbsat::suites

@@ -4,7 +4,6 @@
 // for byte; the golden digests of the pose methods. The reference verdicts are
 // computed here with the functions of scalar_ref/ directly.
 #include "test_support/float_text.hpp"
-#include "test_support/random_poses.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
@@ -15,6 +14,7 @@
 #include <obbsat/pose_records.hpp>
 #include <obbsat/pose_soa.hpp>
 #include <obbsat/ref/pose_corners.hpp>
+#include <obbsat/suites/pose_suite.hpp>
 
 #include <gtest/gtest.h>
 
@@ -35,13 +35,13 @@ using obbsat::method;
 using obbsat::pair_index;
 using obbsat::pose_records;
 using obbsat::rect_pose;
+using obbsat::suites::pose_pairs;
 using obbsat::test_support::hex_float;
-using obbsat::test_support::pose_pairs;
 using verdicts = std::vector<std::uint8_t>;
 
 // The digests of the verdicts of each pose method's scalar reference on
-// golden_pairs() below (poses from integer arithmetic and exact float
-// operations only, so the same on every machine). Every backend must
+// golden_pairs() below (every pose family mixed, from integer arithmetic and
+// exact float operations only, so the same on every machine). Every backend must
 // reproduce them. Change one only with a deliberate change of the method or
 // of the generator, and say so in the commit.
 struct golden_entry {
@@ -68,7 +68,7 @@ std::string describe(const rect_pose& p) {
 
 pose_pairs golden_pairs() {
     obbsat::seeded_random random(20261123);
-    return obbsat::test_support::random_pose_pairs(random, 200000);
+    return obbsat::suites::random_pose_pairs(random, 200000);
 }
 
 verdicts reference_verdicts(method m, const pose_pairs& pairs) {
@@ -228,7 +228,7 @@ TEST_P(pose_backends, golden_digests_on_every_path) {
 
 TEST_P(pose_backends, every_pose_method_matches_its_reference_on_every_kind_and_thread_count) {
     obbsat::seeded_random random(77);
-    const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, 60000);
+    const pose_pairs pairs = obbsat::suites::random_pose_pairs(random, 60000);
     for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
         for (const unsigned threads : {1u, 2u, 0u}) {
             expect_every_path_matches(m, pairs, threads);
@@ -239,7 +239,7 @@ TEST_P(pose_backends, every_pose_method_matches_its_reference_on_every_kind_and_
 TEST_P(pose_backends, every_batch_length_and_lane_position) {
     obbsat::seeded_random random(3);
     for (std::size_t n = 0; n <= 70; ++n) {
-        const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, n);
+        const pose_pairs pairs = obbsat::suites::random_pose_pairs(random, n);
         for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
             expect_every_path_matches(m, pairs, 1);
         }
@@ -251,7 +251,7 @@ TEST_P(pose_backends, ten_million_random_pairs_match_the_reference) {
     constexpr std::size_t chunk = 1000000;
     obbsat::seeded_random random(1234);
     for (std::size_t done = 0; done < 10 * chunk; done += chunk) {
-        const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, chunk);
+        const pose_pairs pairs = obbsat::suites::random_pose_pairs(random, chunk);
         const pose_records a(pairs.a), b(pairs.b);
         const obbsat::pose_soa soa_a(pairs.a), soa_b(pairs.b);
         for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
@@ -268,7 +268,7 @@ TEST_P(pose_backends, ten_million_random_pairs_match_the_reference) {
 TEST_P(pose_backends, corners_of_poses_match_the_reference_byte_for_byte) {
     obbsat::seeded_random random(8);
     for (const std::size_t n : {0u, 1u, 3u, 4u, 5u, 15u, 16u, 17u, 33u, 100u, 4099u}) {
-        const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, n);
+        const pose_pairs pairs = obbsat::suites::random_pose_pairs(random, n);
         const pose_records poses(pairs.a);
         std::vector<obbsat::rect> got(n + 1);
         std::memset(got.data(), 0xee, got.size() * sizeof(obbsat::rect));
@@ -299,7 +299,7 @@ TEST_P(pose_backends, corners_keep_the_sign_of_zero_where_products_underflow) {
 
 TEST_P(pose_backends, methods_that_do_not_run_on_poses_are_refused_and_nothing_is_written) {
     obbsat::seeded_random random(4);
-    const pose_pairs pairs = obbsat::test_support::random_pose_pairs(random, 20);
+    const pose_pairs pairs = obbsat::suites::random_pose_pairs(random, 20);
     const pose_records a(pairs.a), b(pairs.b);
     const std::vector<pair_index> index_pairs = {{0, 1}, {2, 3}};
     std::string offered;

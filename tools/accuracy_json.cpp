@@ -47,13 +47,25 @@ std::string counts_fields(const error_counts& c) {
            ", \"slow_path_pairs\": " + number(c.slow_path_pairs);
 }
 
+std::string families_array(const std::vector<family_truth>& families) {
+    std::string out = "[\n";
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        const family_truth& t = families[f];
+        out += "    {\"name\": " + quoted(t.name) + ", \"pairs\": " + number(t.pairs) +
+               ", \"separated\": " + number(t.separated) + ", \"touching\": " + number(t.touching) +
+               ", \"overlapping\": " + number(t.overlapping) + "}";
+        out += f + 1 < families.size() ? ",\n" : "\n";
+    }
+    return out + "  ]";
+}
+
 }  // namespace
 
 std::string accuracy_json(const accuracy_report& report, const std::string& version) {
     const accuracy_settings& s = report.settings;
     const throughput_scene& scene = report.timing_scene;
     std::string out = "{\n";
-    out += "  \"format\": \"obbsat-accuracy-1\",\n";
+    out += "  \"format\": \"obbsat-accuracy-2\",\n";
     out += "  \"version\": " + quoted(version) + ",\n";
     out += "  \"seed\": " + number(s.seed) + ",\n";
     out += "  \"pairs_per_family\": " + number(static_cast<std::uint64_t>(s.pairs_per_family)) + ",\n";
@@ -63,30 +75,27 @@ std::string accuracy_json(const accuracy_report& report, const std::string& vers
     out += "  \"throughput_scene\": {\"density\": " + quoted(scene.density) +
            ", \"rects\": " + number(static_cast<std::uint64_t>(scene.rects)) +
            ", \"pairs\": " + number(static_cast<std::uint64_t>(scene.pairs)) +
-           ", \"store\": " + quoted(scene.store) + ", \"order\": " + quoted(scene.order) +
+           ", \"store\": " + quoted(scene.store) + ", \"pose_store\": " + quoted(scene.pose_store) +
+           ", \"order\": " + quoted(scene.order) +
            ", \"threads\": " + number(std::uint64_t{scene.threads}) +
            ", \"timed_runs\": " + number(std::uint64_t{s.measure_speed ? s.timing_reps : 0u}) + "},\n";
 
-    out += "  \"families\": [\n";
-    for (std::size_t f = 0; f < report.families.size(); ++f) {
-        const family_truth& t = report.families[f];
-        out += "    {\"name\": " + quoted(t.name) + ", \"pairs\": " + number(t.pairs) +
-               ", \"separated\": " + number(t.separated) + ", \"touching\": " + number(t.touching) +
-               ", \"overlapping\": " + number(t.overlapping) + "}";
-        out += f + 1 < report.families.size() ? ",\n" : "\n";
-    }
-    out += "  ],\n";
+    out += "  \"families\": " + families_array(report.families) + ",\n";
+    out += "  \"pose_families\": " + families_array(report.pose_families) + ",\n";
 
     out += "  \"methods\": [\n";
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
         const method_result& r = report.methods[m];
         out += "    {\n      \"name\": " + quoted(method_name(r.test)) + ",\n";
+        out += "      \"store\": " + quoted(store_name(r.store)) + ",\n";
+        out += "      \"label\": " + quoted(r.label()) + ",\n";
         out += "      \"mpairs_per_second\": " +
                (s.measure_speed ? number(r.mpairs_per_second) : std::string("null")) + ",\n";
         out += "      \"total\": {" + counts_fields(r.total) + "},\n";
         out += "      \"families\": [\n";
+        const std::vector<family_truth>& families = families_of(report, r.store);
         for (std::size_t f = 0; f < r.per_family.size(); ++f) {
-            out += "        {\"family\": " + quoted(report.families[f].name) + ", " +
+            out += "        {\"family\": " + quoted(families[f].name) + ", " +
                    counts_fields(r.per_family[f]) +
                    ", \"mpairs_per_second\": " + number(r.family_mpairs_per_second[f]) + "}";
             out += f + 1 < r.per_family.size() ? ",\n" : "\n";

@@ -2,6 +2,13 @@
 // family, scored against the exact oracle, and every method's speed on a
 // broadphase-like scene, so that speed can be weighed against error.
 //
+// A method is reported once per kind of store it runs on: the methods on
+// corners (rect_records) on the corner families, scored against the exact
+// oracle of quads; the methods on poses (pose_records: local, conservative,
+// exact) on the pose families, scored against the exact pose oracle, and
+// labelled "local (poses)" and so on. Both are timed on the same scene, its
+// rects converted to poses for the methods on poses.
+//
 // Verdicts come from the fastest backend this CPU runs (every backend gives
 // the same verdicts, so the choice only affects how long scoring takes).
 // Errors are counted per contact class of the truth: a false positive is a
@@ -50,15 +57,29 @@ struct family_truth {
     std::uint64_t overlapping = 0;
 };
 
-/// One method across every family.
+/// A method on one kind of store: one row of the report.
+struct method_on_store {
+    method test = method::sat4;
+    store_kind store = store_kind::corners;
+};
+
+/// The method's name on corners, e.g. "sat4"; with " (poses)" on poses, e.g. "local (poses)".
+std::string method_label(const method_on_store& m);
+
+/// One method on one kind of store, across every family of that store.
 struct method_result {
     method test = method::sat4;
-    std::vector<error_counts> per_family;  ///< in the order of accuracy_report::families
+    store_kind store = store_kind::corners;
+    /// In the order of accuracy_report::families (corners) or pose_families (poses).
+    std::vector<error_counts> per_family;
     /// Speed of the one scoring run on each family (settings.threads threads):
     /// how much the family's boundary pairs cost the method (exact's slow path).
     std::vector<double> family_mpairs_per_second;
     error_counts total;
     double mpairs_per_second = 0.0;        ///< on the throughput scene (see accuracy_report)
+
+    /// method_label of this row.
+    std::string label() const { return method_label({test, store}); }
 };
 
 struct accuracy_settings {
@@ -75,6 +96,8 @@ struct throughput_scene {
     std::size_t pairs = 262144;
     const char* density = "typical";
     const char* store = "rect_records";
+    /// Where the methods on poses run: the scene's rects as poses (pose_records::from_corners).
+    const char* pose_store = "pose_records";
     const char* order = "indexed, sorted by first rectangle";
     unsigned threads = 1;
 };
@@ -84,9 +107,14 @@ struct accuracy_report {
     backend used = backend::scalar;      ///< the backend that produced every verdict and time
     std::string cpu;                     ///< the CPU's model name as the OS reports it, or "unknown"
     throughput_scene timing_scene;
-    std::vector<family_truth> families;  ///< in suites::all_families() order
-    std::vector<method_result> methods;  ///< in all_methods() order
+    std::vector<family_truth> families;       ///< in suites::all_families() order
+    std::vector<family_truth> pose_families;  ///< in suites::all_pose_families() order
+    /// methods_on(corners) in order, then methods_on(poses) in order.
+    std::vector<method_result> methods;
 };
+
+/// The families the rows of store `s` are scored on: report.families or report.pose_families.
+const std::vector<family_truth>& families_of(const accuracy_report& report, store_kind s);
 
 /// The CPU's model name from /proc/cpuinfo, or "unknown".
 std::string cpu_model_name();
@@ -100,7 +128,9 @@ accuracy_report measure_accuracy(const accuracy_settings& settings,
 
 /// Mpairs/s of each method in `methods` (same order) on the throughput scene,
 /// on backend `use`, 1 thread: the median of `reps` timed runs after a warm-up.
-std::vector<double> measure_throughput(const std::vector<method>& methods, backend use,
+/// Methods on corners run on the scene's rect_records, methods on poses on
+/// the same rects as pose_records, over the same pairs.
+std::vector<double> measure_throughput(const std::vector<method_on_store>& methods, backend use,
                                        unsigned reps, const throughput_scene& spec = {});
 
 }  // namespace obbsat::accuracy

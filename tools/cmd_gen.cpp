@@ -1,5 +1,6 @@
-// obbsat gen: one hard-case suite family written as files the collide command
-// reads, with the exact oracle's truth beside them.
+// obbsat gen: one hard-case suite family (of rects, or with --poses of poses)
+// written as files the collide command reads, with the exact oracle's truth
+// beside them.
 //
 // All or nothing: the suite and its truth are computed first, then the five
 // files are written and flushed to disk inside a fresh temporary directory;
@@ -15,8 +16,11 @@
 
 #include <obbsat/oracle/classify_pairs.hpp>
 #include <obbsat/suites/family.hpp>
+#include <obbsat/suites/pose_family.hpp>
+#include <obbsat/suites/pose_suite.hpp>
 #include <obbsat/suites/suite.hpp>
 
+#include <array>
 #include <cerrno>
 #include <cinttypes>
 #include <cstdio>
@@ -33,12 +37,17 @@ namespace obbsat::cli {
 
 namespace {
 
-const char* const file_names[] = {"rects.csv", "pairs.csv", "truth_class.txt", "truth.txt",
-                                  "tags.txt"};
+// The five files of a suite: the shapes first, then pairs, truth and tags.
+using file_set = std::array<const char*, 5>;
+constexpr file_set rect_file_names = {"rects.csv", "pairs.csv", "truth_class.txt", "truth.txt",
+                                      "tags.txt"};
+constexpr file_set pose_file_names = {"poses.csv", "pairs.csv", "truth_class.txt", "truth.txt",
+                                      "tags.txt"};
 
 const std::vector<option_spec>& gen_option_specs() {
     static const std::vector<option_spec> specs = {
         {"out", "DIR", "directory to write the five files into; created if missing (required)"},
+        {"poses", "", "FAMILY is a pose family: write poses.csv, not rects.csv"},
         {"pairs", "N", "pairs to generate (default: 10000)"},
         {"seed", "S", "suite seed (default: 1)"},
         {"help", "", "show this help"},
@@ -55,6 +64,15 @@ std::string family_list() {
     return known;
 }
 
+std::string pose_family_list() {
+    std::string known;
+    for (const suites::pose_family f : suites::all_pose_families()) {
+        known += known.empty() ? "" : ", ";
+        known += suites::pose_family_name(f);
+    }
+    return known;
+}
+
 std::optional<suites::family> find_family(std::string_view name) {
     for (const suites::family f : suites::all_families()) {
         if (name == suites::family_name(f)) {
@@ -64,12 +82,31 @@ std::optional<suites::family> find_family(std::string_view name) {
     return std::nullopt;
 }
 
+std::optional<suites::pose_family> find_pose_family(std::string_view name) {
+    for (const suites::pose_family f : suites::all_pose_families()) {
+        if (name == suites::pose_family_name(f)) {
+            return f;
+        }
+    }
+    return std::nullopt;
+}
+
 // The words that are not options nor the values of options given as
-// "--name value", so FAMILY may stand anywhere on the line.
+// "--name value", so FAMILY may stand anywhere on the line. An option takes
+// the next word unless it is a flag (or unknown: parse_options names it).
 struct split_words {
     std::vector<std::string_view> positional;
     arguments options;
 };
+
+bool is_flag(std::string_view word) {
+    for (const option_spec& spec : gen_option_specs()) {
+        if (word.substr(2) == spec.name) {
+            return spec.value_name.empty();
+        }
+    }
+    return false;
+}
 
 split_words split_positional(const arguments& args) {
     split_words out;
@@ -80,7 +117,7 @@ split_words split_positional(const arguments& args) {
             continue;
         }
         out.options.push_back(word);
-        const bool takes_value = word != "--help" && word.find('=') == std::string_view::npos;
+        const bool takes_value = !is_flag(word) && word.find('=') == std::string_view::npos;
         if (takes_value && i + 1 < args.size()) {
             out.options.push_back(args[++i]);
         }
@@ -149,11 +186,13 @@ private:
     std::string buffer_;
 };
 
-// A temporary directory, created from `pattern` (mkdtemp's), removed with its
-// files unless released, on an error and on a signal alike; errors name `dir`.
+// A temporary directory, created from `pattern` (mkdtemp's), removed with the
+// files of `names` unless released, on an error and on a signal alike; errors
+// name `dir`.
 class temp_directory {
 public:
-    temp_directory(const std::string& pattern, const std::string& dir) {
+    temp_directory(const std::string& pattern, const std::string& dir, const file_set& names)
+        : names_(names) {
         std::vector<char> name(pattern.begin(), pattern.end());
         name.push_back('\0');
         {
@@ -165,7 +204,7 @@ public:
             registered_.emplace_back(path_, io::temporary_registration::kind::directory);
         }
         // Registered before they exist: removing a missing file is harmless.
-        for (const char* file : file_names) {
+        for (const char* file : names_) {
             registered_.emplace_back(path_ + "/" + file, io::temporary_registration::kind::file);
         }
     }
@@ -173,7 +212,7 @@ public:
         if (path_.empty()) {
             return;
         }
-        for (const char* name : file_names) {
+        for (const char* name : names_) {
             ::unlink((path_ + "/" + name).c_str());
         }
         ::rmdir(path_.c_str());
@@ -189,6 +228,7 @@ public:
     }
 
 private:
+    file_set names_;
     std::string path_;
     std::vector<io::temporary_registration> registered_;
 };
@@ -217,25 +257,42 @@ void sync_directory(const std::string& path) {
     }
 }
 
-void write_suite_files(const std::string& temp, const std::string& dir, const suites::suite& s,
-                       const std::vector<oracle::contact>& truth) {
+// One line of rects.csv or of poses.csv. %a prints a float (promoted to
+// double, exactly) as a C99 hex float that strtof reads back to the same
+// float, subnormals too.
+int shape_line(char* text, std::size_t size, const rect& r) {
+    return std::snprintf(text, size, "%a,%a,%a,%a,%a,%a,%a,%a", static_cast<double>(r.ul.x),
+                         static_cast<double>(r.ul.y), static_cast<double>(r.ur.x),
+                         static_cast<double>(r.ur.y), static_cast<double>(r.lr.x),
+                         static_cast<double>(r.lr.y), static_cast<double>(r.ll.x),
+                         static_cast<double>(r.ll.y));
+}
+
+int shape_line(char* text, std::size_t size, const rect_pose& p) {
+    return std::snprintf(text, size, "%a,%a,%a,%a,%a,%a", static_cast<double>(p.center.x),
+                         static_cast<double>(p.center.y), static_cast<double>(p.half_extents.x),
+                         static_cast<double>(p.half_extents.y), static_cast<double>(p.rotation.x),
+                         static_cast<double>(p.rotation.y));
+}
+
+const std::vector<rect>& shapes_of(const suites::suite& s) { return s.rects; }
+const std::vector<rect_pose>& shapes_of(const suites::pose_suite& s) { return s.poses; }
+
+// Suite is suites::suite or suites::pose_suite; names[0] is its shapes' file.
+template <class Suite>
+void write_suite_files(const std::string& temp, const std::string& dir, const Suite& s,
+                       const std::vector<oracle::contact>& truth, const file_set& names) {
     auto temp_path = [&](const char* name) { return temp + "/" + name; };
     auto final_path = [&](const char* name) { return dir + "/" + name; };
     char text[256];
 
     {
-        suite_file rects(temp_path("rects.csv"), final_path("rects.csv"));
-        for (const rect& r : s.rects) {
-            // %a prints a float (promoted to double, exactly) as a C99 hex
-            // float that strtof reads back to the same float, subnormals too.
-            const int size = std::snprintf(
-                text, sizeof text, "%a,%a,%a,%a,%a,%a,%a,%a", static_cast<double>(r.ul.x),
-                static_cast<double>(r.ul.y), static_cast<double>(r.ur.x), static_cast<double>(r.ur.y),
-                static_cast<double>(r.lr.x), static_cast<double>(r.lr.y), static_cast<double>(r.ll.x),
-                static_cast<double>(r.ll.y));
-            rects.line(text, static_cast<std::size_t>(size));
+        suite_file shapes(temp_path(names[0]), final_path(names[0]));
+        for (const auto& shape : shapes_of(s)) {
+            const int size = shape_line(text, sizeof text, shape);
+            shapes.line(text, static_cast<std::size_t>(size));
         }
-        rects.finish();
+        shapes.finish();
     }
     {
         suite_file pairs(temp_path("pairs.csv"), final_path("pairs.csv"));
@@ -267,17 +324,17 @@ void write_suite_files(const std::string& temp, const std::string& dir, const su
 }
 
 // Moves the complete files from `temp` into `dir`, which exists.
-void move_files_into(const std::string& temp, const std::string& dir) {
+void move_files_into(const std::string& temp, const std::string& dir, const file_set& names) {
     // Checked for every file before any moves, so that a name taken by a
     // directory cannot leave DIR with some files new and some old.
-    for (const char* name : file_names) {
+    for (const char* name : names) {
         struct stat existing {};
         const std::string target = dir + "/" + name;
         if (::stat(target.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode)) {
             throw io::output_error(target + ": is a directory, not a file name");
         }
     }
-    for (const char* name : file_names) {
+    for (const char* name : names) {
         const std::string target = dir + "/" + name;
         if (::rename((temp + "/" + name).c_str(), target.c_str()) != 0) {
             throw io::output_error(error_text(target, "cannot replace it", errno));
@@ -290,6 +347,7 @@ void move_files_into(const std::string& temp, const std::string& dir) {
 void print_gen_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat gen FAMILY --out DIR [--pairs N] [--seed S]\n"
+                 "       obbsat gen --poses FAMILY --out DIR [--pairs N] [--seed S]\n"
                  "\n"
                  "Writes N pairs of one hard-case suite family (pairs on or within a few float\n"
                  "steps of the boundary between separated, touching and overlapping) into DIR:\n"
@@ -306,67 +364,56 @@ void print_gen_help(std::FILE* out) {
                  "\n"
                  "families: %s\n"
                  "\n"
+                 "With --poses, FAMILY is a pose family, pairs of rectangles given as poses for\n"
+                 "the methods on poses, and poses.csv replaces rects.csv:\n"
+                 "  poses.csv        one pose per line, cx,cy,hx,hy,c,s as C99 hex floats, what\n"
+                 "                   'obbsat collide --poses' reads; the truth is the exact pose\n"
+                 "                   oracle's, the tags say how each pair was built, e.g. v:x+2:y-1\n"
+                 "                   (placed on contact along the first pose's axis (-s, c), then\n"
+                 "                   the second's center moved 2 float steps in x and -1 in y)\n"
+                 "\n"
+                 "pose families: %s\n"
+                 "\n"
                  "all or nothing: the files are written and flushed in a temporary directory\n"
                  "beside DIR (inside it, if DIR exists) and only then moved into place; a new\n"
                  "DIR appears whole in one rename, an existing DIR gets each of the five files\n"
                  "replaced and keeps its other files. On an error DIR is left as it was.\n"
                  "\n"
                  "options:\n",
-                 family_list().c_str());
+                 family_list().c_str(), pose_family_list().c_str());
     print_options(out, gen_option_specs());
     std::fprintf(out,
                  "\n"
                  "example:\n"
                  "  obbsat gen tiles --out tiles --pairs 50000 --seed 3\n"
                  "  obbsat collide --rects tiles/rects.csv --pairs tiles/pairs.csv --method exact"
-                 " | cmp - tiles/truth.txt\n");
+                 " | cmp - tiles/truth.txt\n"
+                 "  obbsat gen --poses contact --out contact\n"
+                 "  obbsat collide --poses contact/poses.csv --pairs contact/pairs.csv --method exact"
+                 " | cmp - contact/truth.txt\n");
 }
 
-int run_gen(const arguments& args) {
-    const split_words words = split_positional(args);
-    const parsed_options options = parse_options(words.options, gen_option_specs());
-    if (words.positional.empty()) {
-        throw usage_error("missing FAMILY (one of " + family_list() + ")");
-    }
-    if (words.positional.size() > 1) {
-        throw usage_error("unexpected argument '" + std::string(words.positional[1]) + "'");
-    }
-    const std::string_view family_word = words.positional.front();
-    const std::optional<suites::family> family = find_family(family_word);
-    if (!family) {
-        throw usage_error("unknown family '" + std::string(family_word) + "' (known: " +
-                          family_list() + ")");
-    }
-    const std::string dir = without_trailing_slashes(std::string(options.required("out")));
-    if (dir.empty()) {
-        throw usage_error("--out: expected a directory name, got ''");
-    }
+namespace {
+
+struct gen_request {
+    std::string dir;
+    bool dir_exists = false;
     std::size_t pairs = 10000;
-    if (const auto v = options.value("pairs")) {
-        pairs = static_cast<std::size_t>(parse_number_option("pairs", *v, 1, 100000000));
-    }
     std::uint64_t seed = 1;
-    if (const auto v = options.value("seed")) {
-        seed = parse_number_option("seed", *v, 0, UINT64_MAX);
-    }
+};
 
-    struct stat existing {};
-    const bool dir_exists = ::stat(dir.c_str(), &existing) == 0;
-    if (dir_exists && !S_ISDIR(existing.st_mode)) {
-        throw io::output_error(dir + ": exists and is not a directory");
-    }
-
-    const suites::suite s = suites::make_family(*family, seed, pairs);
-    std::vector<oracle::contact> truth(s.pairs.size());
-    oracle::classify_pairs(s.rects.data(), s.rects.size(), s.pairs.data(), s.pairs.size(),
-                           truth.data());
-
+// Writes the suite `s` and its `truth` into request.dir, all or nothing.
+template <class Suite>
+void write_suite(const gen_request& request, const Suite& s, const std::vector<oracle::contact>& truth,
+                 const file_set& names) {
+    const std::string& dir = request.dir;
     const std::string parent = parent_of(dir);
-    temp_directory temp(io::temporary_pattern((dir_exists ? dir : parent) + "/", "gen"), dir);
-    write_suite_files(temp.path(), dir, s, truth);
+    temp_directory temp(io::temporary_pattern((request.dir_exists ? dir : parent) + "/", "gen"), dir,
+                        names);
+    write_suite_files(temp.path(), dir, s, truth, names);
 
-    if (dir_exists) {
-        move_files_into(temp.path(), dir);
+    if (request.dir_exists) {
+        move_files_into(temp.path(), dir, names);
         sync_directory(dir);
     } else {
         // mkdtemp made it private (0700); DIR gets what mkdir would give it.
@@ -379,8 +426,73 @@ int run_gen(const arguments& args) {
         temp.release();
         sync_directory(parent);
     }
-    std::printf("%s: %zu pairs of family %s (seed %" PRIu64 ") over %zu rects\n", dir.c_str(),
-                s.pairs.size(), suites::family_name(*family), seed, s.rects.size());
+}
+
+void gen_rects(const gen_request& request, suites::family family) {
+    const suites::suite s = suites::make_family(family, request.seed, request.pairs);
+    std::vector<oracle::contact> truth(s.pairs.size());
+    oracle::classify_pairs(s.rects.data(), s.rects.size(), s.pairs.data(), s.pairs.size(),
+                           truth.data());
+    write_suite(request, s, truth, rect_file_names);
+    std::printf("%s: %zu pairs of family %s (seed %" PRIu64 ") over %zu rects\n", request.dir.c_str(),
+                s.pairs.size(), suites::family_name(family), request.seed, s.rects.size());
+}
+
+void gen_poses(const gen_request& request, suites::pose_family family) {
+    const suites::pose_suite s = suites::make_pose_family(family, request.seed, request.pairs);
+    std::vector<oracle::contact> truth(s.pairs.size());
+    oracle::classify_pairs(s.poses.data(), s.poses.size(), s.pairs.data(), s.pairs.size(),
+                           truth.data());
+    write_suite(request, s, truth, pose_file_names);
+    std::printf("%s: %zu pairs of pose family %s (seed %" PRIu64 ") over %zu poses\n",
+                request.dir.c_str(), s.pairs.size(), suites::pose_family_name(family), request.seed,
+                s.poses.size());
+}
+
+}  // namespace
+
+int run_gen(const arguments& args) {
+    const split_words words = split_positional(args);
+    const parsed_options options = parse_options(words.options, gen_option_specs());
+    const bool poses = options.has("poses");
+    const std::string known = poses ? pose_family_list() : family_list();
+    if (words.positional.empty()) {
+        throw usage_error("missing FAMILY (one of " + known + ")");
+    }
+    if (words.positional.size() > 1) {
+        throw usage_error("unexpected argument '" + std::string(words.positional[1]) + "'");
+    }
+    const std::string_view family_word = words.positional.front();
+    const std::optional<suites::family> family = poses ? std::nullopt : find_family(family_word);
+    const std::optional<suites::pose_family> pose_family =
+        poses ? find_pose_family(family_word) : std::nullopt;
+    if (!family && !pose_family) {
+        throw usage_error("unknown " + std::string(poses ? "pose family" : "family") + " '" +
+                          std::string(family_word) + "' (known: " + known + ")");
+    }
+    gen_request request;
+    request.dir = without_trailing_slashes(std::string(options.required("out")));
+    if (request.dir.empty()) {
+        throw usage_error("--out: expected a directory name, got ''");
+    }
+    if (const auto v = options.value("pairs")) {
+        request.pairs = static_cast<std::size_t>(parse_number_option("pairs", *v, 1, 100000000));
+    }
+    if (const auto v = options.value("seed")) {
+        request.seed = parse_number_option("seed", *v, 0, UINT64_MAX);
+    }
+
+    struct stat existing {};
+    request.dir_exists = ::stat(request.dir.c_str(), &existing) == 0;
+    if (request.dir_exists && !S_ISDIR(existing.st_mode)) {
+        throw io::output_error(request.dir + ": exists and is not a directory");
+    }
+
+    if (pose_family) {
+        gen_poses(request, *pose_family);
+    } else {
+        gen_rects(request, *family);
+    }
     return exit_success;
 }
 

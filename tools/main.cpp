@@ -41,7 +41,7 @@ constexpr subcommand subcommands[] = {
      run_backends, print_backends_help},
     {"demo", "time every backend on a seeded scene and check they all agree", run_demo,
      print_demo_help},
-    {"gen", "write a hard-case suite family and its exact truth to files", run_gen,
+    {"gen", "write a hard-case suite family (rects or poses) and its exact truth to files", run_gen,
      print_gen_help},
     {"accuracy", "score every method against the exact oracle on every suite family",
      run_accuracy, print_accuracy_help},

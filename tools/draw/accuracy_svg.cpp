@@ -71,10 +71,16 @@ std::string accuracy_svg(const accuracy_report& report) {
     };
 
     // Vertical scale: decades from the floor up to the decade above the worst rate.
+    // Rows on poses are scored on other families than rows on corners: the
+    // floor's claim holds for the row with the fewest pairs.
     std::uint64_t pairs = 0;
+    std::uint64_t fewest_pairs = 0;
     double worst = 0.0;
     for (const method_result& m : report.methods) {
         pairs = std::max(pairs, m.total.pairs);
+        if (m.total.pairs > 0 && (fewest_pairs == 0 || m.total.pairs < fewest_pairs)) {
+            fewest_pairs = m.total.pairs;
+        }
         worst = std::max(worst, m.total.error_rate());
     }
     const int floor_decade =
@@ -105,15 +111,23 @@ std::string accuracy_svg(const accuracy_report& report) {
     out.leaf("rect", svg::attributes().set("x", 0.0).set("y", 0.0).set("width", width).set("height", height).set("fill", "white"));
 
     char title[200];
-    std::snprintf(title, sizeof title,
-                  "obbsat methods: speed against error (%" PRIu64 " hard-case pairs, %zu families)",
-                  pairs, report.families.size());
+    if (report.pose_families.empty()) {
+        std::snprintf(title, sizeof title,
+                      "obbsat methods: speed against error (%" PRIu64 " hard-case pairs, %zu families)",
+                      pairs, report.families.size());
+    } else {
+        std::snprintf(title, sizeof title,
+                      "obbsat methods: speed against error (%zu families of rects, %zu of poses)",
+                      report.families.size(), report.pose_families.size());
+    }
     out.text("text", text_at("title", width / 2.0, 28.0, "middle"), title);
     char subtitle[200];
     std::snprintf(subtitle, sizeof subtitle,
-                  "speed: %s scene, %zu pairs over %zu rects, %s, %u thread, %s",
+                  "speed: %s scene, %zu pairs over %zu rects, %s%s%s, %u thread, %s",
                   report.timing_scene.density, report.timing_scene.pairs, report.timing_scene.rects,
-                  report.timing_scene.store, report.timing_scene.threads, backend_name(report.used));
+                  report.timing_scene.store, report.pose_families.empty() ? "" : " or ",
+                  report.pose_families.empty() ? "" : report.timing_scene.pose_store,
+                  report.timing_scene.threads, backend_name(report.used));
     out.text("text", text_at("subtitle", width / 2.0, 48.0, "middle"), subtitle);
 
     // Grid and tick labels.
@@ -131,7 +145,7 @@ std::string accuracy_svg(const accuracy_report& report) {
     const double floor_y = y_of(0.0);
     line(out, plot_left, floor_y, plot_right, floor_y, "floor");
     out.text("text", text_at("tick floor-label", plot_left - 8.0, floor_y + 4.0, "end"), "0");
-    const std::string floor_text = "no errors (below 1 in " + std::to_string(pairs) + ")";
+    const std::string floor_text = "no errors (below 1 in " + std::to_string(fewest_pairs) + ")";
     out.text("text", text_at("floor-label", plot_left + 6.0, floor_y - 6.0, "start"), floor_text);
     out.leaf("rect", svg::attributes()
                          .set("class", "frame")
@@ -155,7 +169,7 @@ std::string accuracy_svg(const accuracy_report& report) {
                                   plot_left + 6.0 + label_char_width * static_cast<double>(floor_text.size()),
                                   floor_y - 17.0, floor_y - 3.0});
     for (const method_result& m : report.methods) {
-        const std::string name = method_name(m.test);
+        const std::string name = m.label();
         const double rate = m.total.error_rate();
         const double px = x_of(m.mpairs_per_second);
         const double py = y_of(rate);
@@ -168,7 +182,7 @@ std::string accuracy_svg(const accuracy_report& report) {
         placed.push_back(placed_label{px - 7.0, px + 7.0, py - 7.0, py + 7.0});
     }
     for (const method_result& m : report.methods) {
-        const std::string name = method_name(m.test);
+        const std::string name = m.label();
         const double rate = m.total.error_rate();
         char speed[32];
         std::snprintf(speed, sizeof speed, "%.0f", m.mpairs_per_second);

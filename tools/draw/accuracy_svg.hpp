@@ -1,12 +1,13 @@
 // The accuracy report as a plot: speed (Mpairs/s, linear) across, error rate
-// (log scale) up, one labelled point per method. A rate of zero has no place
-// on a log scale, so methods without a single error sit on a dashed floor
-// line one decade below the smallest rate the run could have measured
-// (1 / pairs scored), marked "no errors".
+// (log scale) up, one labelled point per method and store (a method on poses
+// is labelled e.g. "local (poses)"). A rate of zero has no place on a log
+// scale, so methods without a single error sit on a dashed floor line one
+// decade below the smallest rate the run could have measured (1 / pairs
+// scored), marked "no errors".
 //
-// Every point is <circle class="point" data-method="NAME" .../> and every
-// label <text class="label" data-method="NAME">, so the picture can be checked
-// by a program as well as by eye.
+// Every point is <circle class="point" data-method="LABEL" .../> and every
+// label <text class="label" data-method="LABEL">, so the picture can be
+// checked by a program as well as by eye.
 #pragma once
 
 #include "accuracy_report.hpp"

@@ -1,15 +1,14 @@
 // pose_exact_soak PAIRS [SEED]: runs methods exact and conservative on poses
 // over PAIRS pairs on every backend this CPU runs, and counts disagreements
 // with the exact pose oracle (exact must agree on every pair, conservative
-// must never call a colliding pair apart). Half the pairs come from the ten
-// hard kinds of the pose tests, a quarter are bit-fuzzed poses (every field
+// must never call a colliding pair apart). Half the pairs come from the pose
+// families of suites/, a quarter are bit-fuzzed poses (every field
 // a random finite float, half extents made non-negative), a quarter are hard
 // pairs with their low mantissa bits fuzzed. Exit 1 on any disagreement.
-#include "test_support/random_poses.hpp"
-
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/oracle/pose_contact.hpp>
+#include <obbsat/suites/pose_suite.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -65,6 +64,11 @@ obbsat::rect_pose nudged(obbsat::rect_pose p, obbsat::seeded_random& random) {
     return valid(p);
 }
 
+obbsat::suites::pose_family any_family(obbsat::seeded_random& random) {
+    const auto& all = obbsat::suites::all_pose_families();
+    return all[random.below(all.size())];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,16 +89,14 @@ int main(int argc, char** argv) {
             switch (i % 4) {
                 case 0:
                 case 1:
-                    obbsat::test_support::random_pose_pair(
-                        random, static_cast<unsigned>(random.below(obbsat::test_support::pose_pair_kinds)), a[i], b[i]);
+                    obbsat::suites::random_pose_pair(random, any_family(random), a[i], b[i]);
                     break;
                 case 2:
                     a[i] = fuzzed_pose(random);
                     b[i] = fuzzed_pose(random);
                     break;
                 default:
-                    obbsat::test_support::random_pose_pair(
-                        random, static_cast<unsigned>(random.below(obbsat::test_support::pose_pair_kinds)), a[i], b[i]);
+                    obbsat::suites::random_pose_pair(random, any_family(random), a[i], b[i]);
                     a[i] = nudged(a[i], random);
                     b[i] = nudged(b[i], random);
                     break;

@@ -210,6 +210,8 @@ method_view view_of_method(method m, const rect& a, const rect& b, bool collides
         case method::sat4_double: view = double_method_view(a, b); break;
         case method::conservative:
         case method::exact: return exact_method_view(m, a, b, collides);
+        case method::local:  // refused for corners before any drawing (cli_args)
+            throw std::logic_error("method local does not run on corners");
     }
     if ((view.separating < 0) != collides) {
         throw std::logic_error(std::string("the replayed steps of method ") + method_name(m) +

@@ -365,6 +365,29 @@ std::vector<xml_element> parse_xml_elements(const std::string& xml) {
 // ===========================================================================
 // gen
 
+/// The four files gen writes beside the shapes (pairs, truth classes, truth,
+/// tags), 300 pairs, against the suite asked for: `shapes` are its rects or
+/// its poses, classified by the matching exact oracle.
+template <class Suite, class Shapes>
+void expect_truth_files(const scratch& s, const std::string& name, const Suite& want, const Shapes& shapes) {
+    const std::vector<std::string> pairs = lines_of(read_file(s.file(name + "/pairs.csv")));
+    const std::vector<std::string> classes = lines_of(read_file(s.file(name + "/truth_class.txt")));
+    const std::vector<std::string> truth = lines_of(read_file(s.file(name + "/truth.txt")));
+    const std::vector<std::string> tags = lines_of(read_file(s.file(name + "/tags.txt")));
+    ASSERT_EQ(pairs.size(), 300u);
+    ASSERT_EQ(classes.size(), 300u);
+    ASSERT_EQ(truth.size(), 300u);
+    ASSERT_EQ(tags.size(), 300u);
+    for (std::size_t i = 0; i < 300; ++i) {
+        const obbsat::pair_index p = want.pairs[i];
+        EXPECT_EQ(pairs[i], std::to_string(p.a) + "," + std::to_string(p.b)) << name << " " << i;
+        const contact c = obbsat::oracle::classify(shapes[p.a], shapes[p.b]);
+        EXPECT_EQ(classes[i], std::string(1, obbsat::oracle::contact_letter(c))) << name << " " << i;
+        EXPECT_EQ(truth[i], c == contact::separated ? "0" : "1") << name << " " << i;
+        EXPECT_EQ(tags[i], want.tag_of(i)) << name << " " << i;
+    }
+}
+
 TEST(gen, writes_the_suite_the_library_builds_with_the_oracles_truth) {
     const scratch s;
     for (const family f : obbsat::suites::all_families()) {
@@ -380,22 +403,7 @@ TEST(gen, writes_the_suite_the_library_builds_with_the_oracles_truth) {
         for (std::size_t i = 0; i < want.rects.size(); ++i) {
             ASSERT_TRUE(same_rect_bits(rects[i], want.rects[i])) << name << " rect " << i;
         }
-        const std::vector<std::string> pairs = lines_of(read_file(s.file(name + "/pairs.csv")));
-        const std::vector<std::string> classes = lines_of(read_file(s.file(name + "/truth_class.txt")));
-        const std::vector<std::string> truth = lines_of(read_file(s.file(name + "/truth.txt")));
-        const std::vector<std::string> tags = lines_of(read_file(s.file(name + "/tags.txt")));
-        ASSERT_EQ(pairs.size(), 300u);
-        ASSERT_EQ(classes.size(), 300u);
-        ASSERT_EQ(truth.size(), 300u);
-        ASSERT_EQ(tags.size(), 300u);
-        for (std::size_t i = 0; i < 300; ++i) {
-            const obbsat::pair_index p = want.pairs[i];
-            EXPECT_EQ(pairs[i], std::to_string(p.a) + "," + std::to_string(p.b)) << name << " " << i;
-            const contact c = obbsat::oracle::classify(want.rects[p.a], want.rects[p.b]);
-            EXPECT_EQ(classes[i], std::string(1, obbsat::oracle::contact_letter(c))) << name << " " << i;
-            EXPECT_EQ(truth[i], c == contact::separated ? "0" : "1") << name << " " << i;
-            EXPECT_EQ(tags[i], want.tag_of(i)) << name << " " << i;
-        }
+        expect_truth_files(s, name, want, want.rects);
     }
 }
 
@@ -543,22 +551,7 @@ TEST(gen_poses, writes_the_pose_suite_the_library_builds_with_the_pose_oracles_t
         for (std::size_t i = 0; i < want.poses.size(); ++i) {
             ASSERT_TRUE(same_pose_bits(poses[i], want.poses[i])) << name << " pose " << i;
         }
-        const std::vector<std::string> pairs = lines_of(read_file(s.file(name + "/pairs.csv")));
-        const std::vector<std::string> classes = lines_of(read_file(s.file(name + "/truth_class.txt")));
-        const std::vector<std::string> truth = lines_of(read_file(s.file(name + "/truth.txt")));
-        const std::vector<std::string> tags = lines_of(read_file(s.file(name + "/tags.txt")));
-        ASSERT_EQ(pairs.size(), 300u);
-        ASSERT_EQ(classes.size(), 300u);
-        ASSERT_EQ(truth.size(), 300u);
-        ASSERT_EQ(tags.size(), 300u);
-        for (std::size_t i = 0; i < 300; ++i) {
-            const obbsat::pair_index p = want.pairs[i];
-            EXPECT_EQ(pairs[i], std::to_string(p.a) + "," + std::to_string(p.b)) << name << " " << i;
-            const contact c = obbsat::oracle::classify(want.poses[p.a], want.poses[p.b]);
-            EXPECT_EQ(classes[i], std::string(1, obbsat::oracle::contact_letter(c))) << name << " " << i;
-            EXPECT_EQ(truth[i], c == contact::separated ? "0" : "1") << name << " " << i;
-            EXPECT_EQ(tags[i], want.tag_of(i)) << name << " " << i;
-        }
+        expect_truth_files(s, name, want, want.poses);
     }
 }
 

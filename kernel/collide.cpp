@@ -193,6 +193,25 @@ backend collide_pairs(const rect* rects, std::size_t rect_count, const pair_inde
     return ran;
 }
 
+namespace {
+
+/// Throws invalid_input unless the two stream batches are equally long.
+void require_same_length(std::size_t a, std::size_t b, const char* what) {
+    if (a != b) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a) + " " + what + " in A, " +
+                            std::to_string(b) + " in B");
+    }
+}
+
+}  // namespace
+
+template <class Store>
+std::vector<std::uint8_t> stream_verdicts_of(const Store& a, const Store& b, const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
+}
+
 template <class Store>
 std::vector<std::uint8_t> verdicts_of(const Store& rects, const std::vector<pair_index>& pairs,
                                       const collide_options& options) {
@@ -236,10 +255,7 @@ std::vector<pair_index> colliding_pairs(const rect_soa& rects, const std::vector
 
 backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdicts,
                        const collide_options& options) {
-    if (a.size() != b.size()) {
-        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) +
-                            " rectangles in A, " + std::to_string(b.size()) + " in B");
-    }
+    require_same_length(a.size(), b.size(), "rectangles");
     const backend ran = resolve_backend(options.use);
     const detail::stream_fn kernel = kernels_of(ran, options).stream;
     const detail::soa_view va = detail::view_of(a);
@@ -252,9 +268,7 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
 
 std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
                                          const collide_options& options) {
-    std::vector<std::uint8_t> verdicts(a.size());
-    collide_stream(a, b, verdicts.data(), options);
-    return verdicts;
+    return stream_verdicts_of(a, b, options);
 }
 
 backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
@@ -281,10 +295,7 @@ std::vector<pair_index> colliding_pairs(const pose_records& poses, const std::ve
 
 backend collide_stream(const pose_records& a, const pose_records& b, std::uint8_t* verdicts,
                        const collide_options& options) {
-    if (a.size() != b.size()) {
-        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) + " poses in A, " +
-                            std::to_string(b.size()) + " in B");
-    }
+    require_same_length(a.size(), b.size(), "poses");
     const backend ran = resolve_backend(options.use);
     const detail::pose_stream_fn kernel = pose_kernels_of(ran, options).stream;
     const float* ra = a.data();
@@ -298,17 +309,12 @@ backend collide_stream(const pose_records& a, const pose_records& b, std::uint8_
 
 std::vector<std::uint8_t> collide_stream(const pose_records& a, const pose_records& b,
                                          const collide_options& options) {
-    std::vector<std::uint8_t> verdicts(a.size());
-    collide_stream(a, b, verdicts.data(), options);
-    return verdicts;
+    return stream_verdicts_of(a, b, options);
 }
 
 backend collide_stream(const pose_soa& a, const pose_soa& b, std::uint8_t* verdicts,
                        const collide_options& options) {
-    if (a.size() != b.size()) {
-        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) + " poses in A, " +
-                            std::to_string(b.size()) + " in B");
-    }
+    require_same_length(a.size(), b.size(), "poses");
     const backend ran = resolve_backend(options.use);
     const detail::pose_stream_soa_fn kernel = pose_kernels_of(ran, options).stream_soa;
     const detail::pose_soa_view va = detail::view_of(a);
@@ -320,9 +326,7 @@ backend collide_stream(const pose_soa& a, const pose_soa& b, std::uint8_t* verdi
 }
 
 std::vector<std::uint8_t> collide_stream(const pose_soa& a, const pose_soa& b, const collide_options& options) {
-    std::vector<std::uint8_t> verdicts(a.size());
-    collide_stream(a, b, verdicts.data(), options);
-    return verdicts;
+    return stream_verdicts_of(a, b, options);
 }
 
 }  // namespace obbsat

@@ -7,6 +7,7 @@
 
 #include "batch_kernel.hpp"
 #include "pose_lanes.hpp"
+#include "pose_record.hpp"
 #include "pose_soa_view.hpp"
 #include "record_transpose.hpp"
 
@@ -18,13 +19,6 @@
 
 namespace obbsat::detail {
 namespace {
-
-constexpr std::size_t pose_record_floats = 8;
-
-inline rect_pose pose_at(const float* records, std::size_t index) {
-    const float* v = records + pose_record_floats * index;
-    return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}};
-}
 
 /// The poses of records[index(lane)] for every lane.
 template <class Arch, class Index>
@@ -42,7 +36,7 @@ std::size_t pose_batch(const float* a, const float* b, const First& first, const
                        std::size_t count, std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
     std::size_t settled = 0;
-    auto poses_of_pair = [&](std::size_t i) { return std::make_pair(pose_at(a, first(i)), pose_at(b, second(i))); };
+    auto poses_of_pair = [&](std::size_t i) { return std::make_pair(pose_record_at(a, first(i)), pose_record_at(b, second(i))); };
     // One vector of pairs, pair_of(lane) giving each lane's pair.
     auto run = [&](std::size_t i, std::size_t valid, const auto& pair_of) {
         const lane_verdicts v =

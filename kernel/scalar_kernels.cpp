@@ -3,6 +3,7 @@
 #include "backend_catalogue.hpp"
 #include "kernel_table.hpp"
 #include "method_catalogue.hpp"
+#include "pose_record.hpp"
 
 #include <obbsat/ref/pose_corners.hpp>
 
@@ -43,11 +44,6 @@ std::size_t indexed_records(const rect* records, const pair_index* pairs, std::s
         verdicts[i] = Reference(records[pairs[i].a], records[pairs[i].b]) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
-}
-
-rect_pose pose_record_at(const float* records, std::size_t index) {
-    const float* v = records + 8 * index;
-    return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}};
 }
 
 template <pose_reference_fn Reference, bool SlowPath>

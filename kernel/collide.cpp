@@ -1,5 +1,6 @@
 #include "backend_registry.hpp"
 #include "finite_check.hpp"
+#include "method_check.hpp"
 #include "thread_pool.hpp"
 
 #include <obbsat/collide.hpp>
@@ -11,6 +12,27 @@
 #include <thread>
 
 namespace obbsat {
+
+namespace detail {
+
+/// Throws invalid_input unless options.test names a method that runs on `store`.
+void require_method_on(const collide_options& options, store_kind store) {
+    if (!is_method(options.test)) {
+        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
+                            ", which names no method");
+    }
+    if (!runs_on(options.test, store)) {
+        std::string offered;
+        for (const method m : methods_on(store)) {
+            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
+        }
+        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on " +
+                            store_name(store) + " (" + (store == store_kind::poses ? "pose_records" : "rect stores") +
+                            " take " + offered + ")");
+    }
+}
+
+}  // namespace detail
 
 namespace {
 
@@ -81,35 +103,16 @@ void check_indices(std::size_t rect_count, const pair_index* pairs, std::size_t 
     }
 }
 
-/// The entry points of options.test on backend `ran`; throws invalid_input
-/// when options.test holds a value that names no method.
-/// Throws invalid_input unless options.test names a method that runs on `store`.
-void require_method_on(const collide_options& options, store_kind store) {
-    if (!is_method(options.test)) {
-        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
-                            ", which names no method");
-    }
-    if (!runs_on(options.test, store)) {
-        std::string offered;
-        for (const method m : methods_on(store)) {
-            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
-        }
-        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on " +
-                            store_name(store) + " (" + (store == store_kind::poses ? "pose_records" : "rect stores") +
-                            " take " + offered + ")");
-    }
-}
-
 /// The entry points of options.test on corners on backend `ran`; throws
 /// invalid_input when options.test names no method that runs on corners.
 const detail::method_kernels& kernels_of(backend ran, const collide_options& options) {
-    require_method_on(options, store_kind::corners);
+    detail::require_method_on(options, store_kind::corners);
     return detail::kernels_for(ran).of(options.test);
 }
 
 /// The same on poses.
 const detail::pose_method_kernels& pose_kernels_of(backend ran, const collide_options& options) {
-    require_method_on(options, store_kind::poses);
+    detail::require_method_on(options, store_kind::poses);
     return detail::kernels_for(ran).on_poses(options.test);
 }
 

@@ -1,0 +1,114 @@
+// Scene queries: every colliding pair of a whole scene, with no pair list to
+// bring. A broadphase over bounds that contain each rectangle's exact point
+// set (obbsat/ref/bounds.hpp) finds the pairs whose bounds overlap, the batch
+// kernels of the chosen method decide them, and the colliding ones come back
+// as (i, j) pairs sorted by i, then j.
+//
+// Which pairs are reported, for every method m:
+//   exactly the pairs whose bounds overlap and that m calls colliding.
+// For m = exact this is the exact answer among all N(N−1)/2 pairs: two
+// rectangles that share a point have overlapping bounds (each contains its
+// rectangle), so the broadphase loses none. For conservative it contains every
+// colliding pair; a false positive of conservative between rectangles whose
+// bounds are apart is not reported (they do not touch). For the float methods
+// (sat4, sat4_centered, sat4_double, local) the same holds: a false positive
+// between rectangles whose bounds are apart is absent; every other verdict is
+// the method's own, the same on every backend and thread count.
+//
+// Memory: about 120 bytes per rectangle (bounds, order, one copy of the
+// records in the query's own order) plus 8 bytes per candidate pair in
+// flight per thread (bounded) and 8 bytes per reported pair.
+#pragma once
+
+#include <obbsat/collide.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_records.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace obbsat {
+
+/// What one query did, for reports and benchmarks.
+struct find_pairs_stats {
+    std::size_t boxes = 0;       ///< rectangles in the query (both stores for a cross query)
+    std::size_t strips = 0;      ///< horizontal strips of the sweep
+    std::size_t visits = 0;      ///< extra strip entries of rectangles taller than their strip
+    std::size_t candidates = 0;  ///< pairs whose bounds overlap, handed to the method
+    std::size_t pairs = 0;       ///< pairs reported
+    std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
+    bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
+    double bounds_seconds = 0;   ///< bounds and sort keys
+    double order_seconds = 0;    ///< sorting, reordering the records
+    double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
+    double output_seconds = 0;   ///< mapping back to the caller's indices and sorting
+};
+
+/// Every pair (i, j), i < j, of `boxes` that collides under options.test,
+/// sorted by i then j. Throws invalid_input for a method that does not run on
+/// poses, unsupported_backend for a backend this CPU lacks.
+std::vector<pair_index> find_pairs(const pose_records& boxes, const collide_options& options);
+
+/// Every pair (i, j), i in `a` and j in `b`, that collides, sorted by i then j.
+std::vector<pair_index> find_pairs(const pose_records& a, const pose_records& b, const collide_options& options);
+
+/// The same over corner records (methods that run on corners).
+std::vector<pair_index> find_pairs(const rect_records& boxes, const collide_options& options);
+
+/// The same over two corner stores.
+std::vector<pair_index> find_pairs(const rect_records& a, const rect_records& b, const collide_options& options);
+
+/// Receives the colliding pairs in chunks, never from two threads at once,
+/// in no particular order (each pair once, i < j for one store, i in a and j
+/// in b for two); the pointer is valid only during the call.
+using pair_chunk_sink = std::function<void(const pair_index* pairs, std::size_t count)>;
+
+/// Streams the pairs of find_pairs to `sink` without holding them all.
+void find_pairs_each(const pose_records& boxes, const collide_options& options, const pair_chunk_sink& sink);
+/// Streams the pairs of the cross query to `sink`.
+void find_pairs_each(const pose_records& a, const pose_records& b, const collide_options& options,
+                     const pair_chunk_sink& sink);
+/// Streams the pairs over corner records to `sink`.
+void find_pairs_each(const rect_records& boxes, const collide_options& options, const pair_chunk_sink& sink);
+/// Streams the pairs of the cross query over corner records to `sink`.
+void find_pairs_each(const rect_records& a, const rect_records& b, const collide_options& options,
+                     const pair_chunk_sink& sink);
+
+namespace detail {
+class pair_search;
+}
+
+/// A persistent query for simulations: it keeps the order of the rectangles
+/// and every buffer from one call to the next, so a scene whose rectangles
+/// moved a little is answered by repairing the previous order, with no
+/// allocation once the buffers have grown. The answer is always the same as a
+/// fresh find_pairs on the same data.
+class pair_finder {
+public:
+    explicit pair_finder(const collide_options& options);
+    ~pair_finder();
+    pair_finder(pair_finder&&) noexcept;
+    pair_finder& operator=(pair_finder&&) noexcept;
+    pair_finder(const pair_finder&) = delete;
+    pair_finder& operator=(const pair_finder&) = delete;
+
+    /// The pairs of find_pairs(boxes, options); valid until the next call.
+    const std::vector<pair_index>& find(const pose_records& boxes);
+    /// The pairs of find_pairs(a, b, options); valid until the next call.
+    const std::vector<pair_index>& find(const pose_records& a, const pose_records& b);
+    /// The pairs of find_pairs over corner records.
+    const std::vector<pair_index>& find(const rect_records& boxes);
+    /// The pairs of the cross query over corner records.
+    const std::vector<pair_index>& find(const rect_records& a, const rect_records& b);
+
+    /// What the last call did.
+    const find_pairs_stats& stats() const;
+
+private:
+    std::unique_ptr<detail::pair_search> search_;
+};
+
+}  // namespace obbsat

@@ -1,0 +1,130 @@
+// The engine of the scene queries (obbsat/find_pairs.hpp): bounds, order,
+// sweep, the method's kernels, the answer in the caller's indices. It keeps
+// every buffer and the last order between calls. Internal to the library.
+//
+// How it finds the candidates:
+//   1. Bounds of every rectangle (obbsat/ref/bounds.hpp), in the caller's order.
+//   2. The scene is cut into horizontal strips (strip_grid.hpp). Each
+//      rectangle is sorted by (lowest strip it touches, quantized lo_x); that
+//      order is the query's own, and the records are copied into it, so that
+//      rectangles near each other in the plane are near each other in memory.
+//   3. A rectangle taller than its strip also visits the strips above, up to
+//      the one holding its hi_y; visits are sorted the same way.
+//   4. In each strip the rectangles that start there and the visitors are
+//      merged by quantized lo_x and swept: every later entry whose quantized
+//      lo_x is at most this entry's quantized hi_x is tested on the full
+//      bounds. A pair is taken in the strip holding the larger of its two
+//      lo_y (the first strip both touch), i.e. never between two visitors,
+//      so each pair whose bounds overlap is found exactly once.
+//   5. Candidates go to the method's indexed kernel in blocks, over the
+//      reordered records; the colliding ones are mapped back.
+#pragma once
+
+#include "strip_grid.hpp"
+
+#include <obbsat/collide.hpp>
+#include <obbsat/find_pairs.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_records.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <vector>
+
+namespace obbsat::detail {
+
+/// The rectangles of one query: one or two stores of 32-byte records of one kind.
+struct query_input {
+    store_kind kind = store_kind::poses;
+    const float* a = nullptr;  ///< records of the first store
+    std::size_t a_count = 0;
+    const float* b = nullptr;  ///< records of the second store; nullptr for a query within a
+    std::size_t b_count = 0;
+};
+
+class pair_search {
+public:
+    explicit pair_search(const collide_options& options);
+
+    /// Runs the query and hands the colliding pairs, in the caller's indices,
+    /// to `emit` in chunks, one call at a time.
+    void run(const query_input& input, const pair_chunk_sink& emit);
+
+    /// Runs the query and returns its pairs sorted by (a, b).
+    const std::vector<pair_index>& collect(const query_input& input);
+
+    const find_pairs_stats& stats() const { return stats_; }
+
+private:
+    struct record {
+        float v[8];
+    };
+    /// One thread's share of the sweep and its working memory.
+    struct part {
+        std::uint32_t first_strip = 0;
+        std::uint32_t end_strip = 0;
+        // One strip's entries, merged by quantized lo_x.
+        std::vector<std::uint32_t> q_lo, q_hi, id;
+        std::vector<float> lo_x, lo_y, hi_x, hi_y;
+        std::vector<std::uint8_t> own, side;
+        // Candidates in the query's order, and the kernel's verdicts on them.
+        std::vector<pair_index> candidates;
+        std::size_t candidate_count = 0;
+        std::vector<std::uint8_t> verdicts;
+        // Colliding pairs in the caller's indices.
+        std::vector<pair_index> found;
+        std::size_t tested = 0;
+        std::size_t slow_path = 0;
+    };
+
+    void compute_bounds(const query_input& input, std::size_t parts);
+    void order_boxes(std::size_t parts);
+    void copy_records(const query_input& input, std::size_t parts);
+    void collect_visits();
+    void sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
+    void sweep_strip(std::uint32_t strip, part& p) const;
+    void flush_candidates(part& p) const;
+
+    collide_options options_;
+    find_pairs_stats stats_;
+    bool self_ = true;
+    std::size_t a_count_ = 0;
+    std::size_t n_ = 0;
+    store_kind kind_ = store_kind::poses;
+    backend ran_ = backend::scalar;
+
+    // The grid and the order of the last query, for the next one.
+    strip_grid grid_;
+    bool have_order_ = false;
+    std::size_t ordered_n_ = 0;
+    std::size_t ordered_a_count_ = 0;
+    store_kind ordered_kind_ = store_kind::poses;
+    bool ordered_self_ = true;
+
+    // Per rectangle, in the caller's order.
+    std::vector<float> lo_x_, lo_y_, hi_x_, hi_y_;
+    std::vector<std::uint32_t> key_by_id_;
+    bounds_extent extent_{};
+
+    // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
+    std::vector<std::uint32_t> keys_, order_, spare_keys_, spare_values_;
+
+    // Per rectangle, in the query's order.
+    std::vector<record, cache_line_allocator<record>> records_;
+    std::vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
+    std::vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
+    std::vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store
+
+    // Strips: own_begin_[s] is the first rectangle whose lowest strip is s;
+    // visits sorted by (strip, q_lo), visit_begin_[s] the first visit of s.
+    std::vector<std::uint32_t> own_begin_, visit_keys_, visit_ids_, visit_begin_;
+
+    std::vector<part> parts_;
+    std::vector<pair_index> pairs_, spare_pairs_;
+    std::vector<std::uint32_t> counts_;
+};
+
+}  // namespace obbsat::detail

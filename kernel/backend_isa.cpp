@@ -16,6 +16,7 @@
 #include "sat4_centered_lanes.hpp"
 #include "sat4_double_lanes.hpp"
 #include "sat4_lanes.hpp"
+#include "strip_sweep_lanes.hpp"
 
 #ifndef OBBSAT_ISA_NAME
 #error "OBBSAT_ISA_NAME must name the backend of this translation unit"
@@ -83,7 +84,8 @@ constexpr kernel_table table_of(type_list<Rows...>) {
     return kernel_table{{kernels_of_row<Rows>()...},
                         {pose_kernels_of_row<Rows>()...},
                         fused_multiply_add_lanes,
-                        pose_corners_batch<isa_arch>};
+                        pose_corners_batch<isa_arch>,
+                        strip_sweep_lanes<isa_arch>};
 }
 
 }  // namespace

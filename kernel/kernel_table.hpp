@@ -5,6 +5,7 @@
 
 #include "pose_soa_view.hpp"
 #include "soa_view.hpp"
+#include "strip_view.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
@@ -75,6 +76,7 @@ struct kernel_table {
     pose_method_kernels pose_methods[method_count];  ///< the same rows, on poses
     fused_multiply_add_fn fused_multiply_add;
     pose_corners_fn pose_corners;
+    strip_sweep_fn strip_sweep;  ///< the scene queries' broadphase, one strip
 
     /// The entry points of `m` on corners; the caller has checked is_method.
     const method_kernels& of(method m) const { return methods[static_cast<unsigned>(m)]; }

@@ -4,6 +4,7 @@
 #include "method_check.hpp"
 #include "pair_sort.hpp"
 #include "radix_sort.hpp"
+#include "strip_view.hpp"
 #include "thread_pool.hpp"
 
 #include <obbsat/error.hpp>
@@ -84,11 +85,7 @@ double clamp_finite(float x) {
 
 pair_search::pair_search(const collide_options& options) : options_(options) {}
 
-void pair_search::compute_bounds(const query_input& input, std::size_t parts) {
-    lo_x_.resize(n_);
-    lo_y_.resize(n_);
-    hi_x_.resize(n_);
-    hi_y_.resize(n_);
+void pair_search::measure_extent(const query_input& input, std::size_t parts) {
     struct partial {
         double x_low = std::numeric_limits<double>::infinity();
         double x_high = -std::numeric_limits<double>::infinity();
@@ -99,26 +96,29 @@ void pair_search::compute_bounds(const query_input& input, std::size_t parts) {
     std::vector<partial> partials(parts);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
-        partial& p = partials[share];
         float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
-        double height_sum = 0;
+        float height_sum = 0;
+        double total = 0;
+        // Heights are summed in float over short runs and in double across them.
+        constexpr std::size_t run = 256;
         for (std::size_t i = begin; i < end; ++i) {
             const ref::box_bounds b = bounds_of_record(kind_, record_at(input, i));
-            lo_x_[i] = b.lo_x;
-            lo_y_[i] = b.lo_y;
-            hi_x_[i] = b.hi_x;
-            hi_y_[i] = b.hi_y;
             x_low = std::min(x_low, b.lo_x);
             x_high = std::max(x_high, b.hi_x);
             y_low = std::min(y_low, b.lo_y);
             y_high = std::max(y_high, b.hi_y);
-            height_sum += clamp_finite(b.hi_y) - clamp_finite(b.lo_y);
+            height_sum += std::min(b.hi_y - b.lo_y, FLT_MAX / run);
+            if ((i - begin) % run == run - 1) {
+                total += static_cast<double>(height_sum);
+                height_sum = 0;
+            }
         }
+        partial& p = partials[share];
         p.x_low = clamp_finite(x_low);
         p.x_high = clamp_finite(x_high);
         p.y_low = clamp_finite(y_low);
         p.y_high = clamp_finite(y_high);
-        p.height_sum = height_sum;
+        p.height_sum = total + static_cast<double>(height_sum);
     });
     partial all;
     for (const partial& p : partials) {
@@ -132,37 +132,44 @@ void pair_search::compute_bounds(const query_input& input, std::size_t parts) {
                             all.height_sum / static_cast<double>(n_)};
 }
 
-void pair_search::order_boxes(std::size_t parts) {
+void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     const bool same_scene = have_order_ && ordered_n_ == n_ && ordered_a_count_ == a_count_ &&
                             ordered_kind_ == kind_ && ordered_self_ == self_;
     const bool keep_grid = same_scene && grid_still_fits(grid_, extent_);
     if (!keep_grid) {
         grid_ = grid_for(extent_, n_, strip_factor);
     }
-    key_by_id_.resize(n_);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
-        for (std::size_t i = begin; i < end; ++i) {
-            key_by_id_[i] = grid_.key_of(lo_x_[i], lo_y_[i]);
-        }
-    });
     keys_.resize(n_);
     order_.resize(n_);
+    const auto key_of_box = [&](std::size_t id) {
+        const ref::box_bounds b = bounds_of_record(kind_, record_at(input, id));
+        return grid_.key_of(b.lo_x, b.lo_y);
+    };
     stats_.reused_order = false;
     if (keep_grid) {
         // The last order, with this query's keys: nearly sorted when the
         // rectangles moved a little.
-        for (std::size_t k = 0; k < n_; ++k) {
-            keys_[k] = key_by_id_[order_[k]];
-        }
+        run_parts(parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(n_, share, parts);
+            constexpr std::size_t ahead = 16;
+            for (std::size_t k = begin; k < end; ++k) {
+                if (k + ahead < end) {
+                    __builtin_prefetch(record_at(input, order_[k + ahead]));
+                }
+                keys_[k] = key_of_box(order_[k]);
+            }
+        });
         stats_.reused_order = repair_sort(keys_.data(), order_.data(), n_, 4 * n_);
     }
     if (!stats_.reused_order) {
-        for (std::size_t i = 0; i < n_; ++i) {
-            keys_[i] = key_by_id_[i];
-            order_[i] = static_cast<std::uint32_t>(i);
-        }
-        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), spare_keys_, spare_values_);
+        run_parts(parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(n_, share, parts);
+            for (std::size_t i = begin; i < end; ++i) {
+                keys_[i] = key_of_box(i);
+                order_[i] = static_cast<std::uint32_t>(i);
+            }
+        });
+        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_);
     }
     have_order_ = true;
     ordered_n_ = n_;
@@ -228,7 +235,7 @@ void pair_search::collect_visits() {
             ++v;
         }
     }
-    radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), spare_keys_, spare_values_);
+    radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_);
     visit_begin_.assign(strips + 1, 0);
     for (std::size_t i = 0; i < visits; ++i) {
         ++visit_begin_[(visit_keys_[i] >> q_bits) + 1];
@@ -255,24 +262,22 @@ void pair_search::flush_candidates(part& p) const {
                                             count, p.verdicts.data());
     }
     p.tested += count;
+    const std::size_t had = p.found.size();
+    p.found.resize(had + count);
+    pair_index* out = p.found.data() + had;
+    std::size_t kept = 0;
+    const auto offset = static_cast<std::uint32_t>(a_count_);
     for (std::size_t i = 0; i < count; ++i) {
-        if (p.verdicts[i] == 0) {
-            continue;
-        }
-        std::uint32_t a = order_[p.candidates[i].a];
-        std::uint32_t b = order_[p.candidates[i].b];
-        if (self_) {
-            if (a > b) {
-                std::swap(a, b);
-            }
-        } else {
-            if (a >= a_count_) {
-                std::swap(a, b);
-            }
-            b -= static_cast<std::uint32_t>(a_count_);
-        }
-        p.found.push_back(pair_index{a, b});
+        const std::uint32_t x = order_[p.candidates[i].a];
+        const std::uint32_t y = order_[p.candidates[i].b];
+        // Within one store: the smaller index first. Across two: the first
+        // store's index first, the second's counted from its own start.
+        const bool swap = self_ ? x > y : x >= offset;
+        out[kept].a = swap ? y : x;
+        out[kept].b = (swap ? x : y) - (self_ ? 0 : offset);
+        kept += p.verdicts[i] != 0 ? 1u : 0u;
     }
+    p.found.resize(had + kept);
     p.candidate_count = 0;
 }
 
@@ -287,57 +292,62 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
     if (m < 2) {
         return;
     }
-    if (p.q_lo.size() < m) {
-        for (auto* v : {&p.q_lo, &p.q_hi, &p.id}) {
-            v->resize(m);
+    const std::size_t room = m + strip_padding;
+    if (p.q_lo.size() < room) {
+        p.id.resize(room);
+        for (auto* v : {&p.q_lo, &p.q_hi, &p.starts, &p.store, &p.lo_x, &p.lo_y, &p.hi_x, &p.hi_y}) {
+            v->resize(room);
         }
-        for (auto* v : {&p.lo_x, &p.lo_y, &p.hi_x, &p.hi_y}) {
-            v->resize(m);
-        }
-        p.own.resize(m);
-        p.side.resize(m);
     }
+    float* const q_lo = p.q_lo.data();
+    float* const q_hi = p.q_hi.data();
+    std::int32_t* const ids = p.id.data();
+    float* const starts = p.starts.data();
+    float* const store = p.store.data();
+    float* const lo_x = p.lo_x.data();
+    float* const lo_y = p.lo_y.data();
+    float* const hi_x = p.hi_x.data();
+    float* const hi_y = p.hi_y.data();
+    const std::uint32_t* const visit_keys = visit_keys_.data();
+    const std::uint32_t* const visit_ids = visit_ids_.data();
+    const std::uint32_t q_mask = grid_.q_max;
     std::size_t o = own_begin;
     std::size_t v = visit_begin;
     for (std::size_t e = 0; e < m; ++e) {
-        const bool take_own = v == visit_end || (o < own_end && q_lo_[o] <= (visit_keys_[v] & grid_.q_max));
-        const std::size_t k = take_own ? o++ : visit_ids_[v++];
-        p.q_lo[e] = q_lo_[k];
-        p.q_hi[e] = q_hi_[k];
-        p.id[e] = static_cast<std::uint32_t>(k);
-        p.lo_x[e] = in_lo_x_[k];
-        p.lo_y[e] = in_lo_y_[k];
-        p.hi_x[e] = in_hi_x_[k];
-        p.hi_y[e] = in_hi_y_[k];
-        p.own[e] = take_own ? 1 : 0;
-        p.side[e] = side_[k];
+        const bool take_own = v == visit_end || (o < own_end && q_lo_[o] <= (visit_keys[v] & q_mask));
+        const std::size_t k = take_own ? o++ : visit_ids[v++];
+        q_lo[e] = static_cast<float>(q_lo_[k]);
+        q_hi[e] = static_cast<float>(q_hi_[k]);
+        ids[e] = static_cast<std::int32_t>(k);
+        starts[e] = take_own ? 1.0f : 0.0f;
+        store[e] = side_[k] != 0 ? 1.0f : 0.0f;
+        lo_x[e] = in_lo_x_[k];
+        lo_y[e] = in_lo_y_[k];
+        hi_x[e] = in_hi_x_[k];
+        hi_y[e] = in_hi_y_[k];
     }
-    // Sweep: each entry against the later entries that may overlap it in x.
-    pair_index* candidates = p.candidates.data();
-    std::size_t count = p.candidate_count;
-    const bool cross = !self_;
-    for (std::size_t e = 0; e + 1 < m; ++e) {
-        const std::uint32_t q_hi = p.q_hi[e];
-        const float lo_x = p.lo_x[e];
-        const float hi_x = p.hi_x[e];
-        const float lo_y = p.lo_y[e];
-        const float hi_y = p.hi_y[e];
-        const std::uint8_t own = p.own[e];
-        const std::uint8_t side = p.side[e];
-        const std::uint32_t id = p.id[e];
-        for (std::size_t f = e + 1; f < m && p.q_lo[f] <= q_hi; ++f) {
-            const bool hit = (p.lo_x[f] <= hi_x) & (p.hi_x[f] >= lo_x) & (p.lo_y[f] <= hi_y) &
-                             (p.hi_y[f] >= lo_y) & ((own | p.own[f]) != 0) & (!cross | (side != p.side[f]));
-            candidates[count] = pair_index{id, p.id[f]};
-            count += hit ? 1 : 0;
-            if (count == candidate_block) {
-                p.candidate_count = count;
-                flush_candidates(p);
-                count = 0;
-            }
+    for (std::size_t e = m; e < room; ++e) {
+        q_lo[e] = std::numeric_limits<float>::infinity();
+        q_hi[e] = 0;
+        ids[e] = 0;
+        starts[e] = 0;
+        store[e] = 0;
+        lo_x[e] = std::numeric_limits<float>::infinity();
+        lo_y[e] = 0;
+        hi_x[e] = 0;
+        hi_y[e] = 0;
+    }
+    const strip_view view{q_lo, q_hi, ids, starts, store, lo_x, lo_y, hi_x, hi_y, m, !self_};
+    const strip_sweep_fn sweep_kernel = kernels_for(ran_).strip_sweep;
+    sweep_cursor cursor;
+    while (cursor.e + 1 < m) {
+        const std::size_t before = p.candidate_count;
+        p.candidate_count +=
+            sweep_kernel(view, cursor, p.candidates.data() + before, candidate_block - before);
+        if (cursor.e + 1 < m) {
+            flush_candidates(p);
         }
     }
-    p.candidate_count = count;
 }
 
 void pair_search::sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit) {
@@ -423,10 +433,10 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     }
     const std::size_t parts = parts_for(n_, options_.threads);
     auto start = clock_type::now();
-    compute_bounds(input, parts);
+    measure_extent(input, parts);
+    order_boxes(input, parts);
     stats_.bounds_seconds = seconds_since(start);
     start = clock_type::now();
-    order_boxes(parts);
     copy_records(input, parts);
     collect_visits();
     stats_.order_seconds = seconds_since(start);
@@ -439,20 +449,15 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
 }
 
 const std::vector<pair_index>& pair_search::collect(const query_input& input) {
-    pairs_.clear();
     run(input, pair_chunk_sink{});
     const auto start = clock_type::now();
-    std::size_t total = 0;
+    std::vector<const std::vector<pair_index>*> sources;
     for (const part& p : parts_) {
-        total += p.found.size();
+        sources.push_back(&p.found);
     }
-    if (n_ >= 2) {
-        pairs_.reserve(total);
-        for (part& p : parts_) {
-            pairs_.insert(pairs_.end(), p.found.begin(), p.found.end());
-            p.found.clear();
-        }
-        sort_pairs(pairs_, self_ ? n_ : a_count_, spare_pairs_, counts_);
+    sort_pairs(sources, self_ ? n_ : a_count_, pairs_, spare_pairs_, counts_);
+    for (part& p : parts_) {
+        p.found.clear();
     }
     stats_.pairs = pairs_.size();
     stats_.output_seconds = seconds_since(start);

@@ -20,6 +20,7 @@
 //      reordered records; the colliding ones are mapped back.
 #pragma once
 
+#include "radix_sort.hpp"
 #include "strip_grid.hpp"
 
 #include <obbsat/collide.hpp>
@@ -66,10 +67,9 @@ private:
     struct part {
         std::uint32_t first_strip = 0;
         std::uint32_t end_strip = 0;
-        // One strip's entries, merged by quantized lo_x.
-        std::vector<std::uint32_t> q_lo, q_hi, id;
-        std::vector<float> lo_x, lo_y, hi_x, hi_y;
-        std::vector<std::uint8_t> own, side;
+        // One strip's entries, merged by quantized lo_x (see strip_view.hpp).
+        std::vector<std::int32_t> id;
+        std::vector<float> q_lo, q_hi, starts, store, lo_x, lo_y, hi_x, hi_y;
         // Candidates in the query's order, and the kernel's verdicts on them.
         std::vector<pair_index> candidates;
         std::size_t candidate_count = 0;
@@ -80,8 +80,8 @@ private:
         std::size_t slow_path = 0;
     };
 
-    void compute_bounds(const query_input& input, std::size_t parts);
-    void order_boxes(std::size_t parts);
+    void measure_extent(const query_input& input, std::size_t parts);
+    void order_boxes(const query_input& input, std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
     void collect_visits();
     void sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
@@ -104,13 +104,11 @@ private:
     store_kind ordered_kind_ = store_kind::poses;
     bool ordered_self_ = true;
 
-    // Per rectangle, in the caller's order.
-    std::vector<float> lo_x_, lo_y_, hi_x_, hi_y_;
-    std::vector<std::uint32_t> key_by_id_;
     bounds_extent extent_{};
 
     // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
-    std::vector<std::uint32_t> keys_, order_, spare_keys_, spare_values_;
+    std::vector<std::uint32_t> keys_, order_;
+    radix_buffer packed_, spare_;
 
     // Per rectangle, in the query's order.
     std::vector<record, cache_line_allocator<record>> records_;

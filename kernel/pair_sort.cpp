@@ -4,32 +4,56 @@
 
 namespace obbsat::detail {
 
-void sort_pairs(std::vector<pair_index>& pairs, std::size_t a_count, std::vector<pair_index>& spare,
-                std::vector<std::uint32_t>& counts) {
-    const std::size_t n = pairs.size();
-    const auto by_a_then_b = [](const pair_index& x, const pair_index& y) {
-        return x.a < y.a || (x.a == y.a && x.b < y.b);
-    };
-    // A comparison sort wins while the pairs are few against the buckets.
-    if (n < 64 || n < a_count / 8) {
-        std::sort(pairs.begin(), pairs.end(), by_a_then_b);
+namespace {
+
+constexpr unsigned bucket_bits = 8;
+
+unsigned bits_for(std::size_t largest) {
+    unsigned bits = 0;
+    while (bits < 64 && (largest >> bits) != 0) {
+        ++bits;
+    }
+    return bits;
+}
+
+/// Sorts pairs[0, n), all of whose a share their high bits, by a then b:
+/// a counting sort on the low `low_bits` of a through `spare`, then an
+/// insertion sort on b within each run of equal a.
+void sort_bucket(pair_index* pairs, std::size_t n, unsigned low_bits, std::vector<pair_index>& spare,
+                 std::vector<std::uint32_t>& counts) {
+    if (n < 2) {
         return;
     }
-    counts.assign(a_count + 1, 0);
-    for (const pair_index& p : pairs) {
-        ++counts[p.a + 1];
+    const std::uint32_t mask = (std::uint32_t{1} << low_bits) - 1;
+    if (n < 32) {
+        std::sort(pairs, pairs + n, [](const pair_index& x, const pair_index& y) {
+            return x.a < y.a || (x.a == y.a && x.b < y.b);
+        });
+        return;
     }
-    for (std::size_t i = 1; i <= a_count; ++i) {
-        counts[i] += counts[i - 1];
+    const std::size_t values = std::size_t{1} << low_bits;
+    counts.assign(values + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        ++counts[(pairs[i].a & mask) + 1];
+    }
+    for (std::size_t v = 0; v < values; ++v) {
+        counts[v + 1] += counts[v];
     }
     spare.resize(n);
-    for (const pair_index& p : pairs) {
-        spare[counts[p.a]++] = p;
+    for (std::size_t i = 0; i < n; ++i) {
+        spare[counts[pairs[i].a & mask]++] = pairs[i];
     }
-    // counts[a] is now the end of run a; runs are short, so insertion sort.
+    // counts[v] is now the end of the run of low bits v.
     std::size_t begin = 0;
-    for (std::size_t a = 0; a < a_count; ++a) {
-        const std::size_t end = counts[a];
+    for (std::size_t v = 0; v < values; ++v) {
+        const std::size_t end = counts[v];
+        if (end - begin > 32) {
+            std::sort(spare.begin() + static_cast<std::ptrdiff_t>(begin),
+                      spare.begin() + static_cast<std::ptrdiff_t>(end),
+                      [](const pair_index& x, const pair_index& y) { return x.b < y.b; });
+            begin = end;
+            continue;
+        }
         for (std::size_t i = begin + 1; i < end; ++i) {
             const pair_index p = spare[i];
             std::size_t j = i;
@@ -41,7 +65,44 @@ void sort_pairs(std::vector<pair_index>& pairs, std::size_t a_count, std::vector
         }
         begin = end;
     }
-    pairs.swap(spare);
+    std::copy(spare.begin(), spare.begin() + static_cast<std::ptrdiff_t>(n), pairs);
+}
+
+}  // namespace
+
+void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std::size_t a_count,
+                std::vector<pair_index>& out, std::vector<pair_index>& spare, std::vector<std::uint32_t>& counts) {
+    std::size_t n = 0;
+    for (const auto* source : sources) {
+        n += source->size();
+    }
+    out.resize(n);
+    if (n == 0) {
+        return;
+    }
+    const unsigned a_bits = bits_for(a_count > 0 ? a_count - 1 : 0);
+    const unsigned high_shift = a_bits > bucket_bits ? a_bits - bucket_bits : 0;
+    const std::size_t buckets = (a_count > 0 ? (a_count - 1) >> high_shift : 0) + 1;
+    // Pass 1: scatter by the high bits of a.
+    std::vector<std::size_t> begin(buckets + 1, 0);
+    for (const auto* source : sources) {
+        for (const pair_index& p : *source) {
+            ++begin[(p.a >> high_shift) + 1];
+        }
+    }
+    for (std::size_t k = 0; k < buckets; ++k) {
+        begin[k + 1] += begin[k];
+    }
+    std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
+    for (const auto* source : sources) {
+        for (const pair_index& p : *source) {
+            out[next[p.a >> high_shift]++] = p;
+        }
+    }
+    // Pass 2: each bucket on its own.
+    for (std::size_t k = 0; k < buckets; ++k) {
+        sort_bucket(out.data() + begin[k], begin[k + 1] - begin[k], high_shift, spare, counts);
+    }
 }
 
 }  // namespace obbsat::detail

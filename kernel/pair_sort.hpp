@@ -1,5 +1,7 @@
-// Sorting a query's pairs by (a, b): a counting sort on a, then each run of
-// equal a (a handful of pairs in a scene) sorted on b. Internal to the library.
+// Sorting a query's pairs by (a, b). One pass scatters the pairs by the high
+// bits of a into at most 256 buckets; each bucket, small enough for the
+// cache, is then sorted by the low bits of a (a counting sort) and each run
+// of equal a (a handful of pairs in a scene) by b. Internal to the library.
 #pragma once
 
 #include <obbsat/rect.hpp>
@@ -10,9 +12,9 @@
 
 namespace obbsat::detail {
 
-/// Sorts `pairs` by a, then b; every a must be < a_count. `spare` and
-/// `counts` are working memory, kept by the caller between calls.
-void sort_pairs(std::vector<pair_index>& pairs, std::size_t a_count, std::vector<pair_index>& spare,
-                std::vector<std::uint32_t>& counts);
+/// Every pair of every source, sorted by a then b, into `out`; every a must
+/// be < a_count. `spare` and `counts` are working memory kept between calls.
+void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std::size_t a_count,
+                std::vector<pair_index>& out, std::vector<pair_index>& spare, std::vector<std::uint32_t>& counts);
 
 }  // namespace obbsat::detail

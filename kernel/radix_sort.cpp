@@ -2,39 +2,39 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 
 namespace obbsat::detail {
 
 namespace {
 
-constexpr unsigned digit_bits = 11;
+constexpr unsigned digit_bits = 8;
 constexpr std::size_t digit_values = std::size_t{1} << digit_bits;
 
 }  // namespace
 
-void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
-                std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values) {
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
+                radix_buffer& spare) {
     if (n < 2) {
         return;
     }
-    if (spare_keys.size() < n) {
-        spare_keys.resize(n);
+    if (packed.size() < n) {
+        packed.resize(n);
     }
-    if (spare_values.size() < n) {
-        spare_values.resize(n);
+    if (spare.size() < n) {
+        spare.resize(n);
     }
-    std::uint32_t* from_keys = keys;
-    std::uint32_t* from_values = values;
-    std::uint32_t* to_keys = spare_keys.data();
-    std::uint32_t* to_values = spare_values.data();
+    std::uint64_t* from = packed.data();
+    std::uint64_t* to = spare.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
+    }
     std::array<std::size_t, digit_values> count{};
-    for (unsigned shift = 0; shift < key_bits; shift += digit_bits) {
+    for (unsigned shift = 32; shift < 32 + key_bits; shift += digit_bits) {
         count.fill(0);
         for (std::size_t i = 0; i < n; ++i) {
-            ++count[(from_keys[i] >> shift) & (digit_values - 1)];
+            ++count[(from[i] >> shift) & (digit_values - 1)];
         }
-        if (count[(from_keys[0] >> shift) & (digit_values - 1)] == n) {
+        if (count[(from[0] >> shift) & (digit_values - 1)] == n) {
             continue;  // every key has this digit: the pass would move nothing
         }
         std::size_t sum = 0;
@@ -44,16 +44,13 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
             sum += here;
         }
         for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t slot = count[(from_keys[i] >> shift) & (digit_values - 1)]++;
-            to_keys[slot] = from_keys[i];
-            to_values[slot] = from_values[i];
+            to[count[(from[i] >> shift) & (digit_values - 1)]++] = from[i];
         }
-        std::swap(from_keys, to_keys);
-        std::swap(from_values, to_values);
+        std::swap(from, to);
     }
-    if (from_keys != keys) {
-        std::memcpy(keys, from_keys, n * sizeof(std::uint32_t));
-        std::memcpy(values, from_values, n * sizeof(std::uint32_t));
+    for (std::size_t i = 0; i < n; ++i) {
+        keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
+        values[i] = static_cast<std::uint32_t>(from[i]);
     }
 }
 

@@ -1,7 +1,11 @@
 // Sorting (key, value) pairs of 32-bit integers by key, stably: a least
-// significant digit radix sort, 11 bits per pass, skipping passes whose digit
-// is the same for every key. Internal to the library.
+// significant digit radix sort over the pairs packed into 64-bit words, 8 bits
+// per pass (256 write streams, few enough for the TLB and the store buffers),
+// skipping passes whose digit is the same for every key, in memory backed by
+// huge pages where the OS offers them. Internal to the library.
 #pragma once
+
+#include <obbsat/rect_records.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -9,11 +13,14 @@
 
 namespace obbsat::detail {
 
+/// Working memory of radix_sort, kept by the caller between calls.
+using radix_buffer = std::vector<std::uint64_t, cache_line_allocator<std::uint64_t>>;
+
 /// Sorts keys[0, n) and values[0, n) together by key, stably; `key_bits` is
-/// the number of low bits that can be non-zero. spare_keys and spare_values
-/// are grown to n and used as the other half of each pass.
-void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
-                std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values);
+/// the number of low bits that can be non-zero. `packed` and `spare` are
+/// grown to n.
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
+                radix_buffer& spare);
 
 /// Sorts keys[0, n) and values[0, n) by key, stably, when they are nearly
 /// sorted already: an insertion sort that gives up (returning false, with the

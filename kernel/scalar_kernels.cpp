@@ -72,6 +72,30 @@ std::size_t pose_stream_soa_pairs(const pose_soa_view& a, const pose_soa_view& b
     return exact_count<SlowPath>(count);
 }
 
+/// The sweep of one strip (strip_view.hpp), one entry pair at a time.
+std::size_t strip_sweep(const strip_view& strip, sweep_cursor& cursor, pair_index* out, std::size_t capacity) {
+    const std::size_t m = strip.size;
+    std::size_t count = 0;
+    std::size_t e = cursor.e;
+    std::size_t f = cursor.f;
+    for (; e + 1 < m; ++e, f = e + 1) {
+        for (; f < m && strip.q_lo[f] <= strip.q_hi[e]; ++f) {
+            if (capacity - count < strip_padding) {
+                cursor = sweep_cursor{e, f};
+                return count;
+            }
+            const bool one_starts = strip.starts[e] > 0.0f || strip.starts[f] > 0.0f;
+            const bool mixes = !strip.cross || strip.store[e] != strip.store[f];
+            if (one_starts && mixes && strip.lo_x[f] <= strip.hi_x[e] && strip.hi_x[f] >= strip.lo_x[e] &&
+                strip.lo_y[f] <= strip.hi_y[e] && strip.hi_y[f] >= strip.lo_y[e]) {
+                out[count++] = pair_index{static_cast<std::uint32_t>(strip.id[e]), static_cast<std::uint32_t>(strip.id[f])};
+            }
+        }
+    }
+    cursor = sweep_cursor{m, m + 1};
+    return count;
+}
+
 void pose_corners(const float* records, std::size_t count, rect* out) {
     for (std::size_t i = 0; i < count; ++i) {
         out[i] = ref::corners_of(pose_record_at(records, i));
@@ -111,7 +135,7 @@ constexpr pose_method_kernels pose_kernels_of_row() {
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
     return kernel_table{
-        {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners};
+        {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners, strip_sweep};
 }
 
 }  // namespace

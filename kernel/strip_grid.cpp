@@ -41,7 +41,10 @@ strip_grid grid_for(const bounds_extent& extent, std::size_t boxes, double strip
     grid.strips = static_cast<std::uint32_t>(strips);
     grid.y_scale = span > 0 ? static_cast<double>(grid.strips) / span : 1;
     grid.strip_bits = bits_for(grid.strips - 1);
-    grid.q_bits = std::min(24u, 32u - grid.strip_bits);
+    // Enough x resolution for the sweep (a scene's width in 2^15 steps is far
+    // finer than its rectangles), few enough bits that a key sorts in three
+    // passes of eight bits.
+    grid.q_bits = std::min(16u, std::max(8u, 24u - std::min(24u, grid.strip_bits)));
     grid.q_max = (std::uint32_t{1} << grid.q_bits) - 1;
     const double x_span = grid.x_high - grid.x_low;
     grid.x_scale = x_span > 0 ? static_cast<double>(grid.q_max) / x_span : 0;

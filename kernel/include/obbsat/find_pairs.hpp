@@ -41,8 +41,8 @@ struct find_pairs_stats {
     std::size_t pairs = 0;       ///< pairs reported
     std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
-    double bounds_seconds = 0;   ///< bounds and sort keys
-    double order_seconds = 0;    ///< sorting, reordering the records
+    double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
+    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
     double output_seconds = 0;   ///< mapping back to the caller's indices and sorting
 };

@@ -28,6 +28,9 @@
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace obbsat::ref {
 
 /// Closed axis-aligned bounds [lo_x, hi_x] x [lo_y, hi_y].
@@ -38,11 +41,34 @@ struct box_bounds {
     float hi_y;
 };
 
+// Both are defined here, inline, so that the scene queries' loops over
+// millions of rectangles compile them into their own vector code; the
+// operations are the contract's, in its order, wherever they are inlined.
+
 /// The exact bounds of the quad `r` (its corners' least and greatest x and y).
-box_bounds bounds_of(const rect& r);
+inline box_bounds bounds_of(const rect& r) {
+    return box_bounds{std::min(std::min(r.ul.x, r.ur.x), std::min(r.lr.x, r.ll.x)),
+                      std::min(std::min(r.ul.y, r.ur.y), std::min(r.lr.y, r.ll.y)),
+                      std::max(std::max(r.ul.x, r.ur.x), std::max(r.lr.x, r.ll.x)),
+                      std::max(std::max(r.ul.y, r.ur.y), std::max(r.lr.y, r.ll.y))};
+}
 
 /// Bounds that contain the exact point set of `p`, by the steps above.
-box_bounds bounds_of(const rect_pose& p);
+inline box_bounds bounds_of(const rect_pose& p) {
+    const float ac = std::fabs(p.rotation.x);
+    const float as = std::fabs(p.rotation.y);
+    const float hx = p.half_extents.x;
+    const float hy = p.half_extents.y;
+    // Step 1: the half widths of the exact set along x and y.
+    const float ex = (ac * hx) + (as * hy);
+    const float ey = (as * hx) + (ac * hy);
+    // Step 2: the margins covering the rounding of steps 1 and 3.
+    const float mx = ((std::fabs(p.center.x) + ex) * 0x1p-21f) + 0x1p-140f;
+    const float my = ((std::fabs(p.center.y) + ey) * 0x1p-21f) + 0x1p-140f;
+    // Step 3.
+    return box_bounds{(p.center.x - ex) - mx, (p.center.y - ey) - my, (p.center.x + ex) + mx,
+                      (p.center.y + ey) + my};
+}
 
 /// True iff the closed bounds share a point (touching bounds overlap).
 inline bool bounds_overlap(const box_bounds& a, const box_bounds& b) {

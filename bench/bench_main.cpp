@@ -7,6 +7,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <exception>
 #include <iostream>
 #include <string>
 
@@ -48,6 +49,27 @@ int main(int argc, char** argv) {
     std::cerr << "obbsat_bench: skipping peer/boost_geometry_*: Boost.Geometry was not found when "
                  "obbsat was configured\n";
 #endif
+
+    // Whole scenes: obbsat's queries, then its peers on the same scenes.
+    try {
+        obbsat_bench::register_scene_benchmarks();
+        obbsat_bench::register_grid_scene_peer();
+#if OBBSAT_BENCH_WITH_BOX2D
+        obbsat_bench::register_box2d_scene_peer(std::cerr);
+#else
+        std::cerr << "obbsat_bench: skipping peer_scene/box2d/*, peer_frame/box2d/*: Box2D was not found "
+                     "when obbsat was configured\n";
+#endif
+#if OBBSAT_BENCH_WITH_BOOST
+        obbsat_bench::register_rtree_scene_peer();
+#else
+        std::cerr << "obbsat_bench: skipping peer_scene/rtree/*, peer_frame/rtree/*: Boost.Geometry was not "
+                     "found when obbsat was configured\n";
+#endif
+    } catch (const std::exception& e) {
+        std::cerr << "obbsat_bench: " << e.what() << "\n";
+        return 1;
+    }
 
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

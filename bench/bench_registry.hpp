@@ -25,6 +25,24 @@ void register_box2d_peers();
 /// peer/boost_geometry_intersects/pairs:<N>.
 void register_boost_geometry_peers();
 
+/// Whole-scene queries, obbsat's (bench_scene.cpp): scene/<method>/<store>/<tail>
+/// (find_pairs, a fresh query each time) and frame/<method>/<store>/<tail> (one
+/// pair_finder, the boxes moving between calls) for exact and local on poses,
+/// sat4 and exact on corners, where <tail> is
+/// boxes:<N>/sizes:<uniform|mixed>/threads:<T> (scene_harness.hpp).
+void register_scene_benchmarks();
+
+/// peer_scene/grid/<tail> and peer_frame/grid/<tail>: a uniform grid, then obbsat's exact narrowphase.
+void register_grid_scene_peer();
+
+/// peer_scene/box2d/<tail> and peer_frame/box2d/<tail>: b2BroadPhase and b2CollidePolygons,
+/// threads:1, up to 10^5 boxes; one line on `skipped` per box count left out.
+void register_box2d_scene_peer(std::ostream& skipped);
+
+/// peer_scene/rtree/<tail> and peer_frame/rtree/<tail>: Boost.Geometry's R-tree,
+/// then obbsat's exact narrowphase.
+void register_rtree_scene_peer();
+
 /// Sets pairs_per_second and ns_per_pair from the real time of the run:
 /// `pairs` are decided per iteration.
 inline void set_pair_rate_counters(benchmark::State& state, std::size_t pairs) {

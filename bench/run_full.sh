@@ -10,8 +10,11 @@
 #
 # Usage: bench/run_full.sh [extra obbsat_bench arguments, e.g. --benchmark_filter=...]
 # Environment: OBBSAT_BUILD_DIR (default build-release), OBBSAT_BENCH_JOBS (default 2).
-# About 10 minutes on 2 cores with three methods (each adds about 2.5); give it
-# an otherwise idle machine, since the 2-thread rows need both cores.
+# About 10 minutes on 2 cores with three methods (each adds about 2.5), before
+# the whole-scene rows (scene/, frame/, peer_scene/, peer_frame/), whose 10^6
+# and 4·10^6-box rows add more, not yet measured (OBBSAT_BENCH_SCENE_BOXES picks
+# their sizes); give it an otherwise idle machine, since the 2-thread rows
+# need both cores.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -8,7 +8,10 @@ single runs. For each obbsat benchmark: Mpairs/s and ns/pair, the speedup over
 the scalar backend of the same method, mode, store, size, threads and density,
 and over Box2D's b2CollidePolygons on the same pairs (single-threaded, so a
 threads:2 row's figure includes the second core). Peers get a table of their
-own with their agreement with the sat4 scalar reference.
+own with their agreement with the sat4 scalar reference. Whole-scene rows
+(scene/, frame/, peer_scene/, peer_frame/) get a table of ns per box, pairs
+and candidates per box, and the time against obbsat's exact on poses for the
+same query, scene and threads.
 """
 
 import json
@@ -53,6 +56,16 @@ def parse_name(run_name):
             "density": fields.get("density", "typical"),
             "store": fields.get("store", "soa" if parts[2] == "stream" else "records"),
         }
+    if len(parts) >= 6 and parts[0] in ("scene", "frame"):
+        fields = parse_fields(parts[3:], run_name)
+        return {"kind": "scene", "query": "cold" if parts[0] == "scene" else "frame",
+                "who": f"{parts[1]}/{parts[2]}", "boxes": int(fields["boxes"]), "sizes": fields["sizes"],
+                "threads": int(fields["threads"])}
+    if len(parts) >= 5 and parts[0] in ("peer_scene", "peer_frame"):
+        fields = parse_fields(parts[2:], run_name)
+        return {"kind": "scene", "query": "cold" if parts[0] == "peer_scene" else "frame",
+                "who": f"peer {parts[1]}", "boxes": int(fields["boxes"]), "sizes": fields["sizes"],
+                "threads": int(fields["threads"])}
     if len(parts) >= 3 and parts[0] == "peer":
         fields = parse_fields(parts[2:], run_name)
         return {"kind": "peer", "peer": parts[1], "pairs": int(fields["pairs"])}
@@ -101,8 +114,12 @@ def main(argv):
 
     collide = {}
     peers = {}
+    scenes = {}
     for row in rows:
         name = parse_name(row.get("run_name", row.get("name", "")))
+        if name is not None and name["kind"] == "scene" and "ns_per_box" in row:
+            scenes[(name["query"], name["boxes"], name["sizes"], name["threads"], name["who"])] = row
+            continue
         if name is None or "pairs_per_second" not in row:
             continue
         if name["kind"] == "collide":
@@ -163,6 +180,28 @@ def main(argv):
                        f"| {ratio_text(rate_of(row), rate_of(base))} |")
         out.append("")
 
+    if scenes:
+        out.append("## Whole scenes: poses to colliding pairs")
+        out.append("")
+        out.append("cold: a fresh query each time; frame: a query kept while every box moves a little. "
+                   "× exact/poses: this row's time over obbsat's exact on poses (same query, scene, threads).")
+        out.append("")
+        out.append("| query | boxes | sizes | threads | who | ms | ns/box | pairs/box | candidates/box "
+                   "| reused order | agreement | × exact/poses |")
+        out.append("|---|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|")
+        for key in sorted(scenes, key=lambda k: (k[0] != "cold", k[1], k[2], k[3], k[4].startswith("peer"), k[4])):
+            query, boxes, sizes, threads, who = key
+            row = scenes[key]
+            base = scenes.get((query, boxes, sizes, threads, "exact/poses"))
+            reused = f"{row['reused_order']:.2f}" if "reused_order" in row else "–"
+            agreement = f"{row['agreement']:.6f}" if "agreement" in row else "–"
+            versus = ratio_text(row["ns_per_box"], base["ns_per_box"] if base else None)
+            out.append(f"| {query} | {size_text(boxes)} | {sizes} | {threads} | {who} "
+                       f"| {row['ns_per_box'] * boxes * 1e-6:.2f} | {row['ns_per_box']:.1f} "
+                       f"| {row.get('pairs_per_box', float('nan')):.3f} "
+                       f"| {row.get('candidates_per_box', float('nan')):.3f} | {reused} | {agreement} | {versus} |")
+        out.append("")
+
     if errors:
         out.append("## Benchmarks that reported an error")
         out.append("")
@@ -170,7 +209,7 @@ def main(argv):
             out.append(f"- {b.get('name', '?')}: {b.get('error_message', '?')}")
         out.append("")
 
-    if not collide and not peers:
+    if not collide and not peers and not scenes:
         fail(f"{path}: no obbsat_bench results in it")
     sys.stdout.write("\n".join(out))
     return 0

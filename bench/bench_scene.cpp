@@ -1,0 +1,151 @@
+// Benchmarks of obbsat's scene queries (obbsat/find_pairs.hpp): from a
+// scene's poses, or corner records converted from them, to the list of its
+// colliding pairs, with no pair list to bring.
+//
+//   scene/<method>/<store>/...  obbsat::find_pairs, a fresh query each time
+//   frame/<method>/<store>/...  one obbsat::pair_finder across the frames
+//
+// The peers' rows (peer_scene/, peer_frame/) answer the same question on the
+// same scenes; scene_harness.hpp says how every row is timed and checked.
+#include "bench_registry.hpp"
+#include "scene_harness.hpp"
+#include "scene_workload.hpp"
+
+#include <obbsat/collide.hpp>
+#include <obbsat/find_pairs.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/rect_records.hpp>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace obbsat_bench {
+
+namespace {
+
+/// A method on one store: the one list of what the scene rows measure.
+struct scene_method {
+    obbsat::store_kind store;
+    obbsat::method test;
+};
+
+constexpr scene_method scene_methods[] = {
+    {obbsat::store_kind::poses, obbsat::method::exact},
+    {obbsat::store_kind::poses, obbsat::method::local},
+    {obbsat::store_kind::corners, obbsat::method::sat4},
+    {obbsat::store_kind::corners, obbsat::method::exact},
+};
+
+/// The store of one kind for both frames of a scene.
+template <class Store>
+struct frame_stores {
+    const Store* as_generated;
+    const Store* moved;
+
+    const Store& operator[](scene_frame f) const { return f == scene_frame::as_generated ? *as_generated : *moved; }
+};
+
+frame_stores<obbsat::pose_records> pose_frames(scene_workload& w) {
+    return {&w.poses(scene_frame::as_generated), &w.poses(scene_frame::moved)};
+}
+
+frame_stores<obbsat::rect_records> corner_frames(scene_workload& w) {
+    return {&w.corners(scene_frame::as_generated), &w.corners(scene_frame::moved)};
+}
+
+/// A fresh find_pairs per call. find_pairs says nothing of its candidates, so
+/// their count comes from one pair_finder on the same frame, before timing.
+template <class Store>
+class cold_query final : public scene_query {
+public:
+    cold_query(frame_stores<Store> stores, const obbsat::collide_options& options, std::size_t candidates)
+        : stores_(stores), options_(options), candidates_(candidates) {}
+
+    const std::vector<obbsat::pair_index>& find(scene_frame f) override {
+        pairs_ = obbsat::find_pairs(stores_[f], options_);
+        return pairs_;
+    }
+    std::size_t candidates() const override { return candidates_; }
+
+private:
+    frame_stores<Store> stores_;
+    obbsat::collide_options options_;
+    std::size_t candidates_;
+    std::vector<obbsat::pair_index> pairs_;
+};
+
+/// One pair_finder kept across calls.
+template <class Store>
+class frame_query final : public scene_query {
+public:
+    frame_query(frame_stores<Store> stores, const obbsat::collide_options& options)
+        : stores_(stores), finder_(options) {}
+
+    const std::vector<obbsat::pair_index>& find(scene_frame f) override { return finder_.find(stores_[f]); }
+    std::size_t candidates() const override { return finder_.stats().candidates; }
+    std::optional<bool> reused_order() const override { return finder_.stats().reused_order; }
+
+private:
+    frame_stores<Store> stores_;
+    obbsat::pair_finder finder_;
+};
+
+obbsat::collide_options options_for(obbsat::method test, unsigned threads) {
+    obbsat::collide_options options;
+    options.test = test;
+    options.threads = threads;
+    return options;
+}
+
+/// The candidates of the as-generated frame, counted once per store and method.
+template <class Store>
+std::size_t cold_candidates(const frame_stores<Store>& stores, obbsat::method test) {
+    static std::map<std::tuple<const Store*, obbsat::method>, std::size_t> counted;
+    const auto key = std::make_tuple(stores.as_generated, test);
+    auto found = counted.find(key);
+    if (found == counted.end()) {
+        obbsat::pair_finder finder(options_for(test, 0));
+        finder.find(stores[scene_frame::as_generated]);
+        found = counted.emplace(key, finder.stats().candidates).first;
+    }
+    return found->second;
+}
+
+template <class Store>
+scene_query_prepare prepare_for(scene_method m, frame_stores<Store> (*stores_of)(scene_workload&)) {
+    return [m, stores_of](scene_workload& w, scene_row_kind kind) -> scene_query_factory {
+        const frame_stores<Store> stores = stores_of(w);
+        if (kind == scene_row_kind::frame) {
+            return [stores, m](unsigned threads) -> std::unique_ptr<scene_query> {
+                return std::make_unique<frame_query<Store>>(stores, options_for(m.test, threads));
+            };
+        }
+        const std::size_t candidates = cold_candidates(stores, m.test);
+        return [stores, m, candidates](unsigned threads) -> std::unique_ptr<scene_query> {
+            return std::make_unique<cold_query<Store>>(stores, options_for(m.test, threads), candidates);
+        };
+    };
+}
+
+}  // namespace
+
+void register_scene_benchmarks() {
+    for (const scene_method m : scene_methods) {
+        const std::string label = std::string(obbsat::method_name(m.test)) + "/" + obbsat::store_name(m.store);
+        scene_rows rows;
+        rows.cold_prefix = "scene/" + label;
+        rows.frame_prefix = "frame/" + label;
+        rows.thread_counts = {1, 2};
+        rows.expected = {m.store, m.test, true};
+        rows.prepare = m.store == obbsat::store_kind::poses ? prepare_for(m, pose_frames)
+                                                            : prepare_for(m, corner_frames);
+        register_scene_rows(rows);
+    }
+}
+
+}  // namespace obbsat_bench

@@ -252,29 +252,38 @@ void pair_search::flush_candidates(part& p) const {
     if (count == 0) {
         return;
     }
+    // Methods need not be symmetric (local works in the first rectangle's
+    // frame; sat4 on a degenerate quad may differ), so each candidate is put
+    // in the order the caller's pair has: within one store the smaller index
+    // first, across two the first store's rectangle first.
+    const auto offset = static_cast<std::uint32_t>(a_count_);
+    pair_index* const candidates = p.candidates.data();
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t x = order_[candidates[i].a];
+        const std::uint32_t y = order_[candidates[i].b];
+        const bool swap = self_ ? x > y : x >= offset;
+        const std::uint32_t first = candidates[i].a;
+        const std::uint32_t second = candidates[i].b;
+        candidates[i].a = swap ? second : first;
+        candidates[i].b = swap ? first : second;
+    }
     const kernel_table& table = kernels_for(ran_);
     if (kind_ == store_kind::poses) {
-        p.slow_path += table.on_poses(options_.test)
-                           .indexed(records_.data()->v, p.candidates.data(), count, p.verdicts.data());
+        p.slow_path += table.on_poses(options_.test).indexed(records_.data()->v, candidates, count, p.verdicts.data());
     } else {
         p.slow_path += table.of(options_.test)
-                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), p.candidates.data(),
-                                            count, p.verdicts.data());
+                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), candidates, count,
+                                            p.verdicts.data());
     }
     p.tested += count;
     const std::size_t had = p.found.size();
     p.found.resize(had + count);
     pair_index* out = p.found.data() + had;
     std::size_t kept = 0;
-    const auto offset = static_cast<std::uint32_t>(a_count_);
+    const std::uint32_t second_start = self_ ? 0 : offset;
     for (std::size_t i = 0; i < count; ++i) {
-        const std::uint32_t x = order_[p.candidates[i].a];
-        const std::uint32_t y = order_[p.candidates[i].b];
-        // Within one store: the smaller index first. Across two: the first
-        // store's index first, the second's counted from its own start.
-        const bool swap = self_ ? x > y : x >= offset;
-        out[kept].a = swap ? y : x;
-        out[kept].b = (swap ? x : y) - (self_ ? 0 : offset);
+        out[kept].a = order_[candidates[i].a];
+        out[kept].b = order_[candidates[i].b] - second_start;
         kept += p.verdicts[i] != 0 ? 1u : 0u;
     }
     p.found.resize(had + kept);

@@ -8,18 +8,15 @@
 // the end, so a bad line anywhere leaves the target as it was. On standard
 // output, verdicts of chunks before a bad line have already been written when
 // the error is found; the exit status says to discard them.
-#include "atomic_output.hpp"
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "csv_input.hpp"
+#include "output_target.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
 
-#include <cerrno>
-#include <cstring>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -45,14 +42,10 @@ const std::vector<option_spec>& collide_option_specs() {
     return specs;
 }
 
-// Where verdict text goes: the atomic file of --out, or standard output.
+// Verdicts as text, one '0' or '1' line per pair, to --out or standard output.
 class verdict_writer {
 public:
-    explicit verdict_writer(const std::optional<std::string_view>& out_path) {
-        if (out_path) {
-            file_ = std::make_unique<io::atomic_output>(std::string(*out_path));
-        }
-    }
+    explicit verdict_writer(const std::optional<std::string_view>& out_path) : out_(out_path) {}
 
     void write(const std::vector<std::uint8_t>& verdicts, std::size_t count) {
         text_.resize(2 * count);
@@ -60,22 +53,13 @@ public:
             text_[2 * i] = static_cast<char>('0' + verdicts[i]);
             text_[2 * i + 1] = '\n';
         }
-        if (file_) {
-            file_->write(text_.data(), text_.size());
-        } else if (!text_.empty() && std::fwrite(text_.data(), 1, text_.size(), stdout) != text_.size()) {
-            throw io::output_error(std::string("standard output: write error: ") +
-                                   std::strerror(errno));
-        }
+        out_.write(text_.data(), text_.size());
     }
 
-    void finish() {
-        if (file_) {
-            file_->commit();
-        }
-    }
+    void finish() { out_.commit(); }
 
 private:
-    std::unique_ptr<io::atomic_output> file_;
+    io::output_target out_;
     std::vector<char> text_;
 };
 

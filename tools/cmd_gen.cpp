@@ -1,6 +1,7 @@
 // obbsat gen: one hard-case suite family (of rects, or with --poses of poses)
 // written as files the collide command reads, with the exact oracle's truth
-// beside them.
+// beside them; or, with --scene, a seeded scene of poses (obbsat/pose_scene.hpp)
+// as one pose file for the pairs command.
 //
 // All or nothing: the suite and its truth are computed first, then the five
 // files are written and flushed to disk inside a fresh temporary directory;
@@ -8,13 +9,16 @@
 // exist yet is that temporary directory renamed (one atomic step); an existing
 // DIR gets each file renamed into it (each file replaced atomically, other
 // files in DIR left alone). Any error before that removes the temporary
-// directory and leaves DIR as it was.
+// directory and leaves DIR as it was. A scene is one file, written through
+// io::output_target: all or nothing at --out, else on standard output.
 #include "accuracy_commands.hpp"
 #include "atomic_output.hpp"
 #include "cli_args.hpp"
+#include "output_target.hpp"
 #include "temporary_files.hpp"
 
 #include <obbsat/oracle/classify_pairs.hpp>
+#include <obbsat/pose_scene.hpp>
 #include <obbsat/suites/family.hpp>
 #include <obbsat/suites/pose_family.hpp>
 #include <obbsat/suites/pose_suite.hpp>
@@ -23,7 +27,9 @@
 #include <array>
 #include <cerrno>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -46,10 +52,13 @@ constexpr file_set pose_file_names = {"poses.csv", "pairs.csv", "truth_class.txt
 
 const std::vector<option_spec>& gen_option_specs() {
     static const std::vector<option_spec> specs = {
-        {"out", "DIR", "directory to write the five files into; created if missing (required)"},
+        {"out", "DIR", "directory for the five files, created if missing (required); with --scene, FILE"},
         {"poses", "", "FAMILY is a pose family: write poses.csv, not rects.csv"},
         {"pairs", "N", "pairs to generate (default: 10000)"},
-        {"seed", "S", "suite seed (default: 1)"},
+        {"seed", "S", "suite or scene seed (default: 1)"},
+        {"scene", "SIZES", "uniform or mixed: write a seeded scene of poses, not a family"},
+        {"boxes", "N", "with --scene: rectangles, 1 to 4294967295 (required)"},
+        {"pairs-per-box", "D", "with --scene: colliding pairs per rectangle, about (default: 2)"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -275,6 +284,24 @@ int shape_line(char* text, std::size_t size, const rect_pose& p) {
                          static_cast<double>(p.rotation.y));
 }
 
+// The poses of a scene, one line each, handed to `out` a megabyte at a time.
+void write_pose_lines(const std::vector<rect_pose>& poses, io::output_target& out) {
+    constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
+    std::string buffer;
+    buffer.reserve(buffer_bytes + 256);
+    char text[256];
+    for (const rect_pose& p : poses) {
+        const int size = shape_line(text, sizeof text, p);
+        buffer.append(text, static_cast<std::size_t>(size));
+        buffer += '\n';
+        if (buffer.size() >= buffer_bytes) {
+            out.write(buffer.data(), buffer.size());
+            buffer.clear();
+        }
+    }
+    out.write(buffer.data(), buffer.size());
+}
+
 const std::vector<rect>& shapes_of(const suites::suite& s) { return s.rects; }
 const std::vector<rect_pose>& shapes_of(const suites::pose_suite& s) { return s.poses; }
 
@@ -348,6 +375,8 @@ void print_gen_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat gen FAMILY --out DIR [--pairs N] [--seed S]\n"
                  "       obbsat gen --poses FAMILY --out DIR [--pairs N] [--seed S]\n"
+                 "       obbsat gen --scene uniform|mixed --boxes N [--seed S] [--pairs-per-box D]\n"
+                 "                  [--out FILE]\n"
                  "\n"
                  "Writes N pairs of one hard-case suite family (pairs on or within a few float\n"
                  "steps of the boundary between separated, touching and overlapping) into DIR:\n"
@@ -379,6 +408,15 @@ void print_gen_help(std::FILE* out) {
                  "DIR appears whole in one rename, an existing DIR gets each of the five files\n"
                  "replaced and keeps its other files. On an error DIR is left as it was.\n"
                  "\n"
+                 "With --scene, no FAMILY: N rectangles at random positions and orientations in\n"
+                 "a square sized for about D colliding pairs per rectangle (make_pose_scene,\n"
+                 "obbsat/pose_scene.hpp), as one pose file, cx,cy,hx,hy,c,s per line in C99 hex\n"
+                 "floats, what 'obbsat pairs --poses' reads. uniform: half extents in [0.5, 1.5];\n"
+                 "mixed: sizes over two decades, [0.2, 20], aspect ratios in [0.3, 1]. D is from\n"
+                 "1e-6 to 1000. The same N, sizes, seed and D give the same scene. The file goes\n"
+                 "to --out FILE, all or nothing, or else to standard output; a scene takes 32\n"
+                 "bytes per rectangle in memory and about 85 bytes per line on disk.\n"
+                 "\n"
                  "options:\n",
                  family_list().c_str(), pose_family_list().c_str());
     print_options(out, gen_option_specs());
@@ -390,7 +428,9 @@ void print_gen_help(std::FILE* out) {
                  " | cmp - tiles/truth.txt\n"
                  "  obbsat gen --poses contact --out contact\n"
                  "  obbsat collide --poses contact/poses.csv --pairs contact/pairs.csv --method exact"
-                 " | cmp - contact/truth.txt\n");
+                 " | cmp - contact/truth.txt\n"
+                 "  obbsat gen --scene mixed --boxes 1000000 --seed 7 --out scene.csv\n"
+                 "  obbsat pairs --poses scene.csv --out pairs.csv\n");
 }
 
 namespace {
@@ -449,11 +489,80 @@ void gen_poses(const gen_request& request, suites::pose_family family) {
                 s.poses.size());
 }
 
+// The options that shape a scene, and those that shape a family: one set
+// given with the other is a usage error naming the word.
+constexpr std::string_view scene_only_options[] = {"boxes", "pairs-per-box"};
+constexpr std::string_view family_only_options[] = {"poses", "pairs"};
+
+// The --pairs-per-box value: a decimal number from 1e-6 to 1000. The bounds
+// catch slips, not limits of the generator: at 0 or below there is no square
+// to size (make_pose_scene would use a unit square), far below 1e-6 the
+// positions grow too coarse for boxes of size 1, and above 1000 a million
+// boxes would make a billion pairs.
+double pairs_per_box_option(std::string_view text) {
+    constexpr double least = 1e-6;
+    constexpr double most = 1000;
+    const std::string terminated(text);
+    char* stop = nullptr;
+    const double value = terminated.empty() ? 0 : std::strtod(terminated.c_str(), &stop);
+    const bool whole = stop == terminated.c_str() + terminated.size();
+    if (!whole || !std::isfinite(value) || value < least || value > most) {
+        throw usage_error("--pairs-per-box: expected a number from 1e-6 to 1000, got '" + terminated + "'");
+    }
+    return value;
+}
+
+void gen_scene(const split_words& words, const parsed_options& options) {
+    if (!words.positional.empty()) {
+        throw usage_error("unexpected argument '" + std::string(words.positional.front()) +
+                          "' (--scene takes no FAMILY)");
+    }
+    for (const std::string_view name : family_only_options) {
+        if (options.has(name)) {
+            throw usage_error("--" + std::string(name) + " does not apply to --scene");
+        }
+    }
+    const std::string_view sizes_word = *options.value("scene");
+    const std::optional<scene_sizes> sizes = parse_scene_sizes(sizes_word);
+    if (!sizes) {
+        throw usage_error("--scene: unknown sizes '" + std::string(sizes_word) + "' (expected uniform or mixed)");
+    }
+    pose_scene_spec spec;
+    spec.sizes = *sizes;
+    // Pairs index a file's poses with 32-bit indices.
+    spec.boxes = static_cast<std::size_t>(parse_number_option("boxes", options.required("boxes"), 1, UINT32_MAX));
+    if (const auto v = options.value("seed")) {
+        spec.seed = parse_number_option("seed", *v, 0, UINT64_MAX);
+    }
+    if (const auto v = options.value("pairs-per-box")) {
+        spec.pairs_per_box = pairs_per_box_option(*v);
+    }
+    const std::optional<std::string_view> out_path = output_option(options, "out");
+    // Created before the scene is made, so an unwritable --out fails at once.
+    io::output_target target(out_path);
+    write_pose_lines(make_pose_scene(spec), target);
+    target.commit();
+    if (out_path) {
+        std::printf("%.*s: %zu poses, %s sizes (seed %" PRIu64 "), about %g pairs per box, side %g\n",
+                    static_cast<int>(out_path->size()), out_path->data(), spec.boxes, scene_sizes_name(spec.sizes),
+                    spec.seed, spec.pairs_per_box, pose_scene_side(spec));
+    }
+}
+
 }  // namespace
 
 int run_gen(const arguments& args) {
     const split_words words = split_positional(args);
     const parsed_options options = parse_options(words.options, gen_option_specs());
+    if (options.has("scene")) {
+        gen_scene(words, options);
+        return exit_success;
+    }
+    for (const std::string_view name : scene_only_options) {
+        if (options.has(name)) {
+            throw usage_error("--" + std::string(name) + " needs --scene");
+        }
+    }
     const bool poses = options.has("poses");
     const std::string known = poses ? pose_family_list() : family_list();
     if (words.positional.empty()) {

@@ -37,12 +37,14 @@ struct subcommand {
 constexpr subcommand subcommands[] = {
     {"collide", "verdicts for a pair file over rectangles, as corners or as poses", run_collide,
      print_collide_help},
+    {"pairs", "every colliding pair of a rectangle file, or across two, sorted", run_pairs,
+     print_pairs_help},
     {"backends", "the backends compiled in, which this CPU runs, and which 'auto' picks",
      run_backends, print_backends_help},
     {"demo", "time every backend on a seeded scene and check they all agree", run_demo,
      print_demo_help},
-    {"gen", "write a hard-case suite family (rects or poses) and its exact truth to files", run_gen,
-     print_gen_help},
+    {"gen", "write a hard-case suite family (rects or poses) and its exact truth to files, or a scene",
+     run_gen, print_gen_help},
     {"accuracy", "score every method against the exact oracle on every suite family",
      run_accuracy, print_accuracy_help},
     {"draw", "an SVG picture of chosen pairs: verdict, axes and exact class",
@@ -73,7 +75,8 @@ void print_main_help(std::FILE* out) {
                  "\n"
                  "example:\n"
                  "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt\n"
-                 "  obbsat collide --poses poses.csv --pairs pairs.csv\n");
+                 "  obbsat collide --poses poses.csv --pairs pairs.csv\n"
+                 "  obbsat pairs --poses poses.csv --out colliding.csv\n");
 }
 
 void report(const std::string& message) { std::fprintf(stderr, "obbsat: %s\n", message.c_str()); }

@@ -72,7 +72,7 @@ TEST(program, prints_its_version) {
 
 TEST(program, every_command_has_help_with_an_example) {
     const scratch s;
-    for (const char* args : {"--help", "collide --help", "backends --help", "demo --help"}) {
+    for (const char* args : {"--help", "collide --help", "pairs --help", "backends --help", "demo --help"}) {
         const run_result r = s.run(args);
         EXPECT_EQ(r.status, 0) << args;
         EXPECT_NE(r.out.find("usage: obbsat"), std::string::npos) << args;
@@ -571,7 +571,8 @@ TEST(program, a_bogus_obbsat_backend_is_an_error_for_every_command) {
           "collide --rects R.csv --pairs P.csv --backend auto --out v.txt",
           "draw --rects R.csv --pairs P.csv --select 0 --backend scalar --out d.svg",
           "demo --rects 100 --pairs 100 --reps 1", "accuracy --pairs 10 --reps 1 --json a.json",
-          "gen tiles --pairs 10 --out g"}) {
+          "gen tiles --pairs 10 --out g", "pairs --rects R.csv --out p.csv",
+          "gen --scene uniform --boxes 3 --out s.csv"}) {
         for (const std::string value : {"bogus", "AVX2", "scalar,sse2", " "}) {
             const run_result r = s.run(args, "OBBSAT_BACKEND='" + value + "'");
             EXPECT_EQ(r.status, 2) << args << " with " << value;

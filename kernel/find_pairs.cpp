@@ -49,7 +49,7 @@ detail::query_input with_nonnull_a(detail::query_input in, bool cross) {
 
 std::vector<pair_index> collected(const detail::query_input& in, bool cross, const collide_options& options) {
     detail::pair_search search(options);
-    return search.collect(with_nonnull_a(in, cross));
+    return search.collect_once(with_nonnull_a(in, cross));
 }
 
 void streamed(const detail::query_input& in, bool cross, const collide_options& options,

@@ -169,7 +169,7 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 order_[i] = static_cast<std::uint32_t>(i);
             }
         });
-        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_);
+        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts);
     }
     have_order_ = true;
     ordered_n_ = n_;
@@ -211,7 +211,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     });
 }
 
-void pair_search::collect_visits() {
+void pair_search::collect_visits(std::size_t parts) {
     const std::uint32_t strips = grid_.strips;
     const unsigned q_bits = grid_.q_bits;
     own_begin_.assign(strips + 1, 0);
@@ -235,7 +235,7 @@ void pair_search::collect_visits() {
             ++v;
         }
     }
-    radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_);
+    radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_, parts);
     visit_begin_.assign(strips + 1, 0);
     for (std::size_t i = 0; i < visits; ++i) {
         ++visit_begin_[(visit_keys_[i] >> q_bits) + 1];
@@ -434,6 +434,7 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
         throw invalid_input("a scene query takes at most 4294967295 rectangles, not " + std::to_string(n_));
     }
     stats_.boxes = n_;
+    used_parts_ = 0;
     for (part& p : parts_) {
         p.found.clear();
     }
@@ -441,13 +442,14 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
         return;
     }
     const std::size_t parts = parts_for(n_, options_.threads);
+    used_parts_ = parts;
     auto start = clock_type::now();
     measure_extent(input, parts);
     order_boxes(input, parts);
     stats_.bounds_seconds = seconds_since(start);
     start = clock_type::now();
     copy_records(input, parts);
-    collect_visits();
+    collect_visits(parts);
     stats_.order_seconds = seconds_since(start);
     start = clock_type::now();
     sweep(input, parts, emit ? &emit : nullptr);
@@ -457,20 +459,45 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     }
 }
 
-const std::vector<pair_index>& pair_search::collect(const query_input& input) {
-    run(input, pair_chunk_sink{});
+void pair_search::sort_found() {
     const auto start = clock_type::now();
     std::vector<const std::vector<pair_index>*> sources;
-    for (const part& p : parts_) {
-        sources.push_back(&p.found);
+    for (std::size_t i = 0; i < used_parts_; ++i) {
+        sources.push_back(&parts_[i].found);
     }
-    sort_pairs(sources, self_ ? n_ : a_count_, pairs_, spare_pairs_, counts_);
+    const std::size_t parts = std::max<std::size_t>(1, sources.size());
+    if (sort_scratch_.size() < parts) {
+        sort_scratch_.resize(parts);
+    }
+    sort_pairs(sources, self_ ? n_ : a_count_, pairs_, sort_scratch_);
     for (part& p : parts_) {
         p.found.clear();
     }
     stats_.pairs = pairs_.size();
     stats_.output_seconds = seconds_since(start);
+}
+
+const std::vector<pair_index>& pair_search::collect(const query_input& input) {
+    run(input, pair_chunk_sink{});
+    sort_found();
     return pairs_;
+}
+
+std::vector<pair_index> pair_search::collect_once(const query_input& input) {
+    run(input, pair_chunk_sink{});
+    // The scene's working memory goes before the sorted copy of the pairs is
+    // made: the peak is the larger of the two, not their sum.
+    decltype(records_)().swap(records_);
+    for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
+        std::vector<float>().swap(*v);
+    }
+    for (auto* v : {&keys_, &order_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_}) {
+        std::vector<std::uint32_t>().swap(*v);
+    }
+    radix_buffer().swap(packed_);
+    radix_buffer().swap(spare_);
+    sort_found();
+    return std::move(pairs_);
 }
 
 }  // namespace obbsat::detail

@@ -20,6 +20,7 @@
 //      reordered records; the colliding ones are mapped back.
 #pragma once
 
+#include "pair_sort.hpp"
 #include "radix_sort.hpp"
 #include "strip_grid.hpp"
 
@@ -57,6 +58,10 @@ public:
     /// Runs the query and returns its pairs sorted by (a, b).
     const std::vector<pair_index>& collect(const query_input& input);
 
+    /// Runs the query once and hands over its pairs: the per-thread buffers
+    /// are released before the sorted copy is made, and nothing is kept.
+    std::vector<pair_index> collect_once(const query_input& input);
+
     const find_pairs_stats& stats() const { return stats_; }
 
 private:
@@ -83,10 +88,11 @@ private:
     void measure_extent(const query_input& input, std::size_t parts);
     void order_boxes(const query_input& input, std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
-    void collect_visits();
+    void collect_visits(std::size_t parts);
     void sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
+    void sort_found();
 
     collide_options options_;
     find_pairs_stats stats_;
@@ -121,8 +127,9 @@ private:
     std::vector<std::uint32_t> own_begin_, visit_keys_, visit_ids_, visit_begin_;
 
     std::vector<part> parts_;
-    std::vector<pair_index> pairs_, spare_pairs_;
-    std::vector<std::uint32_t> counts_;
+    std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer
+    std::vector<pair_index> pairs_;
+    std::vector<pair_sort_scratch> sort_scratch_;
 };
 
 }  // namespace obbsat::detail

@@ -1,6 +1,9 @@
 #include "pair_sort.hpp"
 
+#include "thread_pool.hpp"
+
 #include <algorithm>
+#include <functional>
 
 namespace obbsat::detail {
 
@@ -71,7 +74,7 @@ void sort_bucket(pair_index* pairs, std::size_t n, unsigned low_bits, std::vecto
 }  // namespace
 
 void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std::size_t a_count,
-                std::vector<pair_index>& out, std::vector<pair_index>& spare, std::vector<std::uint32_t>& counts) {
+                std::vector<pair_index>& out, std::vector<pair_sort_scratch>& scratch) {
     std::size_t n = 0;
     for (const auto* source : sources) {
         n += source->size();
@@ -80,29 +83,50 @@ void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std:
     if (n == 0) {
         return;
     }
+    const auto run = [](std::size_t parts, const std::function<void(std::size_t)>& task) {
+        if (parts <= 1) {
+            task(0);
+        } else {
+            thread_pool::shared().run(parts, task);
+        }
+    };
     const unsigned a_bits = bits_for(a_count > 0 ? a_count - 1 : 0);
     const unsigned high_shift = a_bits > bucket_bits ? a_bits - bucket_bits : 0;
     const std::size_t buckets = (a_count > 0 ? (a_count - 1) >> high_shift : 0) + 1;
-    // Pass 1: scatter by the high bits of a.
+    // Pass 1: each source scatters its pairs by the high bits of a, after
+    // the same bucket's pairs of the sources before it.
+    const std::size_t sources_count = sources.size();
+    std::vector<std::vector<std::size_t>> next(sources_count, std::vector<std::size_t>(buckets, 0));
+    run(sources_count, [&](std::size_t s) {
+        for (const pair_index& p : *sources[s]) {
+            ++next[s][p.a >> high_shift];
+        }
+    });
     std::vector<std::size_t> begin(buckets + 1, 0);
-    for (const auto* source : sources) {
-        for (const pair_index& p : *source) {
-            ++begin[(p.a >> high_shift) + 1];
+    std::size_t sum = 0;
+    for (std::size_t k = 0; k < buckets; ++k) {
+        begin[k] = sum;
+        for (std::size_t s = 0; s < sources_count; ++s) {
+            const std::size_t here = next[s][k];
+            next[s][k] = sum;
+            sum += here;
         }
     }
-    for (std::size_t k = 0; k < buckets; ++k) {
-        begin[k + 1] += begin[k];
-    }
-    std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
-    for (const auto* source : sources) {
-        for (const pair_index& p : *source) {
-            out[next[p.a >> high_shift]++] = p;
+    begin[buckets] = sum;
+    run(sources_count, [&](std::size_t s) {
+        std::vector<std::size_t>& slot = next[s];
+        for (const pair_index& p : *sources[s]) {
+            out[slot[p.a >> high_shift]++] = p;
         }
-    }
-    // Pass 2: each bucket on its own.
-    for (std::size_t k = 0; k < buckets; ++k) {
-        sort_bucket(out.data() + begin[k], begin[k + 1] - begin[k], high_shift, spare, counts);
-    }
+    });
+    // Pass 2: each bucket on its own, the buckets split between the threads.
+    const std::size_t parts = std::max<std::size_t>(1, std::min(scratch.size(), n / 65536));
+    run(parts, [&](std::size_t part) {
+        for (std::size_t k = buckets * part / parts; k < buckets * (part + 1) / parts; ++k) {
+            sort_bucket(out.data() + begin[k], begin[k + 1] - begin[k], high_shift, scratch[part].spare,
+                        scratch[part].counts);
+        }
+    });
 }
 
 }  // namespace obbsat::detail

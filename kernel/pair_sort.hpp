@@ -12,9 +12,16 @@
 
 namespace obbsat::detail {
 
+/// Working memory of one thread of sort_pairs, kept between calls.
+struct pair_sort_scratch {
+    std::vector<pair_index> spare;
+    std::vector<std::uint32_t> counts;
+};
+
 /// Every pair of every source, sorted by a then b, into `out`; every a must
-/// be < a_count. `spare` and `counts` are working memory kept between calls.
+/// be < a_count. One thread of the shared pool per source scatters it; the
+/// buckets are then sorted by scratch.size() threads.
 void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std::size_t a_count,
-                std::vector<pair_index>& out, std::vector<pair_index>& spare, std::vector<std::uint32_t>& counts);
+                std::vector<pair_index>& out, std::vector<pair_sort_scratch>& scratch);
 
 }  // namespace obbsat::detail

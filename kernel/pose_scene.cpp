@@ -12,6 +12,23 @@ namespace {
 
 constexpr double pi = 3.141592653589793;
 
+/// 100^u for u in [0, 1] with basic arithmetic only (a library's pow may
+/// round differently elsewhere): e^(u ln 100) as (e^(u ln 100 / 256))^256,
+/// the inner power by its Taylor series to the 9th term.
+double hundred_to_the(double u) {
+    const double y = u * 4.605170185988092 / 256.0;  // ln 100 = 4.60517018598809136...
+    double term = 1.0;
+    double sum = 1.0;
+    for (int k = 1; k <= 9; ++k) {
+        term = term * y / k;
+        sum = sum + term;
+    }
+    for (int k = 0; k < 8; ++k) {
+        sum = sum * sum;
+    }
+    return sum;
+}
+
 struct sized {
     float hx, hy;
 };
@@ -25,7 +42,7 @@ std::vector<sized> sizes_of(const pose_scene_spec& spec, seeded_random& random) 
             s.hx = random.uniform(0.5f, 1.5f);
             s.hy = random.uniform(0.5f, 1.5f);
         } else {
-            const double size = 0.2 * std::pow(100.0, static_cast<double>(random.uniform(0.0f, 1.0f)));
+            const double size = 0.2 * hundred_to_the(static_cast<double>(random.uniform(0.0f, 1.0f)));
             const double aspect = static_cast<double>(random.uniform(0.3f, 1.0f));
             const bool wide = (random.next() & 1u) != 0;
             s.hx = static_cast<float>(wide ? size : size * aspect);

@@ -1,7 +1,10 @@
 #include "radix_sort.hpp"
 
+#include "thread_pool.hpp"
+
 #include <algorithm>
 #include <array>
+#include <functional>
 
 namespace obbsat::detail {
 
@@ -13,7 +16,7 @@ constexpr std::size_t digit_values = std::size_t{1} << digit_bits;
 }  // namespace
 
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
-                radix_buffer& spare) {
+                radix_buffer& spare, std::size_t parts) {
     if (n < 2) {
         return;
     }
@@ -23,35 +26,63 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     if (spare.size() < n) {
         spare.resize(n);
     }
+    parts = std::max<std::size_t>(1, std::min(parts, n / 65536));
     std::uint64_t* from = packed.data();
     std::uint64_t* to = spare.data();
-    for (std::size_t i = 0; i < n; ++i) {
-        from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
-    }
-    std::array<std::size_t, digit_values> count{};
-    for (unsigned shift = 32; shift < 32 + key_bits; shift += digit_bits) {
-        count.fill(0);
-        for (std::size_t i = 0; i < n; ++i) {
-            ++count[(from[i] >> shift) & (digit_values - 1)];
+    const auto run = [parts](const std::function<void(std::size_t)>& task) {
+        if (parts == 1) {
+            task(0);
+        } else {
+            thread_pool::shared().run(parts, task);
         }
-        if (count[(from[0] >> shift) & (digit_values - 1)] == n) {
+    };
+    const auto begin_of = [n, parts](std::size_t part) { return n * part / parts; };
+    run([&](std::size_t part) {
+        for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+            from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
+        }
+    });
+    // count[part][digit]: each part counts its own share, then scatters it to
+    // the slots after every lower digit and after the same digit of lower parts,
+    // which keeps the sort stable.
+    std::vector<std::array<std::size_t, digit_values>> count(parts);
+    for (unsigned shift = 32; shift < 32 + key_bits; shift += digit_bits) {
+        run([&](std::size_t part) {
+            std::array<std::size_t, digit_values>& c = count[part];
+            c.fill(0);
+            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+                ++c[(from[i] >> shift) & (digit_values - 1)];
+            }
+        });
+        std::size_t sum = 0;
+        bool one_digit = false;
+        for (std::size_t d = 0; d < digit_values; ++d) {
+            std::size_t of_digit = 0;
+            for (std::size_t part = 0; part < parts; ++part) {
+                const std::size_t here = count[part][d];
+                count[part][d] = sum;
+                sum += here;
+                of_digit += here;
+            }
+            one_digit = one_digit || of_digit == n;
+        }
+        if (one_digit) {
             continue;  // every key has this digit: the pass would move nothing
         }
-        std::size_t sum = 0;
-        for (std::size_t& c : count) {
-            const std::size_t here = c;
-            c = sum;
-            sum += here;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            to[count[(from[i] >> shift) & (digit_values - 1)]++] = from[i];
-        }
+        run([&](std::size_t part) {
+            std::array<std::size_t, digit_values>& c = count[part];
+            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+                to[c[(from[i] >> shift) & (digit_values - 1)]++] = from[i];
+            }
+        });
         std::swap(from, to);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
-        values[i] = static_cast<std::uint32_t>(from[i]);
-    }
+    run([&](std::size_t part) {
+        for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+            keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
+            values[i] = static_cast<std::uint32_t>(from[i]);
+        }
+    });
 }
 
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget) {

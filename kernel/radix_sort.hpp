@@ -18,9 +18,10 @@ using radix_buffer = std::vector<std::uint64_t, cache_line_allocator<std::uint64
 
 /// Sorts keys[0, n) and values[0, n) together by key, stably; `key_bits` is
 /// the number of low bits that can be non-zero. `packed` and `spare` are
-/// grown to n.
+/// grown to n. Each pass is split over up to `parts` threads of the shared
+/// pool; the result does not depend on how many.
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
-                radix_buffer& spare);
+                radix_buffer& spare, std::size_t parts = 1);
 
 /// Sorts keys[0, n) and values[0, n) by key, stably, when they are nearly
 /// sorted already: an insertion sort that gives up (returning false, with the

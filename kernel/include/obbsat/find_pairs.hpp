@@ -15,9 +15,13 @@
 // between rectangles whose bounds are apart is absent; every other verdict is
 // the method's own, the same on every backend and thread count.
 //
-// Memory: about 120 bytes per rectangle (bounds, order, one copy of the
-// records in the query's own order) plus 8 bytes per candidate pair in
-// flight per thread (bounded) and 8 bytes per reported pair.
+// Memory: about 100 bytes per rectangle while the pairs are found (one copy
+// of the records in the query's own order, its bounds, order and strips)
+// and 8 bytes per reported pair; find_pairs releases the per-rectangle
+// memory before it sorts the pairs, which takes 8 more bytes per pair, so
+// its peak is the larger of the two phases. find_pairs_each holds no pairs
+// beyond a few thousand per thread. A pair_finder keeps all of it for the
+// next call.
 #pragma once
 
 #include <obbsat/collide.hpp>

@@ -9,8 +9,9 @@
 // up to boundary effects and sampling.
 //
 // Generation uses only IEEE basic arithmetic (orientations from the rational
-// parametrisation of the unit circle), so a spec gives the same bytes on
-// every machine.
+// parametrisation of the unit circle, the log-uniform sizes from a fixed
+// series, the side from std::sqrt, which IEEE rounds correctly), so a spec
+// gives the same bytes on every machine.
 #pragma once
 
 #include <obbsat/rect_pose.hpp>

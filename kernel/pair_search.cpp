@@ -159,7 +159,11 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 keys_[k] = key_of_box(order_[k]);
             }
         });
-        stats_.reused_order = repair_sort(keys_.data(), order_.data(), n_, 4 * n_);
+        // A rectangle that changed strips would travel a whole strip in an
+        // insertion sort: one stable pass by strip first, then the repair
+        // moves rectangles only within their strip.
+        bucket_sort(keys_.data(), order_.data(), n_, grid_.q_bits, grid_.strips, spare_keys_, spare_values_);
+        stats_.reused_order = repair_sort(keys_.data(), order_.data(), n_, 16 * n_);
     }
     if (!stats_.reused_order) {
         run_parts(parts, [&](std::size_t share) {

@@ -113,7 +113,7 @@ private:
     bounds_extent extent_{};
 
     // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
-    std::vector<std::uint32_t> keys_, order_;
+    std::vector<std::uint32_t> keys_, order_, spare_keys_, spare_values_;
     radix_buffer packed_, spare_;
 
     // Per rectangle, in the query's order.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <functional>
 
 namespace obbsat::detail {
@@ -85,6 +86,26 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     });
 }
 
+void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned shift, std::size_t buckets,
+                 std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values) {
+    spare_keys.resize(n);
+    spare_values.resize(n);
+    std::vector<std::size_t> next(buckets + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        ++next[(keys[i] >> shift) + 1];
+    }
+    for (std::size_t b = 0; b < buckets; ++b) {
+        next[b + 1] += next[b];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t slot = next[keys[i] >> shift]++;
+        spare_keys[slot] = keys[i];
+        spare_values[slot] = values[i];
+    }
+    std::copy(spare_keys.begin(), spare_keys.begin() + static_cast<std::ptrdiff_t>(n), keys);
+    std::copy(spare_values.begin(), spare_values.begin() + static_cast<std::ptrdiff_t>(n), values);
+}
+
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget) {
     std::size_t moved = 0;
     for (std::size_t i = 1; i < n; ++i) {
@@ -92,19 +113,20 @@ bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std:
         if (keys[i - 1] <= key) {
             continue;
         }
-        const std::uint32_t value = values[i];
-        std::size_t j = i;
-        while (j > 0 && keys[j - 1] > key) {
-            keys[j] = keys[j - 1];
-            values[j] = values[j - 1];
-            --j;
-        }
-        keys[j] = key;
-        values[j] = value;
+        // The first of the sorted prefix greater than key: the insertion
+        // point that keeps equal keys in their order. The block after it
+        // moves up by one in one memmove each, cheap even when a rectangle
+        // that changed strips crosses a whole strip.
+        const std::size_t j = static_cast<std::size_t>(std::upper_bound(keys, keys + i, key) - keys);
         moved += i - j;
         if (moved > move_budget) {
             return false;
         }
+        const std::uint32_t value = values[i];
+        std::memmove(keys + j + 1, keys + j, (i - j) * sizeof(std::uint32_t));
+        std::memmove(values + j + 1, values + j, (i - j) * sizeof(std::uint32_t));
+        keys[j] = key;
+        values[j] = value;
     }
     return true;
 }

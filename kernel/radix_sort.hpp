@@ -23,10 +23,15 @@ using radix_buffer = std::vector<std::uint64_t, cache_line_allocator<std::uint64
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
                 radix_buffer& spare, std::size_t parts = 1);
 
+/// Sorts keys[0, n) and values[0, n) stably by key >> shift, which must be
+/// below `buckets`: one counting pass, through `spare_keys` and `spare_values`.
+void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned shift, std::size_t buckets,
+                 std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values);
+
 /// Sorts keys[0, n) and values[0, n) by key, stably, when they are nearly
-/// sorted already: an insertion sort that gives up (returning false, with the
-/// arrays still a permutation of the input) once it has moved more than
-/// `move_budget` elements.
+/// sorted already: an insertion sort (binary search, then one block move)
+/// that gives up (returning false, with the arrays still a permutation of the
+/// input) once it would move more than `move_budget` elements.
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget);
 
 }  // namespace obbsat::detail

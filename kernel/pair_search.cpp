@@ -85,7 +85,10 @@ double clamp_finite(float x) {
 
 pair_search::pair_search(const collide_options& options) : options_(options) {}
 
-void pair_search::measure_extent(const query_input& input, std::size_t parts) {
+void pair_search::measure_extent(const query_input& input, std::size_t parts, bool with_keys) {
+    if (with_keys) {
+        key_by_id_.resize(n_);
+    }
     struct partial {
         double x_low = std::numeric_limits<double>::infinity();
         double x_high = -std::numeric_limits<double>::infinity();
@@ -103,6 +106,9 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts) {
         constexpr std::size_t run = 256;
         for (std::size_t i = begin; i < end; ++i) {
             const ref::box_bounds b = bounds_of_record(kind_, record_at(input, i));
+            if (with_keys) {
+                key_by_id_[i] = grid_.key_of(b.lo_x, b.lo_y);
+            }
             x_low = std::min(x_low, b.lo_x);
             x_high = std::max(x_high, b.hi_x);
             y_low = std::min(y_low, b.lo_y);
@@ -132,44 +138,26 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts) {
                             all.height_sum / static_cast<double>(n_)};
 }
 
+bool pair_search::same_scene_as_last() const {
+    return have_order_ && ordered_n_ == n_ && ordered_a_count_ == a_count_ && ordered_kind_ == kind_ &&
+           ordered_self_ == self_;
+}
+
 void pair_search::order_boxes(const query_input& input, std::size_t parts) {
-    const bool same_scene = have_order_ && ordered_n_ == n_ && ordered_a_count_ == a_count_ &&
-                            ordered_kind_ == kind_ && ordered_self_ == self_;
-    const bool keep_grid = same_scene && grid_still_fits(grid_, extent_);
+    // measure_extent computed the keys on the last grid when there was one.
+    const bool keep_grid = same_scene_as_last() && grid_still_fits(grid_, extent_);
     if (!keep_grid) {
         grid_ = grid_for(extent_, n_, strip_factor);
     }
     keys_.resize(n_);
     order_.resize(n_);
-    const auto key_of_box = [&](std::size_t id) {
-        const ref::box_bounds b = bounds_of_record(kind_, record_at(input, id));
-        return grid_.key_of(b.lo_x, b.lo_y);
-    };
-    stats_.reused_order = false;
-    if (keep_grid) {
-        // The last order, with this query's keys: nearly sorted when the
-        // rectangles moved a little.
-        run_parts(parts, [&](std::size_t share) {
-            const auto [begin, end] = share_of(n_, share, parts);
-            constexpr std::size_t ahead = 16;
-            for (std::size_t k = begin; k < end; ++k) {
-                if (k + ahead < end) {
-                    __builtin_prefetch(record_at(input, order_[k + ahead]));
-                }
-                keys_[k] = key_of_box(order_[k]);
-            }
-        });
-        // A rectangle that changed strips would travel a whole strip in an
-        // insertion sort: one stable pass by strip first, then the repair
-        // moves rectangles only within their strip.
-        bucket_sort(keys_.data(), order_.data(), n_, grid_.q_bits, grid_.strips, spare_keys_, spare_values_);
-        stats_.reused_order = repair_sort(keys_.data(), order_.data(), n_, 16 * n_);
-    }
+    stats_.reused_order = keep_grid && repair_order(parts);
     if (!stats_.reused_order) {
         run_parts(parts, [&](std::size_t share) {
             const auto [begin, end] = share_of(n_, share, parts);
             for (std::size_t i = begin; i < end; ++i) {
-                keys_[i] = key_of_box(i);
+                const ref::box_bounds b = bounds_of_record(kind_, record_at(input, i));
+                keys_[i] = grid_.key_of(b.lo_x, b.lo_y);
                 order_[i] = static_cast<std::uint32_t>(i);
             }
         });
@@ -180,6 +168,46 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     ordered_a_count_ = a_count_;
     ordered_kind_ = kind_;
     ordered_self_ = self_;
+}
+
+bool pair_search::repair_order(std::size_t parts) {
+    // The last order with this query's keys: nearly sorted when the
+    // rectangles moved a little. A rectangle that changed strips would
+    // travel a whole strip in an insertion sort, so one stable pass by strip
+    // comes first; then each strip is repaired on its own, the strips split
+    // between the threads.
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        for (std::size_t k = begin; k < end; ++k) {
+            keys_[k] = key_by_id_[order_[k]];
+        }
+    });
+    bucket_sort(keys_.data(), order_.data(), n_, grid_.q_bits, grid_.strips, spare_keys_, spare_values_);
+    std::vector<std::size_t> strip_begin(grid_.strips + 1, 0);
+    for (std::size_t k = 0; k < n_; ++k) {
+        ++strip_begin[(keys_[k] >> grid_.q_bits) + 1];
+    }
+    for (std::size_t s = 0; s < grid_.strips; ++s) {
+        strip_begin[s + 1] += strip_begin[s];
+    }
+    std::vector<unsigned char> repaired(parts, 1);
+    run_parts(parts, [&](std::size_t share) {
+        const std::size_t first = grid_.strips * share / parts;
+        const std::size_t last = grid_.strips * (share + 1) / parts;
+        const std::size_t begin = strip_begin[first];
+        const std::size_t end = strip_begin[last];
+        std::size_t budget = 16 * (end - begin);
+        for (std::size_t s = first; s < last && repaired[share] != 0; ++s) {
+            const std::size_t b = strip_begin[s];
+            const std::size_t count = strip_begin[s + 1] - b;
+            std::size_t moved = 0;
+            if (!repair_sort(keys_.data() + b, order_.data() + b, count, budget, &moved)) {
+                repaired[share] = 0;
+            }
+            budget -= std::min(budget, moved);
+        }
+    });
+    return std::find(repaired.begin(), repaired.end(), 0) == repaired.end();
 }
 
 void pair_search::copy_records(const query_input& input, std::size_t parts) {
@@ -448,7 +476,7 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     const std::size_t parts = parts_for(n_, options_.threads);
     used_parts_ = parts;
     auto start = clock_type::now();
-    measure_extent(input, parts);
+    measure_extent(input, parts, same_scene_as_last());
     order_boxes(input, parts);
     stats_.bounds_seconds = seconds_since(start);
     start = clock_type::now();
@@ -495,7 +523,7 @@ std::vector<pair_index> pair_search::collect_once(const query_input& input) {
     for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
         std::vector<float>().swap(*v);
     }
-    for (auto* v : {&keys_, &order_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_}) {
+    for (auto* v : {&keys_, &order_, &key_by_id_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_}) {
         std::vector<std::uint32_t>().swap(*v);
     }
     radix_buffer().swap(packed_);

@@ -85,8 +85,10 @@ private:
         std::size_t slow_path = 0;
     };
 
-    void measure_extent(const query_input& input, std::size_t parts);
+    void measure_extent(const query_input& input, std::size_t parts, bool with_keys);
+    bool same_scene_as_last() const;
     void order_boxes(const query_input& input, std::size_t parts);
+    bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
     void collect_visits(std::size_t parts);
     void sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
@@ -111,6 +113,7 @@ private:
     bool ordered_self_ = true;
 
     bounds_extent extent_{};
+    std::vector<std::uint32_t> key_by_id_;  ///< on the last grid, in the caller's order (repeat queries)
 
     // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
     std::vector<std::uint32_t> keys_, order_, spare_keys_, spare_values_;

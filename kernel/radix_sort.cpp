@@ -106,7 +106,8 @@ void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsi
     std::copy(spare_values.begin(), spare_values.begin() + static_cast<std::ptrdiff_t>(n), values);
 }
 
-bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget) {
+bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,
+                 std::size_t* moved_out) {
     std::size_t moved = 0;
     for (std::size_t i = 1; i < n; ++i) {
         const std::uint32_t key = keys[i];
@@ -120,6 +121,9 @@ bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std:
         const std::size_t j = static_cast<std::size_t>(std::upper_bound(keys, keys + i, key) - keys);
         moved += i - j;
         if (moved > move_budget) {
+            if (moved_out != nullptr) {
+                *moved_out = moved;
+            }
             return false;
         }
         const std::uint32_t value = values[i];
@@ -127,6 +131,9 @@ bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std:
         std::memmove(values + j + 1, values + j, (i - j) * sizeof(std::uint32_t));
         keys[j] = key;
         values[j] = value;
+    }
+    if (moved_out != nullptr) {
+        *moved_out = moved;
     }
     return true;
 }

@@ -32,6 +32,8 @@ void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsi
 /// sorted already: an insertion sort (binary search, then one block move)
 /// that gives up (returning false, with the arrays still a permutation of the
 /// input) once it would move more than `move_budget` elements.
-bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget);
+/// `moved`, when given, receives the elements moved.
+bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,
+                 std::size_t* moved = nullptr);
 
 }  // namespace obbsat::detail

@@ -8,7 +8,8 @@ Rectangles are numpy arrays in one of two forms, told apart by shape:
   ``{(cx, cy) + a*(c, s) + b*(-s, c) : |a| <= hx, |b| <= hy}`` (the rotation
   vector ``(c, s)`` need not be a unit: its length scales the rectangle).
 
-Pairs are integer arrays shaped ``(M, 2)`` of 0-based indices. Each call
+Pairs are integer arrays shaped ``(M, 2)`` of 0-based indices; with no pair
+list at all, :func:`find_pairs` returns every colliding pair of a scene. Each call
 decides the whole batch in C++ with the SIMD backend this CPU runs best, with
 the GIL released; every backend gives verdicts bitwise identical to the
 method's scalar reference. The methods differ per form (:func:`methods`).
@@ -37,19 +38,23 @@ array([ True, False])
 import numpy as _np
 
 from . import _core, testing
-from ._core import PoseRecords, RectRecords, UnsupportedBackendError
+from ._core import FindPairsStats, PoseRecords, RectRecords, UnsupportedBackendError
 
 __version__ = _core.__version__
 
 __all__ = [
+    "FindPairsStats",
+    "PairFinder",
     "PoseRecords",
     "RectRecords",
     "UnsupportedBackendError",
     "backends",
+    "bounds",
     "collide",
     "collide_stream",
     "colliding_pairs",
     "corners_of_poses",
+    "find_pairs",
     "methods",
     "records",
     "resolved_backend",
@@ -58,7 +63,8 @@ __all__ = [
 _MAX_INDEX = 2**32 - 1
 
 # The method when none is given: the article's test on each form (as the
-# command-line program's ``collide --rects`` and ``collide --poses``).
+# command-line program's ``collide --rects`` and ``collide --poses``), for
+# pair lists and scene queries alike.
 _DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
 
 
@@ -370,3 +376,187 @@ def corners_of_poses(poses, backend="auto"):
     out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
     _core.pose_corners(poses, out, backend)
     return out
+
+
+def _scene_form(boxes, what):
+    """``(form, boxes)`` for a scene query: a store as it is, an array as
+    :func:`_form` gives it."""
+    if isinstance(boxes, RectRecords):
+        return "corners", boxes
+    if isinstance(boxes, PoseRecords):
+        return "poses", boxes
+    return _form(boxes, what)
+
+
+def _scene(boxes, against):
+    """``(form, boxes, against)``: both sides of a scene query in the form the
+    library reads, refused when they hold different forms."""
+    form, boxes = _scene_form(boxes, "boxes")
+    if against is not None:
+        form_against, against = _scene_form(against, "against")
+        if form_against != form:
+            raise ValueError(f"boxes hold {form}, against holds {form_against}: a scene query compares one form")
+    return form, boxes, against
+
+
+def find_pairs(boxes, against=None, *, method=None, backend="auto", threads=1):
+    """Every pair of rectangles that collides, with no pair list: the
+    library's scene query (``obbsat::find_pairs``).
+
+    A broadphase over each rectangle's :func:`bounds` finds the pairs whose
+    bounds overlap (closed: touching bounds overlap), the method decides them
+    on the chosen backend, and the colliding ones come back sorted. So the
+    answer is exactly the pairs whose bounds overlap and that ``method``
+    calls colliding; with ``method="exact"`` that is every pair of
+    rectangles that share a point, the exact answer among all N(N-1)/2. A
+    float method's false positive between rectangles whose bounds are apart
+    is not reported; every other verdict is the method's own, the same as
+    :func:`collide` gives on that pair, on every backend and thread count.
+
+    Parameters
+    ----------
+    boxes : array_like, shape (N, 4, 2), (N, 8) or (N, 6), or a store
+        Corners or poses, as in :func:`collide`, or a :func:`records` store
+        (read as it is). An array is copied once per call into the store the
+        scene query reads (32 bytes per rectangle), checked as it is copied.
+    against : array_like or store of the same form, optional
+        With it, the pairs (i, j) with i indexing ``boxes`` and j indexing
+        ``against`` (every i and j, not only i < j).
+    method : str, optional
+        One of :func:`methods` for the form; ``None``: ``"sat4"`` on corners,
+        ``"local"`` on poses, as in :func:`collide` (pass ``"exact"`` for the
+        exact answer; ``obbsat pairs`` on the command line defaults to it).
+    backend, threads
+        As in :func:`collide`; the answer never depends on them. The GIL is
+        released during the query.
+
+    Returns
+    -------
+    ndarray of uint32, shape (K, 2)
+        Rows (i, j) sorted by i, then j; i < j without ``against``. The
+        array owns the library's result (no copy).
+
+    Raises
+    ------
+    ValueError
+        A coordinate or pose is invalid (named as in :func:`collide`, with
+        ``boxes: `` or ``against: `` in front for a cross query), a shape is
+        wrong, ``boxes`` and ``against`` hold different forms, a method is
+        unknown or does not run on the form, a backend unknown, ``threads <
+        0``, or the backend cannot run here (``UnsupportedBackendError``).
+    TypeError
+        A dtype is not numeric.
+
+    >>> poses = np.array([[0, 0, 1, 1, 1, 0],       # the square [-1, 1]^2
+    ...                   [2, 0, 1, 1, 0, 1],       # touching it along x = 1
+    ...                   [9, 9, 1, 1, 1, 0],
+    ...                   [1, 1, 0.5, 0.5, 0.6, 0.8]], dtype=np.float32)
+    >>> obbsat.find_pairs(poses, method="exact")
+    array([[0, 1],
+           [0, 3],
+           [1, 3]], dtype=uint32)
+    >>> obbsat.find_pairs(poses[:2], poses[2:], method="exact")
+    array([[0, 1],
+           [1, 1]], dtype=uint32)
+    """
+    form, boxes, against = _scene(boxes, against)
+    if method is None:
+        method = _DEFAULT_METHOD[form]
+    query = _core.find_pairs_poses if form == "poses" else _core.find_pairs_corners
+    return query(boxes, against, method, backend, int(threads))
+
+
+class PairFinder:
+    """A scene query that persists between calls (``obbsat::pair_finder``),
+    for simulations: it keeps the order of the rectangles and its buffers,
+    so a scene whose rectangles moved a little is answered by repairing the
+    previous order, with no allocation once its buffers have grown.
+
+    ``find(boxes, against=None)`` returns what :func:`find_pairs` with the
+    finder's method, backend and threads returns on the same data, always;
+    the pairs are copied out of the finder's buffer (K * 8 bytes), which the
+    next call reuses. ``stats`` says what the last call did
+    (:class:`FindPairsStats`: ``boxes``, ``strips``, ``visits``,
+    ``candidates``, ``pairs``, ``slow_path_pairs``, ``reused_order`` and the
+    seconds of each phase). ``method=None`` is the default of each form, as
+    in :func:`find_pairs`; the finder keeps one query per form it meets.
+    One call runs at a time (another thread calling meanwhile waits, with
+    the GIL released).
+
+    >>> finder = obbsat.PairFinder(method="exact")
+    >>> poses = np.array([[0, 0, 1, 1, 1, 0], [2, 0, 1, 1, 1, 0], [5, 0, 1, 1, 1, 0]], dtype=np.float32)
+    >>> finder.find(poses)
+    array([[0, 1]], dtype=uint32)
+    >>> poses[2, 0] = 3.5                           # the third moves onto the second
+    >>> finder.find(poses)
+    array([[0, 1],
+           [1, 2]], dtype=uint32)
+    >>> finder.stats.boxes, finder.stats.pairs
+    (3, 2)
+    """
+
+    def __init__(self, method=None, backend="auto", threads=1):
+        self._method = method
+        self._backend = backend
+        self._threads = int(threads)
+        self._last = None
+        # An unknown method or backend, one this CPU cannot run, or threads < 0 is refused here.
+        if method is None:
+            self._queries = {"corners": _core.PairFinder(_DEFAULT_METHOD["corners"], backend, self._threads)}
+        else:
+            query = _core.PairFinder(method, backend, self._threads)
+            self._queries = {"corners": query, "poses": query}
+
+    def __repr__(self):
+        return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads})"
+
+    def _query(self, form):
+        query = self._queries.get(form)
+        if query is None:
+            method = _DEFAULT_METHOD[form] if self._method is None else self._method
+            query = self._queries[form] = _core.PairFinder(method, self._backend, self._threads)
+        return query
+
+    def find(self, boxes, against=None):
+        """The pairs of ``find_pairs(boxes, against)`` with the finder's
+        settings: uint32 (K, 2), sorted, a new array."""
+        form, boxes, against = _scene(boxes, against)
+        query = self._query(form)
+        find = query.find_poses if form == "poses" else query.find_corners
+        pairs = find(boxes, against)
+        self._last = query
+        return pairs
+
+    @property
+    def stats(self):
+        """What the last call of :meth:`find` did (all zero before the first)."""
+        return FindPairsStats() if self._last is None else self._last.stats
+
+
+def bounds(boxes):
+    """The axis-aligned bounds of each rectangle as the scene queries compute
+    them (``obbsat/ref/bounds.hpp``): float32 (N, 4), rows ``lo_x, lo_y,
+    hi_x, hi_y``, closed. :func:`find_pairs` hands a pair to its method
+    exactly when these overlap: ``lo_x[i] <= hi_x[j]`` and ``lo_x[j] <=
+    hi_x[i]``, the same in y.
+
+    For corners they are the least and greatest corner coordinates, exactly.
+    For poses, per axis in float32 with each operation rounded once::
+
+        ex = (|c|*hx) + (|s|*hy)                 ey = (|s|*hx) + (|c|*hy)
+        mx = ((|cx| + ex) * 2**-21) + 2**-140    my likewise with cy, ey
+        lo_x = (cx - ex) - mx                    hi_x = (cx + ex) + mx
+
+    which contain the pose's exact point set (the margin covers the
+    rounding; a pose near the end of the float range gets infinite bounds).
+
+    ``boxes`` is an array as :func:`collide` takes it (checked the same way,
+    not copied when float32 and C-contiguous) or a store.
+
+    >>> obbsat.bounds(np.array([[0, 1, 2, 1, 2, 0, 0, 0]], dtype=np.float32))
+    array([[0., 0., 2., 1.]], dtype=float32)
+    >>> obbsat.bounds(np.array([[0, 0, 2, 1, 0, 1]], dtype=np.float32))  # turned a quarter
+    array([[-1.0000005, -2.000001 ,  1.0000005,  2.000001 ]], dtype=float32)
+    """
+    form, boxes = _scene_form(boxes, "boxes")
+    return _core.pose_bounds(boxes) if form == "poses" else _core.corner_bounds(boxes)

@@ -4,6 +4,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import testing as testing
+from ._core import FindPairsStats as FindPairsStats
 from ._core import PoseRecords as PoseRecords
 from ._core import RectRecords as RectRecords
 from ._core import UnsupportedBackendError as UnsupportedBackendError
@@ -45,3 +46,23 @@ def collide_stream(
     out: _Out | None = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
 def corners_of_poses(poses: npt.ArrayLike | PoseRecords, backend: str = ...) -> npt.NDArray[np.float32]: ...
+def find_pairs(
+    boxes: npt.ArrayLike | RectRecords | PoseRecords,
+    against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+    *,
+    method: str | None = ...,
+    backend: str = ...,
+    threads: int = ...,
+) -> npt.NDArray[np.uint32]: ...
+
+class PairFinder:
+    def __init__(self, method: str | None = ..., backend: str = ..., threads: int = ...) -> None: ...
+    def find(
+        self,
+        boxes: npt.ArrayLike | RectRecords | PoseRecords,
+        against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+    ) -> npt.NDArray[np.uint32]: ...
+    @property
+    def stats(self) -> FindPairsStats: ...
+
+def bounds(boxes: npt.ArrayLike | RectRecords | PoseRecords) -> npt.NDArray[np.float32]: ...

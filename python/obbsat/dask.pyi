@@ -12,3 +12,13 @@ def collide(
 def colliding_pairs(
     rects: Any, pairs: da.Array, method: str | None = ..., backend: str = ..., threads: int = ..., client: Any = ...
 ) -> da.Array: ...
+def find_pairs(
+    boxes: Any,
+    tile: float,
+    against: Any = ...,
+    *,
+    method: str | None = ...,
+    backend: str = ...,
+    threads: int = ...,
+    extent: tuple[float, float, float, float] | None = ...,
+) -> da.Array: ...

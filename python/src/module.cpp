@@ -11,6 +11,13 @@
 // pose_records). A method is checked against the store before anything is
 // read or copied.
 //
+// Scene queries (find_pairs, PairFinder) take one or two stores of one kind:
+// a RectRecords or PoseRecords passed in is read as it is; an array is copied
+// into the store the library's scene query reads (it has no entry point over
+// rows in the caller's memory), checked as it is copied. The pairs come back
+// in the vector the library filled, owned by the numpy array (no copy), or,
+// from a PairFinder, copied out of the finder's reused buffer.
+//
 // Errors: obbsat::invalid_input becomes IndexError when it names a pair (an
 // index out of range) and ValueError otherwise (a non-finite coordinate, a bad
 // pose field, a method that does not run on the store, batches of unequal
@@ -19,23 +26,30 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/error.hpp>
+#include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_scene.hpp>
 #include <obbsat/pose_soa.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
+#include <obbsat/ref/bounds.hpp>
 #include <obbsat/scene.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -141,16 +155,17 @@ std::uint8_t* verdicts_in_place(py::array& out, std::size_t count) {
     return static_cast<std::uint8_t*>(out.mutable_data());
 }
 
-/// Runs `call` without the GIL, turning the library's exceptions into Python's.
+/// Runs `call` without the GIL and returns what it returns, turning the
+/// library's exceptions into Python's.
 template <class Call>
-obbsat::backend without_gil(const Call& call) {
+auto without_gil(const Call& call) -> decltype(call()) {
     std::string invalid;
     std::string unsupported;
-    obbsat::backend ran = obbsat::backend::automatic;
+    std::optional<decltype(call())> result;
     {
         py::gil_scoped_release release;
         try {
-            ran = call();
+            result.emplace(call());
         } catch (const obbsat::invalid_input& e) {
             invalid = e.what();
         } catch (const obbsat::unsupported_backend& e) {
@@ -166,7 +181,7 @@ obbsat::backend without_gil(const Call& call) {
         }
         throw py::value_error(invalid);
     }
-    return ran;
+    return std::move(*result);
 }
 
 /// Throws the library's invalid_input when options.test does not run on
@@ -214,12 +229,7 @@ std::string collide_store(const obbsat::rect_records& store, const py::array& pa
 /// A rect_records store holding a checked copy of `corners` (float32 (N, 8), read in place).
 obbsat::rect_records records_of(const py::array& corners) {
     const auto [rects, count] = corners_in_place(corners, "rects");
-    obbsat::rect_records store;
-    without_gil([&, rects = rects, count = count] {
-        store = obbsat::rect_records(rects, count);
-        return obbsat::backend::automatic;
-    });
-    return store;
+    return without_gil([&, rects = rects, count = count] { return obbsat::rect_records(rects, count); });
 }
 
 /// The records of `store` as a read-only float32 (N, 8) array over its memory, kept alive by `owner`.
@@ -262,12 +272,7 @@ std::string collide_stream(const py::array& a, const py::array& b, py::array& ou
 /// A pose_records store holding a checked copy of `poses` (float32 (N, 6), read in place).
 obbsat::pose_records pose_records_of(const py::array& poses) {
     const auto [list, count] = poses_in_place(poses, "poses");
-    obbsat::pose_records store;
-    without_gil([&, list = list, count = count] {
-        store = obbsat::pose_records(list, count);
-        return obbsat::backend::automatic;
-    });
-    return store;
+    return without_gil([&, list = list, count = count] { return obbsat::pose_records(list, count); });
 }
 
 /// The poses of `store` as a read-only float32 (N, 6) array over its records
@@ -375,6 +380,231 @@ std::string pose_corners(const py::array& poses, py::array& out, const std::stri
         return obbsat::convert_to_corners(store, corners, resolved);
     });
     return obbsat::backend_name(ran);
+}
+
+// --- Scene queries ---------------------------------------------------------
+
+/// What each kind of store reads from an array, and how it names its kind.
+template <class Store>
+struct store_traits;
+
+template <>
+struct store_traits<obbsat::rect_records> {
+    using row = obbsat::rect;
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
+    static constexpr const char* class_name = "RectRecords";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return corners_in_place(a, what);
+    }
+};
+
+template <>
+struct store_traits<obbsat::pose_records> {
+    using row = obbsat::rect_pose;
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
+    static constexpr const char* class_name = "PoseRecords";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return poses_in_place(a, what);
+    }
+};
+
+/// One side of a scene query: a store passed from Python, or the rows of an
+/// array (read in place, copied into a store once the GIL is released). The
+/// Python objects outlive the call, so both pointers stay valid.
+template <class Store>
+struct scene_side {
+    const Store* store = nullptr;
+    const typename store_traits<Store>::row* rows = nullptr;
+    std::size_t count = 0;
+    const char* what = "";
+};
+
+template <class Store>
+scene_side<Store> side_of(const py::handle& boxes, const char* what) {
+    using traits = store_traits<Store>;
+    scene_side<Store> side;
+    side.what = what;
+    if (py::isinstance<Store>(boxes)) {
+        side.store = &boxes.cast<const Store&>();
+        return side;
+    }
+    if (!py::isinstance<py::array>(boxes)) {
+        throw py::type_error(std::string(what) + ": expected a numpy array or a " + traits::class_name + ", got " +
+                             std::string(py::str(py::type::of(boxes).attr("__name__"))));
+    }
+    const auto [rows, count] = traits::rows_in_place(py::reinterpret_borrow<py::array>(boxes), what);
+    side.rows = rows;
+    side.count = count;
+    return side;
+}
+
+/// The store of `side`: the one Python passed, or a checked copy of its rows
+/// placed in `copy` (an error names the side when `named`, in a cross query).
+template <class Store>
+const Store& store_of(const scene_side<Store>& side, std::optional<Store>& copy, bool named) {
+    if (side.store != nullptr) {
+        return *side.store;
+    }
+    try {
+        copy.emplace(side.rows, side.count);
+    } catch (const obbsat::invalid_input& e) {
+        if (named) {
+            throw obbsat::invalid_input(std::string(side.what) + ": " + e.what());
+        }
+        throw;
+    }
+    return *copy;
+}
+
+/// The pairs as a uint32 (K, 2) array that owns `pairs`' memory (no copy).
+py::array_t<std::uint32_t> pair_array(std::vector<obbsat::pair_index>&& pairs) {
+    const py::ssize_t count = static_cast<py::ssize_t>(pairs.size());
+    if (pairs.empty()) {
+        return py::array_t<std::uint32_t>({count, py::ssize_t{2}});
+    }
+    auto owned = std::make_unique<std::vector<obbsat::pair_index>>(std::move(pairs));
+    const auto* data = reinterpret_cast<const std::uint32_t*>(owned->data());
+    py::capsule owner(owned.get(), [](void* p) { delete static_cast<std::vector<obbsat::pair_index>*>(p); });
+    owned.release();
+    return py::array_t<std::uint32_t>({count, py::ssize_t{2}}, data, owner);
+}
+
+/// Every colliding pair of `boxes` (against = None) or across `boxes` and
+/// `against`, both of the store kind Store, sorted.
+template <class Store>
+py::array_t<std::uint32_t> find_pairs_of(const py::object& boxes, const py::object& against,
+                                         const std::string& method, const std::string& backend, long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const bool cross = !against.is_none();
+    const scene_side<Store> a = side_of<Store>(boxes, "boxes");
+    const scene_side<Store> b = cross ? side_of<Store>(against, "against") : scene_side<Store>{};
+    return pair_array(without_gil([&] {
+        require_runs_on(options, store_traits<Store>::kind);
+        std::optional<Store> copy_a;
+        std::optional<Store> copy_b;
+        const Store& store_a = store_of(a, copy_a, cross);
+        if (!cross) {
+            return obbsat::find_pairs(store_a, options);
+        }
+        return obbsat::find_pairs(store_a, store_of(b, copy_b, true), options);
+    }));
+}
+
+/// A pair_finder shared with Python: one query at a time (a second thread
+/// waits, without the GIL), each answer copied out of the finder's buffer,
+/// which the next query reuses.
+class scene_finder {
+public:
+    explicit scene_finder(const obbsat::collide_options& options) : options_(options), finder_(options) {}
+
+    template <class Store>
+    py::array_t<std::uint32_t> find(const py::object& boxes, const py::object& against) {
+        const bool cross = !against.is_none();
+        const scene_side<Store> a = side_of<Store>(boxes, "boxes");
+        const scene_side<Store> b = cross ? side_of<Store>(against, "against") : scene_side<Store>{};
+        return pair_array(without_gil([&] {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            require_runs_on(options_, store_traits<Store>::kind);
+            std::optional<Store> copy_a;
+            std::optional<Store> copy_b;
+            const Store& store_a = store_of(a, copy_a, cross);
+            const std::vector<obbsat::pair_index>& found =
+                cross ? finder_.find(store_a, store_of(b, copy_b, true)) : finder_.find(store_a);
+            return std::vector<obbsat::pair_index>(found);
+        }));
+    }
+
+    obbsat::find_pairs_stats stats() {
+        py::gil_scoped_release release;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        return finder_.stats();
+    }
+
+private:
+    obbsat::collide_options options_;
+    std::mutex mutex_;
+    obbsat::pair_finder finder_;
+};
+
+std::unique_ptr<scene_finder> make_scene_finder(const std::string& method, const std::string& backend,
+                                                long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    // A backend this CPU cannot run is refused here rather than at the first query.
+    obbsat::resolve_backend(options.use);
+    return std::make_unique<scene_finder>(options);
+}
+
+/// The rectangles of a corner array are finite, or the library's message names the first that is not.
+void require_finite_corners(const obbsat::rect* rects, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const float* v = &rects[i].ul.x;
+        for (int k = 0; k < 8; ++k) {
+            if (!std::isfinite(v[k])) {
+                obbsat::rect_records{rects, i + 1};  // throws, naming rectangle i and its coordinate
+            }
+        }
+    }
+}
+
+/// Writes the bounds of `count` boxes, each read by `box(i)`, as rows lo_x, lo_y, hi_x, hi_y.
+template <class Box>
+void write_bounds(std::size_t count, const Box& box, float* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const obbsat::ref::box_bounds b = obbsat::ref::bounds_of(box(i));
+        out[4 * i + 0] = b.lo_x;
+        out[4 * i + 1] = b.lo_y;
+        out[4 * i + 2] = b.hi_x;
+        out[4 * i + 3] = b.hi_y;
+    }
+}
+
+/// The bounds of every box of a store of kind Store, or of an array of its
+/// rows (checked as the store checks them), as float32 (N, 4).
+template <class Store>
+py::array_t<float> bounds_of(const py::object& boxes) {
+    const scene_side<Store> side = side_of<Store>(boxes, "boxes");
+    const std::size_t count = side.store != nullptr ? side.store->size() : side.count;
+    py::array_t<float> out({static_cast<py::ssize_t>(count), py::ssize_t{4}});
+    float* rows = out.mutable_data();
+    without_gil([&] {
+        if (side.store != nullptr) {
+            const Store& store = *side.store;
+            write_bounds(count, [&](std::size_t i) { return store[i]; }, rows);
+        } else if constexpr (std::is_same<Store, obbsat::rect_records>::value) {
+            require_finite_corners(side.rows, count);
+            write_bounds(count, [&](std::size_t i) { return side.rows[i]; }, rows);
+        } else {
+            for (std::size_t i = 0; i < count; ++i) {
+                obbsat::require_valid_pose(side.rows[i], i);
+            }
+            write_bounds(count, [&](std::size_t i) { return side.rows[i]; }, rows);
+        }
+        return true;
+    });
+    return out;
+}
+
+py::array_t<float> make_pose_scene(std::size_t boxes, const std::string& sizes, double pairs_per_box,
+                                   std::uint64_t seed) {
+    const std::optional<obbsat::scene_sizes> parsed = obbsat::parse_scene_sizes(sizes);
+    if (!parsed) {
+        throw py::value_error("unknown sizes '" + sizes + "' (known: uniform, mixed)");
+    }
+    obbsat::pose_scene_spec spec;
+    spec.seed = seed;
+    spec.boxes = boxes;
+    spec.sizes = *parsed;
+    spec.pairs_per_box = pairs_per_box;
+    std::vector<obbsat::rect_pose> poses;
+    {
+        py::gil_scoped_release release;
+        poses = obbsat::make_pose_scene(spec);
+    }
+    py::array_t<float> out({static_cast<py::ssize_t>(poses.size()), py::ssize_t{6}});
+    if (!poses.empty()) {
+        std::memcpy(out.mutable_data(), poses.data(), poses.size() * sizeof(obbsat::rect_pose));
+    }
+    return out;
 }
 
 std::vector<std::string> runnable_backends() {
@@ -515,6 +745,66 @@ PYBIND11_MODULE(_core, m) {
           "The corners of float32 (N, 6) poses written to out, float32 (N, 4, 2); returns the backend that ran.");
     m.def("store_corners", &store_corners, py::arg("store"), py::arg("out"), py::arg("backend"),
           "The corners of a PoseRecords store written to out, float32 (N, 4, 2); returns the backend that ran.");
+    m.def("find_pairs_corners", &find_pairs_of<obbsat::rect_records>, py::arg("boxes"), py::arg("against"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Every colliding pair of corner boxes (float32 (N, 8) or (N, 4, 2), copied into records, or a "
+          "RectRecords), or across boxes and against: uint32 (K, 2) sorted by (i, j).");
+    m.def("find_pairs_poses", &find_pairs_of<obbsat::pose_records>, py::arg("boxes"), py::arg("against"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Every colliding pair of poses (float32 (N, 6), copied into records, or a PoseRecords), or across "
+          "boxes and against: uint32 (K, 2) sorted by (i, j).");
+    py::class_<obbsat::find_pairs_stats>(m, "FindPairsStats", "What one scene query did (obbsat::find_pairs_stats).")
+        .def(py::init<>())
+        .def_readonly("boxes", &obbsat::find_pairs_stats::boxes,
+                      "rectangles in the query (both sides of a cross query)")
+        .def_readonly("strips", &obbsat::find_pairs_stats::strips, "horizontal strips of the sweep")
+        .def_readonly("visits", &obbsat::find_pairs_stats::visits,
+                      "extra strip entries of rectangles taller than their strip")
+        .def_readonly("candidates", &obbsat::find_pairs_stats::candidates,
+                      "pairs whose bounds overlap, handed to the method")
+        .def_readonly("pairs", &obbsat::find_pairs_stats::pairs, "pairs reported")
+        .def_readonly("slow_path_pairs", &obbsat::find_pairs_stats::slow_path_pairs,
+                      "candidates decided on the exact slow path (method exact)")
+        .def_readonly("reused_order", &obbsat::find_pairs_stats::reused_order,
+                      "the previous query's order was repaired, not rebuilt")
+        .def_readonly("bounds_seconds", &obbsat::find_pairs_stats::bounds_seconds,
+                      "bounds, the strips and the sort keys")
+        .def_readonly("order_seconds", &obbsat::find_pairs_stats::order_seconds,
+                      "sorting, copying the records into the sorted order, visits")
+        .def_readonly("sweep_seconds", &obbsat::find_pairs_stats::sweep_seconds,
+                      "broadphase sweep and the method's kernels")
+        .def_readonly("output_seconds", &obbsat::find_pairs_stats::output_seconds,
+                      "mapping back to the caller's indices and sorting")
+        .def("__repr__", [](const obbsat::find_pairs_stats& s) {
+            const auto count = [](const char* name, std::size_t value) {
+                return std::string(name) + "=" + std::to_string(value) + ", ";
+            };
+            const auto seconds = [](const char* name, double value) {
+                return std::string(name) + "=" + std::string(py::repr(py::float_(value)));
+            };
+            return "FindPairsStats(" + count("boxes", s.boxes) + count("strips", s.strips) +
+                   count("visits", s.visits) + count("candidates", s.candidates) + count("pairs", s.pairs) +
+                   count("slow_path_pairs", s.slow_path_pairs) + "reused_order=" +
+                   (s.reused_order ? "True, " : "False, ") + seconds("bounds_seconds", s.bounds_seconds) + ", " +
+                   seconds("order_seconds", s.order_seconds) + ", " + seconds("sweep_seconds", s.sweep_seconds) +
+                   ", " + seconds("output_seconds", s.output_seconds) + ")";
+        });
+    py::class_<scene_finder>(m, "PairFinder",
+                             "obbsat::pair_finder: a scene query that keeps its order and buffers between calls.")
+        .def(py::init(&make_scene_finder), py::arg("method"), py::arg("backend"), py::arg("threads"))
+        .def("find_corners", &scene_finder::find<obbsat::rect_records>, py::arg("boxes"), py::arg("against"),
+             "find_pairs_corners through the finder; the pairs are a copy of its buffer.")
+        .def("find_poses", &scene_finder::find<obbsat::pose_records>, py::arg("boxes"), py::arg("against"),
+             "find_pairs_poses through the finder; the pairs are a copy of its buffer.")
+        .def_property_readonly("stats", &scene_finder::stats, "What the last query did.");
+    m.def("corner_bounds", &bounds_of<obbsat::rect_records>, py::arg("boxes"),
+          "The bounds lo_x, lo_y, hi_x, hi_y of corner boxes (float32 (N, 8) or (N, 4, 2), or a RectRecords) "
+          "as obbsat/ref/bounds.hpp computes them: float32 (N, 4).");
+    m.def("pose_bounds", &bounds_of<obbsat::pose_records>, py::arg("boxes"),
+          "The bounds lo_x, lo_y, hi_x, hi_y of poses (float32 (N, 6), or a PoseRecords) as "
+          "obbsat/ref/bounds.hpp computes them: float32 (N, 4).");
+    m.def("make_pose_scene", &make_pose_scene, py::arg("boxes"), py::arg("sizes"), py::arg("pairs_per_box"),
+          py::arg("seed"), "The library's seeded scene of poses (obbsat::make_pose_scene): float32 (N, 6).");
     m.def("runnable_backends", &runnable_backends, "Backends this build and CPU run, best first.");
     m.def("compiled_backends", &compiled_backend_names, "Backends compiled into this build, best first.");
     m.def("methods", &method_names, py::arg("store"),

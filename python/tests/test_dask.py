@@ -1,7 +1,7 @@
 """obbsat.dask on a LocalCluster of two worker processes (loopback only):
 verdicts identical to the single-process call, for corners and for poses, the
 rectangles sent to each worker once, errors named by their row in the whole
-list."""
+list; the scene query in tiles gives the in-memory pairs."""
 
 import doctest
 
@@ -114,3 +114,18 @@ def test_a_bad_pose_is_refused_before_any_work(client):
     poses[7, 3] = -2
     with pytest.raises(ValueError, match="^pose 7: half extent hy is -2, negative$"):
         obbsat.dask.collide(poses, da.zeros((10, 2), dtype=np.uint32, chunks=5))
+
+
+def test_a_scene_query_in_tiles_on_two_workers(client):
+    poses = obbsat.testing.make_pose_scene(boxes=40_000, sizes="mixed", pairs_per_box=3, seed=12)
+    lazy_boxes = da.from_array(poses, chunks=(10_000, 6))
+    side = float(obbsat.bounds(poses)[:, 2:].max())
+    lazy = obbsat.dask.find_pairs(lazy_boxes, side / 6, method="exact")
+    with distributed.get_task_stream(client) as stream:
+        pairs = client.compute(lazy).result()
+    assert pairs.tobytes() == obbsat.find_pairs(poses, method="exact").tobytes()
+    ran_on = {t["worker"] for t in stream.data if "_tile_pairs" in str(t["key"])}
+    assert len(ran_on) == 2, "both workers searched tiles"
+    a, b = poses[:15_000], poses[15_000:]
+    cross = obbsat.dask.find_pairs(da.from_array(a, chunks=(5000, 6)), side / 4, b).compute()
+    assert cross.tobytes() == obbsat.find_pairs(a, b).tobytes()

@@ -1,5 +1,6 @@
 #include "pair_sort.hpp"
 
+#include "bit_width.hpp"
 #include "thread_pool.hpp"
 
 #include <algorithm>
@@ -10,14 +11,6 @@ namespace obbsat::detail {
 namespace {
 
 constexpr unsigned bucket_bits = 8;
-
-unsigned bits_for(std::size_t largest) {
-    unsigned bits = 0;
-    while (bits < 64 && (largest >> bits) != 0) {
-        ++bits;
-    }
-    return bits;
-}
 
 /// Sorts pairs[0, n), all of whose a share their high bits, by a then b:
 /// a counting sort on the low `low_bits` of a through `spare`, then an

@@ -1,5 +1,7 @@
 #include "strip_grid.hpp"
 
+#include "bit_width.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,14 +10,6 @@ namespace obbsat::detail {
 namespace {
 
 constexpr unsigned max_strip_bits = 20;
-
-unsigned bits_for(std::uint32_t largest) {
-    unsigned bits = 0;
-    while (bits < 32 && (largest >> bits) != 0) {
-        ++bits;
-    }
-    return bits;
-}
 
 }  // namespace
 

@@ -391,8 +391,7 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
     }
 }
 
-void pair_search::sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit) {
-    (void)input;
+void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     // Strips split so that each part has about the same number of entries.
     const std::uint32_t strips = grid_.strips;
     const std::size_t entries = n_ + stats_.visits;
@@ -484,7 +483,7 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     collect_visits(parts);
     stats_.order_seconds = seconds_since(start);
     start = clock_type::now();
-    sweep(input, parts, emit ? &emit : nullptr);
+    sweep(parts, emit ? &emit : nullptr);
     stats_.sweep_seconds = seconds_since(start);
     if (options_.slow_path_pairs != nullptr) {
         *options_.slow_path_pairs = stats_.slow_path_pairs;

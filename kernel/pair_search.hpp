@@ -91,7 +91,7 @@ private:
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
     void collect_visits(std::size_t parts);
-    void sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
+    void sweep(std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
     void sort_found();

@@ -71,7 +71,7 @@ struct pose_steps {
                                    xsimd::max(xsimd::abs(b.c), xsimd::abs(b.s)));
         const batch H = ((a.hx + a.hy) + b.hx) + b.hy;
         const batch S = (D * R) + ((R * R) * H);
-        const mask proves = (S <= batch(0x1p100f)) & (R >= batch(0x1p-40f));
+        const mask proves = (S <= batch(0x1p100f)) & (R >= batch(0x1p-40f)) & (R <= batch(0x1p62f));
         return xsimd::select(proves, (batch(0x1p-19f) * S) + batch(0x1p-140f),
                              batch(std::numeric_limits<float>::infinity()));
     }

@@ -17,7 +17,7 @@ float pose_margin(const rect_pose& a, const rect_pose& b, const pose_axes& axes)
                               std::fmax(std::fabs(b.rotation.x), std::fabs(b.rotation.y)));
     const float H = ((a.half_extents.x + a.half_extents.y) + b.half_extents.x) + b.half_extents.y;
     const float S = (D * R) + ((R * R) * H);
-    if (S <= 0x1p100f && R >= 0x1p-40f) {
+    if (S <= 0x1p100f && R >= 0x1p-40f && R <= 0x1p62f) {
         return (0x1p-19f * S) + 0x1p-140f;
     }
     return std::numeric_limits<float>::infinity();

@@ -4,15 +4,18 @@
 // never misses a collision, the certified fast path of exact never claims a
 // wrong answer, local is exact where its float arithmetic is (small integers),
 // and exact is the oracle.
+#include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/ref/local.hpp>
 #include <obbsat/ref/pose_conservative.hpp>
+#include <obbsat/scene.hpp>
 #include <obbsat/suites/pose_suite.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <string>
@@ -177,3 +180,60 @@ TEST(pose_accuracy, exact_on_poses_is_the_oracle_on_every_backend) {
 }
 
 }  // namespace
+
+// Rotation vectors near the top of the float range with half extents near the
+// bottom: S (the margin's scale) stays small while c² + s² overflows, so a
+// margin that trusted S alone let an infinite reach "prove" overlap. Every
+// claim must still agree with the oracle, on the reference and every backend.
+TEST(pose_accuracy, huge_rotations_with_tiny_half_extents_prove_nothing_false) {
+    std::vector<rect_pose> as, bs;
+    // The pair that first showed it: two specks 2^-20 apart, apart in exact arithmetic.
+    as.push_back(rect_pose{{0x1.4p+3f, 0x1.4p+4f}, {0x1p-127f, 0x1.09p-130f}, {0x1.7e3332p+63f, 0x1.bebebep+63f}});
+    bs.push_back(rect_pose{{0x1.400002p+3f, 0x1.400002p+4f},
+                           {0x1.000004p-127f, 0x1.09002p-130f},
+                           {0x1.7e3338p+63f, 0x1.bebec2p+63f}});
+    obbsat::seeded_random random(11);
+    for (int i = 0; i < 20000; ++i) {
+        const float rotation_scale = std::ldexp(1.0f, 58 + static_cast<int>(random.below(8)));
+        const float half_scale = std::ldexp(1.0f, -135 + static_cast<int>(random.below(40)));
+        const float gap_scale = std::ldexp(1.0f, -40 + static_cast<int>(random.below(30)));
+        auto pose_near = [&](float x, float y) {
+            return rect_pose{{x, y},
+                             {random.uniform(0.0f, 2.0f) * half_scale, random.uniform(0.0f, 2.0f) * half_scale},
+                             {random.uniform(-1.0f, 1.0f) * rotation_scale, random.uniform(-1.0f, 1.0f) * rotation_scale}};
+        };
+        const float x = random.uniform(-10.0f, 10.0f);
+        const float y = random.uniform(-10.0f, 10.0f);
+        rect_pose a = pose_near(x, y);
+        rect_pose b = pose_near(x + random.uniform(-1.0f, 1.0f) * gap_scale, y + random.uniform(-1.0f, 1.0f) * gap_scale);
+        if (i % 4 == 0) {
+            b.center = a.center;  // the same center: the pair collides
+        }
+        as.push_back(a);
+        bs.push_back(b);
+    }
+    std::size_t colliding = 0;
+    for (std::size_t i = 0; i < as.size(); ++i) {
+        const bool truth = obbsat::oracle::intersects(as[i], bs[i]);
+        colliding += truth ? 1u : 0u;
+        const obbsat::ref::certified_verdict v = obbsat::ref::certify(as[i], bs[i]);
+        ASSERT_FALSE(v.separated && truth) << i;
+        ASSERT_FALSE(v.intersecting && !truth) << i;
+        ASSERT_TRUE(obbsat::ref::conservative(as[i], bs[i]) || !truth) << i;
+    }
+    EXPECT_GT(colliding, as.size() / 8);
+    EXPECT_LT(colliding, as.size());
+    const obbsat::pose_records a(as), b(bs);
+    for (const obbsat::backend use : obbsat::compiled_backends()) {
+        if (!obbsat::cpu_supports(use)) {
+            continue;
+        }
+        obbsat::collide_options options;
+        options.test = obbsat::method::exact;
+        options.use = use;
+        const std::vector<std::uint8_t> verdicts = obbsat::collide_stream(a, b, options);
+        for (std::size_t i = 0; i < verdicts.size(); ++i) {
+            ASSERT_EQ(verdicts[i] != 0, obbsat::oracle::intersects(as[i], bs[i])) << obbsat::backend_name(use) << " pair " << i;
+        }
+    }
+}

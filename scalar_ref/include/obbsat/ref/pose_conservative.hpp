@@ -8,8 +8,8 @@
 //   6. gap_k = |w_k| − r_k per axis, rounded once.
 //   7. D = |dx| + |dy|; R = the largest of |ca|, |sa|, |cb|, |sb| (exact);
 //      H = ((hxa + hya) + hxb) + hyb; S = (D·R) + ((R·R)·H).
-//   8. margin = (2^-19·S) + 2^-140 when S <= 2^100 and R >= 2^-40 (false for a
-//      NaN S), else +inf: such a pair proves nothing.
+//   8. margin = (2^-19·S) + 2^-140 when S <= 2^100 and 2^-40 <= R <= 2^62
+//      (false for a NaN S), else +inf: such a pair proves nothing.
 //   9. An axis proves the pair apart iff gap_k > margin, overlapping on that
 //      axis iff gap_k < −margin.
 //      conservative(a, b): false iff some axis proves the pair apart.
@@ -27,7 +27,9 @@
 // computed gap is within 3.02u·D·R + 10.01u·R²·H + 2^-146·H + 2^-147 of the
 // exact slack, below margin/(1+u) ≈ 32u·S, even after S's own five roundings.
 // A rounded gap beyond ±margin therefore has an exact slack of the same sign.
-// S <= 2^100 keeps every intermediate finite.
+// S <= 2^100 keeps every product with a center difference or a half extent
+// finite, R <= 2^62 the rotation products themselves (na, p, q below 2^125):
+// with tiny half extents S stays small while R·R alone may overflow.
 #pragma once
 
 #include <obbsat/rect_pose.hpp>

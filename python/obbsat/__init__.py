@@ -399,7 +399,7 @@ def _scene(boxes, against):
     return form, boxes, against
 
 
-def find_pairs(boxes, against=None, *, method=None, backend="auto", threads=1):
+def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1):
     """Every pair of rectangles that collides, with no pair list: the
     library's scene query (``obbsat::find_pairs``).
 
@@ -423,9 +423,10 @@ def find_pairs(boxes, against=None, *, method=None, backend="auto", threads=1):
         With it, the pairs (i, j) with i indexing ``boxes`` and j indexing
         ``against`` (every i and j, not only i < j).
     method : str, optional
-        One of :func:`methods` for the form; ``None``: ``"sat4"`` on corners,
-        ``"local"`` on poses, as in :func:`collide` (pass ``"exact"`` for the
-        exact answer; ``obbsat pairs`` on the command line defaults to it).
+        One of :func:`methods` for the form. The default, ``"exact"``, is the
+        default of every scene query (``obbsat pairs`` on the command line,
+        :func:`obbsat.dask.find_pairs`, :class:`PairFinder`): the exact answer.
+        :func:`collide` defaults to the fastest float method instead.
     backend, threads
         As in :func:`collide`; the answer never depends on them. The GIL is
         released during the query.
@@ -460,8 +461,6 @@ def find_pairs(boxes, against=None, *, method=None, backend="auto", threads=1):
            [1, 1]], dtype=uint32)
     """
     form, boxes, against = _scene(boxes, against)
-    if method is None:
-        method = _DEFAULT_METHOD[form]
     query = _core.find_pairs_poses if form == "poses" else _core.find_pairs_corners
     return query(boxes, against, method, backend, int(threads))
 
@@ -478,12 +477,11 @@ class PairFinder:
     next call reuses. ``stats`` says what the last call did
     (:class:`FindPairsStats`: ``boxes``, ``strips``, ``visits``,
     ``candidates``, ``pairs``, ``slow_path_pairs``, ``reused_order`` and the
-    seconds of each phase). ``method=None`` is the default of each form, as
-    in :func:`find_pairs`; the finder keeps one query per form it meets.
-    One call runs at a time (another thread calling meanwhile waits, with
+    seconds of each phase). The default method is ``"exact"``, as in
+    :func:`find_pairs`. One call runs at a time (another thread calling meanwhile waits, with
     the GIL released).
 
-    >>> finder = obbsat.PairFinder(method="exact")
+    >>> finder = obbsat.PairFinder()
     >>> poses = np.array([[0, 0, 1, 1, 1, 0], [2, 0, 1, 1, 1, 0], [5, 0, 1, 1, 1, 0]], dtype=np.float32)
     >>> finder.find(poses)
     array([[0, 1]], dtype=uint32)
@@ -495,42 +493,30 @@ class PairFinder:
     (3, 2)
     """
 
-    def __init__(self, method=None, backend="auto", threads=1):
+    def __init__(self, method="exact", backend="auto", threads=1):
         self._method = method
         self._backend = backend
         self._threads = int(threads)
-        self._last = None
+        self._ran = False
         # An unknown method or backend, one this CPU cannot run, or threads < 0 is refused here.
-        if method is None:
-            self._queries = {"corners": _core.PairFinder(_DEFAULT_METHOD["corners"], backend, self._threads)}
-        else:
-            query = _core.PairFinder(method, backend, self._threads)
-            self._queries = {"corners": query, "poses": query}
+        self._query = _core.PairFinder(method, backend, self._threads)
 
     def __repr__(self):
         return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads})"
-
-    def _query(self, form):
-        query = self._queries.get(form)
-        if query is None:
-            method = _DEFAULT_METHOD[form] if self._method is None else self._method
-            query = self._queries[form] = _core.PairFinder(method, self._backend, self._threads)
-        return query
 
     def find(self, boxes, against=None):
         """The pairs of ``find_pairs(boxes, against)`` with the finder's
         settings: uint32 (K, 2), sorted, a new array."""
         form, boxes, against = _scene(boxes, against)
-        query = self._query(form)
-        find = query.find_poses if form == "poses" else query.find_corners
+        find = self._query.find_poses if form == "poses" else self._query.find_corners
         pairs = find(boxes, against)
-        self._last = query
+        self._ran = True
         return pairs
 
     @property
     def stats(self):
         """What the last call of :meth:`find` did (all zero before the first)."""
-        return FindPairsStats() if self._last is None else self._last.stats
+        return self._query.stats if self._ran else FindPairsStats()
 
 
 def bounds(boxes):

@@ -50,13 +50,13 @@ def find_pairs(
     boxes: npt.ArrayLike | RectRecords | PoseRecords,
     against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
     *,
-    method: str | None = ...,
+    method: str = ...,
     backend: str = ...,
     threads: int = ...,
 ) -> npt.NDArray[np.uint32]: ...
 
 class PairFinder:
-    def __init__(self, method: str | None = ..., backend: str = ..., threads: int = ...) -> None: ...
+    def __init__(self, method: str = ..., backend: str = ..., threads: int = ...) -> None: ...
     def find(
         self,
         boxes: npt.ArrayLike | RectRecords | PoseRecords,

@@ -315,7 +315,7 @@ def _grid(sides, tile, extent):
     return x_lo, y_lo, tile, nx, ny
 
 
-def find_pairs(boxes, tile, against=None, *, method=None, backend="auto", threads=1, extent=None):
+def find_pairs(boxes, tile, against=None, *, method="exact", backend="auto", threads=1, extent=None):
     """Every colliding pair of a scene, found tile by tile: a lazy
     ``dask.array`` of shape (K, 2), uint32, sorted by (i, j), equal to
     :func:`obbsat.find_pairs` on the same boxes (K unknown until computed).
@@ -341,9 +341,8 @@ def find_pairs(boxes, tile, against=None, *, method=None, backend="auto", thread
         A cross query, as :func:`obbsat.find_pairs`: i indexes ``boxes``,
         j ``against``, both of one form.
     method, backend, threads
-        As in :func:`obbsat.find_pairs` (``threads`` per task);
-        ``method=None`` is ``"sat4"`` on corners, ``"local"`` on poses.
-        Checked here, before any work.
+        As in :func:`obbsat.find_pairs` (``threads`` per task; the method
+        ``"exact"`` by default). Checked here, before any work.
     extent : (x_lo, y_lo, x_hi, y_hi), optional
         The region the tiles cover. Without it, the least and greatest
         finite bounds of the boxes, computed when called (one pass over the
@@ -353,8 +352,8 @@ def find_pairs(boxes, tile, against=None, *, method=None, backend="auto", thread
 
     >>> import dask.array as da
     >>> poses = obbsat.testing.make_pose_scene(boxes=5000, seed=3)
-    >>> lazy = obbsat.dask.find_pairs(da.from_array(poses, chunks=(1000, 6)), tile=25, method="exact")
-    >>> np.array_equal(lazy.compute(), obbsat.find_pairs(poses, method="exact"))
+    >>> lazy = obbsat.dask.find_pairs(da.from_array(poses, chunks=(1000, 6)), tile=25)
+    >>> np.array_equal(lazy.compute(), obbsat.find_pairs(poses))
     True
     """
     import dask.array as da
@@ -367,8 +366,6 @@ def find_pairs(boxes, tile, against=None, *, method=None, backend="auto", thread
         if form_against != form:
             raise ValueError(f"boxes hold {form}, against holds {form_against}: a scene query compares one form")
         sides.append((against, "against"))
-    if method is None:
-        method = _obbsat._DEFAULT_METHOD[form]
     width = boxes.shape[1]
     # An unknown method or backend, a method not on the form, threads < 0: refused now.
     _obbsat.find_pairs(_np.empty((0, width), dtype=_np.float32), method=method, backend=backend, threads=threads)

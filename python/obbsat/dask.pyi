@@ -17,7 +17,7 @@ def find_pairs(
     tile: float,
     against: Any = ...,
     *,
-    method: str | None = ...,
+    method: str = ...,
     backend: str = ...,
     threads: int = ...,
     extent: tuple[float, float, float, float] | None = ...,

@@ -1,7 +1,7 @@
 """obbsat against shapely 1.8 on the same rectangles: Polygon.intersects per
 pair on a subset of a scene's candidate pairs (with the agreement of every
 method), and an STRtree scene query (all intersecting pairs) beside
-obbsat.colliding_pairs on the scene's candidate list.
+obbsat.find_pairs(method="exact"), pair by pair.
 
     python3 python/bench/bench_shapely.py --pairs 1000000 --subset 100000
 """
@@ -50,11 +50,10 @@ def main():
               f"{len(subset) - agree} |")
 
     # The scene query: every intersecting pair of a smaller scene. shapely:
-    # STRtree candidates by bounding box, then intersects. obbsat: the scene
-    # generator's candidate pairs (centres closer than the radius), then
-    # colliding_pairs; the answers are compared where both look.
+    # STRtree candidates by bounding box, then intersects. obbsat: find_pairs
+    # with method exact. The two pair sets are compared pair by pair.
     n = args.tree_rects
-    small_rects, small_pairs = obbsat.testing.make_scene(rects=n, pairs=10 * n, seed=2)
+    small_rects, _ = obbsat.testing.make_scene(rects=n, pairs=10 * n, seed=2)
     small_polygons = [Polygon(r.reshape(4, 2).astype(np.float64)) for r in small_rects]
     index_of = {id(p): i for i, p in enumerate(small_polygons)}
 
@@ -66,21 +65,27 @@ def main():
                 j = index_of[id(q)]
                 if i < j and p.intersects(q):
                     found.append((i, j))
-        return np.array(sorted(found), dtype=np.int64).reshape(-1, 2)
+        return found
 
     warnings.simplefilter("ignore", shapely.errors.ShapelyDeprecationWarning)
     tree_pairs, tree_time = timed(tree_query)
-    hits, obbsat_time = timed(lambda: obbsat.colliding_pairs(small_rects, small_pairs, method="exact"))
-    tree_set = set(map(tuple, tree_pairs.tolist()))
-    hit_set = set(map(tuple, hits.tolist()))
-    print(f"\nscene of {n} rectangles: STRtree query + intersects {tree_time:.2f} s, {len(tree_set)} pairs; "
-          f"obbsat.colliding_pairs(exact) on the {len(small_pairs)} candidate pairs {obbsat_time * 1e3:.1f} ms, "
-          f"{len(hit_set)} pairs ({tree_time / obbsat_time:.0f}x)")
-    candidates = set(map(tuple, small_pairs.astype(np.int64).tolist()))
-    missed = (tree_set - hit_set) & candidates
-    print(f"found by both: {len(tree_set & hit_set)}; only shapely: {len(tree_set - hit_set)}, of which "
-          f"{len(missed)} among obbsat's candidate pairs (the rest: no candidate pair to decide); "
-          f"only obbsat: {len(hit_set - tree_set)}")
+    tree_set = set(tree_pairs)
+    print(f"\nscene of {n} rectangles: STRtree query + intersects {tree_time:.2f} s, {len(tree_set)} pairs")
+    print("| obbsat.find_pairs(exact) | ms | speedup | pairs | found by both | only shapely | only obbsat |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for threads in (1, 2):
+        obbsat.find_pairs(small_rects, threads=threads)
+        best = None
+        for _ in range(5):
+            hits, t = timed(lambda: obbsat.find_pairs(small_rects, method="exact", threads=threads))
+            best = t if best is None else min(best, t)
+        hit_set = set(map(tuple, hits.tolist()))
+        print(f"| {threads} thread{'s' if threads > 1 else ''} | {best * 1e3:.1f} | {tree_time / best:.0f}x | "
+              f"{len(hit_set)} | {len(tree_set & hit_set)} | {len(tree_set - hit_set)} | {len(hit_set - tree_set)} |")
+    for i, j in sorted(tree_set ^ hit_set)[:5]:
+        side = "shapely" if (i, j) in tree_set else "obbsat"
+        print(f"  only {side}: ({i}, {j})\n    {small_rects[i].tolist()}\n    {small_rects[j].tolist()}")
+
 
 if __name__ == "__main__":
     main()

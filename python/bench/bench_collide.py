@@ -4,8 +4,9 @@ Both sides build the same seeded scene (obbsat::make_scene: PAIRS candidate
 pairs over PAIRS / 2 rectangles, typical density, seed 1) and time
 collide_pairs over it on the best backend, 1 and 2 threads, best of
 --repeats runs. Python is timed three ways, each against the C++ call it
-makes: a float32 array read in place (C++ collide_pairs over a rect array;
-both check the coordinates on each call), a RectRecords store (C++
+makes: a float32 array read in place as numpy placed it and as
+obbsat.aligned copied it (C++ collide_pairs over a rect array; both check
+the coordinates on each call), a RectRecords store (C++
 collide_pairs over rect_records, checked once), and, for the conversion
 cost, float64 corners with int64 pairs (against the rect array call).
 
@@ -41,6 +42,7 @@ def main():
 
     rects, pairs = obbsat.testing.make_scene(rects=args.pairs // 2, pairs=args.pairs, seed=1)
     store = obbsat.records(rects)
+    aligned = obbsat.aligned(rects)
     out = np.empty(len(pairs), dtype=bool)
     backend = obbsat.resolved_backend()
     print(f"scene: {len(rects)} rectangles, {len(pairs)} pairs; method {args.method}; backend {backend}")
@@ -61,8 +63,10 @@ def main():
         rows = [
             ("C++ collide_pairs(rect_records)", "records", None),
             ("C++ collide_pairs(rect*, count)", "array", None),
-            ("obbsat.collide(float32 array, uint32 pairs)", "array",
+            (f"obbsat.collide(float32 array at {rects.ctypes.data % 64} mod 64, uint32 pairs)", "array",
              lambda: obbsat.collide(rects, pairs, method=args.method, threads=threads, out=out)),
+            ("obbsat.collide(obbsat.aligned(float32 array), uint32 pairs)", "array",
+             lambda: obbsat.collide(aligned, pairs, method=args.method, threads=threads, out=out)),
             ("obbsat.collide(RectRecords, uint32 pairs)", "records",
              lambda: obbsat.collide(store, pairs, method=args.method, threads=threads, out=out)),
             ("obbsat.collide(float64 array, int64 pairs)", "array",

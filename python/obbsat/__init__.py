@@ -48,6 +48,7 @@ __all__ = [
     "PoseRecords",
     "RectRecords",
     "UnsupportedBackendError",
+    "aligned",
     "backends",
     "bounds",
     "collide",
@@ -62,9 +63,9 @@ __all__ = [
 
 _MAX_INDEX = 2**32 - 1
 
-# The method when none is given: the article's test on each form (as the
-# command-line program's ``collide --rects`` and ``collide --poses``), for
-# pair lists and scene queries alike.
+# The method of the pair-list calls when none is given: the article's test on
+# each form (as the command-line program's ``collide --rects`` and ``collide
+# --poses``). Scene queries default to exact instead.
 _DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
 
 
@@ -163,6 +164,36 @@ def records(rects):
         return rects
     form, rects = _form(rects, "rects")
     return PoseRecords(rects) if form == "poses" else RectRecords(rects)
+
+
+def aligned(array, alignment=64):
+    """``array`` itself when it starts on a multiple of ``alignment`` bytes
+    and is C-contiguous, else a C-contiguous copy that does (same dtype and
+    shape; the copy costs one pass over the array).
+
+    A corner row is 32 bytes. numpy starts large arrays on 16 bytes, so half
+    the rows of a float32 (N, 8) array straddle two cache lines, and a
+    pair-list call over that array, which reads each row at random, fetches
+    more lines: on the 1M-pair benchmark (docs/python.md) an aligned copy
+    made :func:`collide` about 13% faster. Align once, call many times.
+
+    >>> rects = obbsat.aligned(np.zeros((1000, 8), dtype=np.float32))
+    >>> rects.ctypes.data % 64
+    0
+    >>> obbsat.aligned(rects) is rects
+    True
+    """
+    alignment = int(alignment)
+    if alignment < 1 or alignment & (alignment - 1):
+        raise ValueError(f"alignment: expected a power of two, got {alignment}")
+    array = _np.asarray(array)
+    if array.flags.c_contiguous and array.ctypes.data % alignment == 0:
+        return array
+    raw = _np.empty(array.nbytes + alignment, dtype=_np.uint8)
+    start = -raw.ctypes.data % alignment
+    out = raw[start:start + array.nbytes].view(array.dtype).reshape(array.shape)
+    out[...] = array
+    return out
 
 
 def _pairs(pairs, rect_count):

@@ -68,3 +68,22 @@ def test_matching_arrays_allocate_nothing_in_the_library(batch):
     assert peak_growth(lambda: obbsat.collide(rects, pairs, out=out, threads=2)) < 4 * MB
     copied = peak_growth(lambda: obbsat.records(rects))
     assert copied > 24 * MB, "a RectRecords copy of 32 MB should show"
+
+
+def test_aligned_copies_only_what_is_not_aligned():
+    raw = np.zeros(8 * 1000 + 16, dtype=np.float32)
+    offset = next(k for k in range(16) if (raw.ctypes.data + 4 * k) % 64 == 16)
+    unaligned = raw[offset:offset + 8000].reshape(1000, 8)
+    unaligned[:] = np.arange(8000, dtype=np.float32).reshape(1000, 8)
+    assert unaligned.ctypes.data % 64 == 16
+    copy = obbsat.aligned(unaligned)
+    assert copy is not unaligned and copy.ctypes.data % 64 == 0
+    assert copy.dtype == np.float32 and copy.shape == (1000, 8) and copy.flags.c_contiguous
+    assert np.array_equal(copy, unaligned)
+    assert obbsat.aligned(copy) is copy
+    assert obbsat.aligned(unaligned, alignment=16) is unaligned
+    assert obbsat.aligned(unaligned[:, :6]).flags.c_contiguous  # a strided view is copied too
+    rects, pairs = obbsat.testing.make_scene(rects=1000, pairs=4000, seed=3)
+    assert np.array_equal(obbsat.collide(obbsat.aligned(rects), pairs), obbsat.collide(rects, pairs))
+    with pytest.raises(ValueError, match="power of two"):
+        obbsat.aligned(copy, alignment=48)

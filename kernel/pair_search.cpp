@@ -1,6 +1,7 @@
 #include "pair_search.hpp"
 
 #include "backend_registry.hpp"
+#include "finite_check.hpp"
 #include "method_check.hpp"
 #include "pair_sort.hpp"
 #include "radix_sort.hpp"
@@ -8,6 +9,7 @@
 #include "thread_pool.hpp"
 
 #include <obbsat/error.hpp>
+#include <obbsat/pose_records.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/ref/bounds.hpp>
 
@@ -18,6 +20,7 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -67,7 +70,51 @@ std::pair<std::size_t, std::size_t> share_of(std::size_t n, std::size_t part, st
 }
 
 const float* record_at(const query_input& input, std::size_t id) {
-    return id < input.a_count ? input.a + 8 * id : input.b + 8 * (id - input.a_count);
+    return id < input.a_count ? input.a + input.a_stride * id : input.b + input.b_stride * (id - input.a_count);
+}
+
+std::size_t stride_of(const query_input& input, std::size_t id) {
+    return id < input.a_count ? input.a_stride : input.b_stride;
+}
+
+/// True iff the values of one row are a valid rectangle of its kind: every
+/// value finite; for a pose, no half extent negative and a rotation that is
+/// not (0, 0) (as pose_records checks). Branch-free.
+bool valid_row(store_kind kind, const float* v) {
+    const std::size_t values = kind == store_kind::poses ? 6 : 8;
+    std::uint32_t carried = 0;
+    for (std::size_t k = 0; k < values; ++k) {
+        std::uint32_t bits;
+        std::memcpy(&bits, v + k, sizeof bits);
+        carried |= (bits & 0x7f800000u) + 0x00800000u;  // carries into bit 31 only for inf and NaN
+    }
+    bool ok = (carried & 0x80000000u) == 0;
+    if (kind == store_kind::poses) {
+        ok = ok & !(v[2] < 0.0f) & !(v[3] < 0.0f) & !(v[4] == 0.0f && v[5] == 0.0f);
+    }
+    return ok;
+}
+
+/// Throws the store's own message for row `id` of the query, which valid_row
+/// refused: "pose 7: ..." or "rectangle 7: ...", with "a: " or "b: " in front
+/// in a query across two sets.
+[[noreturn]] void refuse_row(const query_input& input, std::size_t id) {
+    const bool second = id >= input.a_count;
+    const std::size_t index = second ? id - input.a_count : id;
+    const float* v = record_at(input, id);
+    try {
+        if (input.kind == store_kind::poses) {
+            require_valid_pose(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, index);
+        } else {
+            require_finite(rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}, index);
+        }
+    } catch (const invalid_input& e) {
+        if (input.b == nullptr) {
+            throw;
+        }
+        throw invalid_input(std::string(second ? "b: " : "a: ") + e.what());
+    }
+    throw std::logic_error("obbsat: a row refused by the scene query passed its store's check");
 }
 
 ref::box_bounds bounds_of_record(store_kind kind, const float* v) {
@@ -95,17 +142,28 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         double y_low = std::numeric_limits<double>::infinity();
         double y_high = -std::numeric_limits<double>::infinity();
         double height_sum = 0;
+        std::size_t first_bad = std::numeric_limits<std::size_t>::max();
     };
     std::vector<partial> partials(parts);
+    // Rows the caller's memory holds are checked here, as they are read; a
+    // row that fails takes no part in anything that follows.
+    const bool check_a = !input.a_checked;
+    const bool check_b = !input.b_checked;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
         float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
         float height_sum = 0;
         double total = 0;
+        std::size_t first_bad = std::numeric_limits<std::size_t>::max();
         // Heights are summed in float over short runs and in double across them.
         constexpr std::size_t run = 256;
         for (std::size_t i = begin; i < end; ++i) {
-            const ref::box_bounds b = bounds_of_record(kind_, record_at(input, i));
+            const float* v = record_at(input, i);
+            if ((i < a_count_ ? check_a : check_b) && !valid_row(kind_, v)) {
+                first_bad = std::min(first_bad, i);
+                continue;
+            }
+            const ref::box_bounds b = bounds_of_record(kind_, v);
             if (with_keys) {
                 key_by_id_[i] = grid_.key_of(b.lo_x, b.lo_y);
             }
@@ -125,7 +183,13 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         p.y_low = clamp_finite(y_low);
         p.y_high = clamp_finite(y_high);
         p.height_sum = total + static_cast<double>(height_sum);
+        p.first_bad = first_bad;
     });
+    for (const partial& p : partials) {
+        if (p.first_bad != std::numeric_limits<std::size_t>::max()) {
+            refuse_row(input, p.first_bad);  // parts are in order: the first bad row of all
+        }
+    }
     partial all;
     for (const partial& p : partials) {
         all.x_low = std::min(all.x_low, p.x_low);
@@ -228,7 +292,13 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                 __builtin_prefetch(record_at(input, order_[k + ahead]));
             }
             const std::uint32_t id = order_[k];
-            std::memcpy(records_[k].v, record_at(input, id), sizeof(record));
+            if (stride_of(input, id) == sizeof(record) / sizeof(float)) {
+                std::memcpy(records_[k].v, record_at(input, id), sizeof(record));
+            } else {
+                // A pose row of six floats: the record's two last floats are zero.
+                std::memset(records_[k].v, 0, sizeof(record));
+                std::memcpy(records_[k].v, record_at(input, id), 6 * sizeof(float));
+            }
             // The same function on the same floats: the bounds of step 1.
             const ref::box_bounds b = bounds_of_record(kind_, records_[k].v);
             in_lo_x_[k] = b.lo_x;

@@ -38,13 +38,20 @@
 
 namespace obbsat::detail {
 
-/// The rectangles of one query: one or two stores of 32-byte records of one kind.
+/// The rectangles of one query: one or two sets of one kind, each rows of
+/// `stride` floats (a pose's first six floats are cx, cy, hx, hy, c, s; a
+/// corner row's eight are UL, UR, LR, LL). A set not `checked` is checked by
+/// the pass that computes the bounds.
 struct query_input {
     store_kind kind = store_kind::poses;
-    const float* a = nullptr;  ///< records of the first store
+    const float* a = nullptr;  ///< the first set
     std::size_t a_count = 0;
-    const float* b = nullptr;  ///< records of the second store; nullptr for a query within a
+    std::size_t a_stride = 8;
+    bool a_checked = true;
+    const float* b = nullptr;  ///< the second set; nullptr for a query within a
     std::size_t b_count = 0;
+    std::size_t b_stride = 8;
+    bool b_checked = true;
 };
 
 class pair_search {

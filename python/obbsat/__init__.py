@@ -448,8 +448,9 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
     ----------
     boxes : array_like, shape (N, 4, 2), (N, 8) or (N, 6), or a store
         Corners or poses, as in :func:`collide`, or a :func:`records` store
-        (read as it is). An array is copied once per call into the store the
-        scene query reads (32 bytes per rectangle), checked as it is copied.
+        (read as it is). A float32 C-contiguous array is read in place (no
+        copy) and checked by the query; other dtypes and layouts are
+        converted to that first, as in :func:`collide`.
     against : array_like or store of the same form, optional
         With it, the pairs (i, j) with i indexing ``boxes`` and j indexing
         ``against`` (every i and j, not only i < j).

@@ -11,10 +11,10 @@
 // pose_records). A method is checked against the store before anything is
 // read or copied.
 //
-// Scene queries (find_pairs, PairFinder) take one or two stores of one kind:
-// a RectRecords or PoseRecords passed in is read as it is; an array is copied
-// into the store the library's scene query reads (it has no entry point over
-// rows in the caller's memory), checked as it is copied. The pairs come back
+// Scene queries (find_pairs, PairFinder) take one or two sets of one kind:
+// a RectRecords or PoseRecords passed in, or the rows of an array, which the
+// library's scene query reads in place (obbsat::box_view) and checks in the
+// pass that computes the bounds. The pairs come back
 // in the vector the library filled, owned by the numpy array (no copy), or,
 // from a PairFinder, copied out of the finder's reused buffer.
 //
@@ -409,8 +409,8 @@ struct store_traits<obbsat::pose_records> {
 };
 
 /// One side of a scene query: a store passed from Python, or the rows of an
-/// array (read in place, copied into a store once the GIL is released). The
-/// Python objects outlive the call, so both pointers stay valid.
+/// array (read in place and checked by the query). The Python objects
+/// outlive the call, so both pointers stay valid.
 template <class Store>
 struct scene_side {
     const Store* store = nullptr;
@@ -438,22 +438,31 @@ scene_side<Store> side_of(const py::handle& boxes, const char* what) {
     return side;
 }
 
-/// The store of `side`: the one Python passed, or a checked copy of its rows
-/// placed in `copy` (an error names the side when `named`, in a cross query).
+/// What the scene query reads of `side`: the store, or the rows in place.
 template <class Store>
-const Store& store_of(const scene_side<Store>& side, std::optional<Store>& copy, bool named) {
+obbsat::box_view view_of(const scene_side<Store>& side) {
     if (side.store != nullptr) {
-        return *side.store;
+        return obbsat::box_view(*side.store);
     }
+    return obbsat::box_view(side.rows, side.count);
+}
+
+/// Runs `query`; a bad row of a cross query, which the library names "a: ..."
+/// or "b: ...", is named "boxes: ..." or "against: ..." as Python calls them.
+template <class Query>
+auto with_side_names(const Query& query) {
     try {
-        copy.emplace(side.rows, side.count);
+        return query();
     } catch (const obbsat::invalid_input& e) {
-        if (named) {
-            throw obbsat::invalid_input(std::string(side.what) + ": " + e.what());
+        const std::string text = e.what();
+        if (text.rfind("a: ", 0) == 0) {
+            throw obbsat::invalid_input("boxes: " + text.substr(3));
+        }
+        if (text.rfind("b: ", 0) == 0) {
+            throw obbsat::invalid_input("against: " + text.substr(3));
         }
         throw;
     }
-    return *copy;
 }
 
 /// The pairs as a uint32 (K, 2) array that owns `pairs`' memory (no copy).
@@ -480,13 +489,9 @@ py::array_t<std::uint32_t> find_pairs_of(const py::object& boxes, const py::obje
     const scene_side<Store> b = cross ? side_of<Store>(against, "against") : scene_side<Store>{};
     return pair_array(without_gil([&] {
         require_runs_on(options, store_traits<Store>::kind);
-        std::optional<Store> copy_a;
-        std::optional<Store> copy_b;
-        const Store& store_a = store_of(a, copy_a, cross);
-        if (!cross) {
-            return obbsat::find_pairs(store_a, options);
-        }
-        return obbsat::find_pairs(store_a, store_of(b, copy_b, true), options);
+        return with_side_names([&] {
+            return cross ? obbsat::find_pairs(view_of(a), view_of(b), options) : obbsat::find_pairs(view_of(a), options);
+        });
     }));
 }
 
@@ -505,12 +510,11 @@ public:
         return pair_array(without_gil([&] {
             const std::lock_guard<std::mutex> lock(mutex_);
             require_runs_on(options_, store_traits<Store>::kind);
-            std::optional<Store> copy_a;
-            std::optional<Store> copy_b;
-            const Store& store_a = store_of(a, copy_a, cross);
-            const std::vector<obbsat::pair_index>& found =
-                cross ? finder_.find(store_a, store_of(b, copy_b, true)) : finder_.find(store_a);
-            return std::vector<obbsat::pair_index>(found);
+            return with_side_names([&] {
+                const std::vector<obbsat::pair_index>& found =
+                    cross ? finder_.find(view_of(a), view_of(b)) : finder_.find(view_of(a));
+                return std::vector<obbsat::pair_index>(found);
+            });
         }));
     }
 

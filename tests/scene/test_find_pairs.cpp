@@ -16,6 +16,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -377,6 +379,82 @@ TEST(find_pairs, a_method_that_does_not_run_on_the_store_is_refused) {
     EXPECT_THROW(obbsat::find_pairs(poses, bad), obbsat::invalid_input);
     obbsat::pair_finder finder(bad);
     EXPECT_THROW(finder.find(poses), obbsat::invalid_input);
+}
+
+// Rows in the caller's memory.
+
+TEST(find_pairs, rows_in_place_give_the_pairs_of_the_stores) {
+    const auto poses = seeded_scene(20000, obbsat::scene_sizes::mixed, 91, 0, 2.0);
+    const auto corners = corners_of_scene(poses);
+    const obbsat::pose_records pose_store(poses);
+    const obbsat::rect_records corner_store(corners);
+    for (const method m : {method::exact, method::local, method::conservative}) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        EXPECT_SAME_PAIRS(obbsat::find_pairs(poses, options_for(m)), obbsat::find_pairs(pose_store, options_for(m)));
+    }
+    for (const method m : {method::exact, method::sat4}) {
+        SCOPED_TRACE(obbsat::method_name(m));
+        EXPECT_SAME_PAIRS(obbsat::find_pairs(corners, options_for(m)),
+                          obbsat::find_pairs(corner_store, options_for(m)));
+    }
+    // A cross query with rows on one side and a store on the other, both ways.
+    const std::vector<rect_pose> first(poses.begin(), poses.begin() + 8000);
+    const obbsat::pose_records second(std::vector<rect_pose>(poses.begin() + 8000, poses.end()));
+    const auto want = obbsat::find_pairs(obbsat::pose_records(first), second, options_for(method::exact, {}, 2));
+    EXPECT_SAME_PAIRS(obbsat::find_pairs(first, second, options_for(method::exact, {}, 2)), want);
+    EXPECT_SAME_PAIRS(obbsat::find_pairs(obbsat::box_view(poses.data(), 8000), second, options_for(method::exact)),
+                      want);
+    // A frame sequence over rows: every frame equals a fresh query over a store.
+    auto moving = poses;
+    obbsat::pair_finder finder(options_for(method::exact));
+    obbsat::seeded_random random(92);
+    for (int frame = 0; frame < 4; ++frame) {
+        EXPECT_SAME_PAIRS(finder.find(moving), obbsat::find_pairs(obbsat::pose_records(moving), options_for(method::exact)))
+            << "frame " << frame;
+        for (rect_pose& p : moving) {
+            p.center.x += random.uniform(-0.1f, 0.1f);
+        }
+    }
+}
+
+TEST(find_pairs, a_bad_row_is_refused_by_name_and_nothing_is_reported) {
+    auto poses = seeded_scene(40000, obbsat::scene_sizes::uniform, 93, 0, 2.0);
+    auto corners = corners_of_scene(poses);
+    const auto refused = [](const std::function<void()>& query, const std::string& text) {
+        try {
+            query();
+            ADD_FAILURE() << "accepted; expected: " << text;
+        } catch (const obbsat::invalid_input& e) {
+            EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+        }
+    };
+    std::size_t emitted = 0;
+    const obbsat::pair_chunk_sink count_them = [&](const pair_index*, std::size_t k) { emitted += k; };
+    // Two bad rows: the first is named, whichever thread reads it.
+    poses[30001].half_extents.y = -1.0f;
+    poses[15001].rotation = {0.0f, 0.0f};
+    for (const unsigned threads : {1u, 2u}) {
+        refused([&] { obbsat::find_pairs(poses, options_for(method::exact, {}, threads)); },
+                "pose 15001: rotation vector (c, s) is (0, 0)");
+        refused([&] { obbsat::find_pairs_each(poses, options_for(method::exact, {}, threads), count_them); },
+                "pose 15001");
+    }
+    poses[15001].rotation = {1.0f, 0.0f};
+    refused([&] { obbsat::find_pairs(poses, options_for(method::exact)); }, "pose 30001: half extent hy is -1");
+    poses[30001].half_extents.y = 1.0f;
+    poses[7].center.x = std::numeric_limits<float>::quiet_NaN();
+    const std::vector<rect_pose> a(poses.begin() + 5, poses.begin() + 10);
+    refused([&] { obbsat::find_pairs(a, poses, options_for(method::exact)); }, "a: pose 2:");
+    refused([&] { obbsat::find_pairs(obbsat::pose_records(a.data(), 1), poses,
+                                     options_for(method::exact)); }, "b: pose 7:");
+    obbsat::pair_finder finder(options_for(method::exact));
+    refused([&] { finder.find(poses); }, "pose 7:");
+    corners[12].lr.y = std::numeric_limits<float>::infinity();
+    refused([&] { obbsat::find_pairs(corners, options_for(method::exact)); }, "rectangle 12: coordinate lry is not finite");
+    EXPECT_EQ(emitted, 0u);
+    // One kind per query.
+    refused([&] { obbsat::find_pairs(obbsat::pose_records(a.data(), 1), obbsat::rect_records(),
+                                     options_for(method::exact)); }, "one kind");
 }
 
 // A persistent query over frames.

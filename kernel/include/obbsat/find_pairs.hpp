@@ -15,6 +15,14 @@
 // between rectangles whose bounds are apart is absent; every other verdict is
 // the method's own, the same on every backend and thread count.
 //
+// The rectangles come as a box_view: a store (pose_records, rect_records;
+// checked when it was built) or rows in the caller's memory (rect_pose or
+// rect, e.g. a std::vector of them or a numpy array), read in place and
+// checked by every query that reads them, in the pass that computes the
+// bounds: a non-finite value, a negative half extent or a zero rotation
+// vector is refused with invalid_input naming the row and the field, prefixed
+// "a: " or "b: " in a query across two sets; no pair is reported then.
+//
 // Memory: about 100 bytes per rectangle while the pairs are found (one copy
 // of the records in the query's own order, its bounds, order and strips)
 // and 8 bytes per reported pair; find_pairs releases the per-rectangle
@@ -27,6 +35,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
 
 #include <cstddef>
@@ -51,19 +60,52 @@ struct find_pairs_stats {
     double output_seconds = 0;   ///< mapping back to the caller's indices and sorting
 };
 
+/// The rectangles of one side of a scene query, where they are: it holds a
+/// pointer and a count, so what it views must outlive the query. Converts
+/// implicitly from a store and from a vector of rows.
+class box_view {
+public:
+    /// A pose store, checked when it was built.
+    box_view(const pose_records& poses);
+    /// A corner store, checked when it was built.
+    box_view(const rect_records& rects);
+    /// `count` poses in the caller's memory (24 bytes each), checked by every query.
+    box_view(const rect_pose* poses, std::size_t count);
+    /// `count` corner rectangles in the caller's memory (32 bytes each), checked by every query.
+    box_view(const rect* rects, std::size_t count);
+    /// The poses of a vector, in place, checked by every query.
+    box_view(const std::vector<rect_pose>& poses);
+    /// The rectangles of a vector, in place, checked by every query.
+    box_view(const std::vector<rect>& rects);
+
+    /// Poses or corners.
+    store_kind kind() const { return kind_; }
+    /// The number of rectangles.
+    std::size_t size() const { return count_; }
+    /// The first value of the first rectangle (a center x or an UL x); nullptr when empty.
+    const float* floats() const { return floats_; }
+    /// Floats from one rectangle to the next: 8 for records and corners, 6 for rect_pose rows.
+    std::size_t stride() const { return stride_; }
+    /// True for a store (checked when built), false for rows checked by each query.
+    bool checked() const { return checked_; }
+
+private:
+    const float* floats_ = nullptr;
+    std::size_t count_ = 0;
+    std::size_t stride_ = 0;  ///< floats from one rectangle to the next
+    store_kind kind_ = store_kind::poses;
+    bool checked_ = false;
+};
+
 /// Every pair (i, j), i < j, of `boxes` that collides under options.test,
 /// sorted by i then j. Throws invalid_input for a method that does not run on
-/// poses, unsupported_backend for a backend this CPU lacks.
-std::vector<pair_index> find_pairs(const pose_records& boxes, const collide_options& options);
+/// the boxes' kind or for an invalid box, unsupported_backend for a backend
+/// this CPU lacks.
+std::vector<pair_index> find_pairs(box_view boxes, const collide_options& options);
 
-/// Every pair (i, j), i in `a` and j in `b`, that collides, sorted by i then j.
-std::vector<pair_index> find_pairs(const pose_records& a, const pose_records& b, const collide_options& options);
-
-/// The same over corner records (methods that run on corners).
-std::vector<pair_index> find_pairs(const rect_records& boxes, const collide_options& options);
-
-/// The same over two corner stores.
-std::vector<pair_index> find_pairs(const rect_records& a, const rect_records& b, const collide_options& options);
+/// Every pair (i, j), i in `a` and j in `b`, that collides, sorted by i then
+/// j; `a` and `b` hold the same kind (invalid_input otherwise).
+std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options);
 
 /// Receives the colliding pairs in chunks, never from two threads at once,
 /// in no particular order (each pair once, i < j for one store, i in a and j
@@ -71,19 +113,13 @@ std::vector<pair_index> find_pairs(const rect_records& a, const rect_records& b,
 using pair_chunk_sink = std::function<void(const pair_index* pairs, std::size_t count)>;
 
 /// Streams the pairs of find_pairs to `sink` without holding them all.
-void find_pairs_each(const pose_records& boxes, const collide_options& options, const pair_chunk_sink& sink);
+void find_pairs_each(box_view boxes, const collide_options& options, const pair_chunk_sink& sink);
 /// Streams the pairs of the cross query to `sink`.
-void find_pairs_each(const pose_records& a, const pose_records& b, const collide_options& options,
-                     const pair_chunk_sink& sink);
-/// Streams the pairs over corner records to `sink`.
-void find_pairs_each(const rect_records& boxes, const collide_options& options, const pair_chunk_sink& sink);
-/// Streams the pairs of the cross query over corner records to `sink`.
-void find_pairs_each(const rect_records& a, const rect_records& b, const collide_options& options,
-                     const pair_chunk_sink& sink);
+void find_pairs_each(box_view a, box_view b, const collide_options& options, const pair_chunk_sink& sink);
 
 namespace detail {
 class pair_search;
-}
+}  // namespace detail
 
 /// A persistent query for simulations: it keeps the order of the rectangles
 /// and every buffer from one call to the next, so a scene whose rectangles
@@ -100,13 +136,9 @@ public:
     pair_finder& operator=(const pair_finder&) = delete;
 
     /// The pairs of find_pairs(boxes, options); valid until the next call.
-    const std::vector<pair_index>& find(const pose_records& boxes);
+    const std::vector<pair_index>& find(box_view boxes);
     /// The pairs of find_pairs(a, b, options); valid until the next call.
-    const std::vector<pair_index>& find(const pose_records& a, const pose_records& b);
-    /// The pairs of find_pairs over corner records.
-    const std::vector<pair_index>& find(const rect_records& boxes);
-    /// The pairs of the cross query over corner records.
-    const std::vector<pair_index>& find(const rect_records& a, const rect_records& b);
+    const std::vector<pair_index>& find(box_view a, box_view b);
 
     /// What the last call did.
     const find_pairs_stats& stats() const;

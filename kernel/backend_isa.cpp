@@ -5,6 +5,7 @@
 // method_catalogue.hpp.
 #include "backend_catalogue.hpp"
 #include "batch_kernel.hpp"
+#include "bounds_lanes.hpp"
 #include "certified_lanes.hpp"
 #include "conservative_lanes.hpp"
 #include "fused_multiply_add.hpp"
@@ -85,7 +86,8 @@ constexpr kernel_table table_of(type_list<Rows...>) {
                         {pose_kernels_of_row<Rows>()...},
                         fused_multiply_add_lanes,
                         pose_corners_batch<isa_arch>,
-                        strip_sweep_lanes<isa_arch>};
+                        strip_sweep_lanes<isa_arch>,
+                        bounds_batch<isa_arch>};
 }
 
 }  // namespace

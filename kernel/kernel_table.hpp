@@ -55,6 +55,11 @@ using pose_stream_soa_fn = std::size_t (*)(const pose_soa_view& a, const pose_so
 /// out[i] = ref::corners_of(pose i) for i < count over 32-byte pose records.
 using pose_corners_fn = void (*)(const float* records, std::size_t count, rect* out);
 
+/// lo_x[i], lo_y[i], hi_x[i], hi_y[i] = ref::bounds_of(record i) for i < count,
+/// over 32-byte records of `kind` (pose records or corner records).
+using bounds_fn = void (*)(store_kind kind, const float* records, std::size_t count, float* lo_x, float* lo_y,
+                           float* hi_x, float* hi_y);
+
 /// One method's entry points on the corner stores of one backend; all null
 /// when the method does not run on corners.
 struct method_kernels {
@@ -77,6 +82,7 @@ struct kernel_table {
     fused_multiply_add_fn fused_multiply_add;
     pose_corners_fn pose_corners;
     strip_sweep_fn strip_sweep;  ///< the scene queries' broadphase, one strip
+    bounds_fn bounds;            ///< the scene queries' bounds (obbsat/ref/bounds.hpp)
 
     /// The entry points of `m` on corners; the caller has checked is_method.
     const method_kernels& of(method m) const { return methods[static_cast<unsigned>(m)]; }

@@ -132,6 +132,29 @@ double clamp_finite(float x) {
 
 pair_search::pair_search(const collide_options& options) : options_(options) {}
 
+void pair_search::input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const {
+    const bounds_fn kernel = kernels_for(ran_).bounds;
+    std::size_t i = begin;
+    while (i < end) {
+        // One set at a time: the rows of a and of b may have different strides.
+        const bool in_a = i < input.a_count;
+        const std::size_t stop = in_a ? std::min(end, input.a_count) : end;
+        const std::size_t o = i - begin;
+        if ((in_a ? input.a_stride : input.b_stride) == 8) {
+            kernel(kind_, record_at(input, i), stop - i, out.lo_x + o, out.lo_y + o, out.hi_x + o, out.hi_y + o);
+        } else {
+            for (std::size_t k = i; k < stop; ++k) {
+                const ref::box_bounds b = bounds_of_record(kind_, record_at(input, k));
+                out.lo_x[k - begin] = b.lo_x;
+                out.lo_y[k - begin] = b.lo_y;
+                out.hi_x[k - begin] = b.hi_x;
+                out.hi_y[k - begin] = b.hi_y;
+            }
+        }
+        i = stop;
+    }
+}
+
 void pair_search::measure_extent(const query_input& input, std::size_t parts, bool with_keys) {
     if (with_keys) {
         key_by_id_.resize(n_);
@@ -155,27 +178,29 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         float height_sum = 0;
         double total = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
-        // Heights are summed in float over short runs and in double across them.
-        constexpr std::size_t run = 256;
-        for (std::size_t i = begin; i < end; ++i) {
-            const float* v = record_at(input, i);
-            if ((i < a_count_ ? check_a : check_b) && !valid_row(kind_, v)) {
-                first_bad = std::min(first_bad, i);
-                continue;
+        // Heights are summed in float over runs and in double across them.
+        bounds_run b;
+        for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
+            const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+            input_bounds(input, run_begin, run_end, b);
+            for (std::size_t i = run_begin; i < run_end; ++i) {
+                // A row that fails its check has bounds of no meaning: it takes no part.
+                if ((i < a_count_ ? check_a : check_b) && !valid_row(kind_, record_at(input, i))) {
+                    first_bad = std::min(first_bad, i);
+                    continue;
+                }
+                const std::size_t r = i - run_begin;
+                if (with_keys) {
+                    key_by_id_[i] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
+                }
+                x_low = std::min(x_low, b.lo_x[r]);
+                x_high = std::max(x_high, b.hi_x[r]);
+                y_low = std::min(y_low, b.lo_y[r]);
+                y_high = std::max(y_high, b.hi_y[r]);
+                height_sum += std::min(b.hi_y[r] - b.lo_y[r], FLT_MAX / bounds_run::size);
             }
-            const ref::box_bounds b = bounds_of_record(kind_, v);
-            if (with_keys) {
-                key_by_id_[i] = grid_.key_of(b.lo_x, b.lo_y);
-            }
-            x_low = std::min(x_low, b.lo_x);
-            x_high = std::max(x_high, b.hi_x);
-            y_low = std::min(y_low, b.lo_y);
-            y_high = std::max(y_high, b.hi_y);
-            height_sum += std::min(b.hi_y - b.lo_y, FLT_MAX / run);
-            if ((i - begin) % run == run - 1) {
-                total += static_cast<double>(height_sum);
-                height_sum = 0;
-            }
+            total += static_cast<double>(height_sum);
+            height_sum = 0;
         }
         partial& p = partials[share];
         p.x_low = clamp_finite(x_low);
@@ -219,10 +244,14 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     if (!stats_.reused_order) {
         run_parts(parts, [&](std::size_t share) {
             const auto [begin, end] = share_of(n_, share, parts);
-            for (std::size_t i = begin; i < end; ++i) {
-                const ref::box_bounds b = bounds_of_record(kind_, record_at(input, i));
-                keys_[i] = grid_.key_of(b.lo_x, b.lo_y);
-                order_[i] = static_cast<std::uint32_t>(i);
+            bounds_run b;
+            for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
+                const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+                input_bounds(input, run_begin, run_end, b);
+                for (std::size_t i = run_begin; i < run_end; ++i) {
+                    keys_[i] = grid_.key_of(b.lo_x[i - run_begin], b.lo_y[i - run_begin]);
+                    order_[i] = static_cast<std::uint32_t>(i);
+                }
             }
         });
         radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts);
@@ -284,31 +313,35 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     q_hi_.resize(n_);
     strip_hi_.resize(n_);
     side_.resize(n_);
+    const bounds_fn bounds = kernels_for(ran_).bounds;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
         constexpr std::size_t ahead = 16;
-        for (std::size_t k = begin; k < end; ++k) {
-            if (k + ahead < end) {
-                __builtin_prefetch(record_at(input, order_[k + ahead]));
+        constexpr std::size_t run = 256;
+        for (std::size_t run_begin = begin; run_begin < end; run_begin += run) {
+            const std::size_t run_end = std::min(end, run_begin + run);
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                if (k + ahead < end) {
+                    __builtin_prefetch(record_at(input, order_[k + ahead]));
+                }
+                const std::uint32_t id = order_[k];
+                if (stride_of(input, id) == sizeof(record) / sizeof(float)) {
+                    std::memcpy(records_[k].v, record_at(input, id), sizeof(record));
+                } else {
+                    // A pose row of six floats: the record's two last floats are zero.
+                    std::memset(records_[k].v, 0, sizeof(record));
+                    std::memcpy(records_[k].v, record_at(input, id), 6 * sizeof(float));
+                }
+                side_[k] = id >= a_count_ && !self_ ? 1 : 0;
             }
-            const std::uint32_t id = order_[k];
-            if (stride_of(input, id) == sizeof(record) / sizeof(float)) {
-                std::memcpy(records_[k].v, record_at(input, id), sizeof(record));
-            } else {
-                // A pose row of six floats: the record's two last floats are zero.
-                std::memset(records_[k].v, 0, sizeof(record));
-                std::memcpy(records_[k].v, record_at(input, id), 6 * sizeof(float));
+            // The same function on the same floats as the extent pass: the bounds of step 1.
+            bounds(kind_, records_[run_begin].v, run_end - run_begin, in_lo_x_.data() + run_begin,
+                   in_lo_y_.data() + run_begin, in_hi_x_.data() + run_begin, in_hi_y_.data() + run_begin);
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                q_lo_[k] = grid_.q_of(in_lo_x_[k]);
+                q_hi_[k] = grid_.q_of(in_hi_x_[k]);
+                strip_hi_[k] = grid_.strip_of(in_hi_y_[k]);
             }
-            // The same function on the same floats: the bounds of step 1.
-            const ref::box_bounds b = bounds_of_record(kind_, records_[k].v);
-            in_lo_x_[k] = b.lo_x;
-            in_lo_y_[k] = b.lo_y;
-            in_hi_x_[k] = b.hi_x;
-            in_hi_y_[k] = b.hi_y;
-            q_lo_[k] = grid_.q_of(b.lo_x);
-            q_hi_[k] = grid_.q_of(b.hi_x);
-            strip_hi_[k] = grid_.strip_of(b.hi_y);
-            side_[k] = id >= a_count_ && !self_ ? 1 : 0;
         }
     });
 }

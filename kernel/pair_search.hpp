@@ -92,6 +92,17 @@ private:
         std::size_t slow_path = 0;
     };
 
+    /// The bounds of a run of at most bounds_run rectangles, in struct-of-arrays form.
+    struct bounds_run {
+        static constexpr std::size_t size = 256;
+        alignas(64) float lo_x[size];
+        alignas(64) float lo_y[size];
+        alignas(64) float hi_x[size];
+        alignas(64) float hi_y[size];
+    };
+    /// The bounds of rectangles [begin, end) of the input, end - begin <= bounds_run::size,
+    /// through the backend's kernel where the rows are 32-byte records.
+    void input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const;
     void measure_extent(const query_input& input, std::size_t parts, bool with_keys);
     bool same_scene_as_last() const;
     void order_boxes(const query_input& input, std::size_t parts);

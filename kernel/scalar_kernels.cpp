@@ -5,6 +5,7 @@
 #include "method_catalogue.hpp"
 #include "pose_record.hpp"
 
+#include <obbsat/ref/bounds.hpp>
 #include <obbsat/ref/pose_corners.hpp>
 
 #include <cmath>
@@ -102,6 +103,20 @@ void pose_corners(const float* records, std::size_t count, rect* out) {
     }
 }
 
+void bounds(store_kind kind, const float* records, std::size_t count, float* lo_x, float* lo_y, float* hi_x,
+            float* hi_y) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const float* v = records + 8 * i;
+        const ref::box_bounds b = kind == store_kind::poses
+                                      ? ref::bounds_of(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}})
+                                      : ref::bounds_of(rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
+        lo_x[i] = b.lo_x;
+        lo_y[i] = b.lo_y;
+        hi_x[i] = b.hi_x;
+        hi_y[i] = b.hi_y;
+    }
+}
+
 void fused_multiply_add(const float* x, const float* y, const float* z, std::size_t count, float* out) {
     for (std::size_t i = 0; i < count; ++i) {
         out[i] = std::fma(x[i], y[i], z[i]);
@@ -135,7 +150,8 @@ constexpr pose_method_kernels pose_kernels_of_row() {
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
     return kernel_table{
-        {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners, strip_sweep};
+        {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners, strip_sweep,
+        bounds};
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // every buffer and the last order between calls. Internal to the library.
 //
 // How it finds the candidates:
-//   1. Bounds of every rectangle (obbsat/ref/bounds.hpp), in the caller's order.
+//   1. Bounds of every rectangle (obbsat/ref/bounds.hpp), in the caller's order,
+//      a vector of records at a time in the backend's lanes (bounds_lanes.hpp).
 //   2. The scene is cut into horizontal strips (strip_grid.hpp). Each
 //      rectangle is sorted by (lowest strip it touches, quantized lo_x); that
 //      order is the query's own, and the records are copied into it, so that

@@ -89,6 +89,7 @@ public:
     const std::vector<obbsat::pair_index>& find(scene_frame f) override { return finder_.find(stores_[f]); }
     std::size_t candidates() const override { return finder_.stats().candidates; }
     std::optional<bool> reused_order() const override { return finder_.stats().reused_order; }
+    std::optional<double> kernel_seconds() const override { return finder_.stats().kernel_seconds; }
 
 private:
     frame_stores<Store> stores_;

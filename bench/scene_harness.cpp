@@ -62,6 +62,8 @@ struct totals {
     double candidates = 0;
     double reused = 0;
     bool reports_order = false;
+    double kernel_seconds = 0;
+    bool reports_kernel = false;
 
     void add(const scene_query& query, std::size_t pairs_found) {
         pairs += static_cast<double>(pairs_found);
@@ -69,6 +71,10 @@ struct totals {
         if (const std::optional<bool> reused_order = query.reused_order()) {
             reports_order = true;
             reused += *reused_order ? 1.0 : 0.0;
+        }
+        if (const std::optional<double> kernel = query.kernel_seconds()) {
+            reports_kernel = true;
+            kernel_seconds += *kernel;
         }
     }
 };
@@ -85,6 +91,9 @@ void set_counters(benchmark::State& state, std::size_t boxes, const totals& sum,
         benchmark::Counter(sum.candidates / n, benchmark::Counter::kAvgIterations);
     if (sum.reports_order) {
         state.counters["reused_order"] = benchmark::Counter(sum.reused, benchmark::Counter::kAvgIterations);
+    }
+    if (sum.reports_kernel && sum.candidates > 0) {
+        state.counters["kernel_ns_per_candidate"] = sum.kernel_seconds * 1e9 / sum.candidates;
     }
     if (check.done) {
         const pair_set_difference& d = check.difference;

@@ -11,7 +11,9 @@
 // Counters: ns_per_box, pairs_per_box (pairs reported), candidates_per_box
 // (pairs whose bounds overlap, handed to the narrowphase) and, for obbsat's
 // pair_finder, reused_order (the share of iterations that repaired the
-// previous order instead of sorting again).
+// previous order instead of sorting again) and kernel_ns_per_candidate (the
+// method's kernels alone, per candidate, summed over the threads: the
+// narrowphase's share of the sweep).
 //
 // Answers are taken in each query's own order: obbsat's come sorted by i,
 // then j (find_pairs' contract, paid for in its rows), the peers' do not and
@@ -53,6 +55,9 @@ public:
     /// Whether the last find repaired the previous call's order; nothing for
     /// queries that keep no order.
     virtual std::optional<bool> reused_order() const { return std::nullopt; }
+    /// Seconds the last find spent in its narrowphase kernels, summed over
+    /// threads; nothing for queries that do not time them.
+    virtual std::optional<double> kernel_seconds() const { return std::nullopt; }
 };
 
 /// The two rows of a query: a fresh query per iteration, or one kept.

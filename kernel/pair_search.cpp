@@ -403,6 +403,7 @@ void pair_search::flush_candidates(part& p) const {
         candidates[i].b = swap ? first : second;
     }
     const kernel_table& table = kernels_for(ran_);
+    const auto kernel_start = clock_type::now();
     if (kind_ == store_kind::poses) {
         p.slow_path += table.on_poses(options_.test).indexed(records_.data()->v, candidates, count, p.verdicts.data());
     } else {
@@ -410,6 +411,7 @@ void pair_search::flush_candidates(part& p) const {
                            .indexed_records(reinterpret_cast<const rect*>(records_.data()), candidates, count,
                                             p.verdicts.data());
     }
+    p.kernel_seconds += seconds_since(kernel_start);
     p.tested += count;
     const std::size_t had = p.found.size();
     p.found.resize(had + count);
@@ -518,6 +520,7 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         p.found.clear();
         p.tested = 0;
         p.slow_path = 0;
+        p.kernel_seconds = 0;
     }
     std::mutex emit_mutex;
     std::vector<std::exception_ptr> failures(parts);
@@ -553,6 +556,7 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     for (std::size_t i = 0; i < parts; ++i) {
         stats_.candidates += parts_[i].tested;
         stats_.slow_path_pairs += parts_[i].slow_path;
+        stats_.kernel_seconds += parts_[i].kernel_seconds;
     }
 }
 

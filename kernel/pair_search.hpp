@@ -91,6 +91,7 @@ private:
         std::vector<pair_index> found;
         std::size_t tested = 0;
         std::size_t slow_path = 0;
+        double kernel_seconds = 0;
     };
 
     /// The bounds of a run of at most bounds_run rectangles, in struct-of-arrays form.

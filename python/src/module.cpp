@@ -777,6 +777,8 @@ PYBIND11_MODULE(_core, m) {
                       "sorting, copying the records into the sorted order, visits")
         .def_readonly("sweep_seconds", &obbsat::find_pairs_stats::sweep_seconds,
                       "broadphase sweep and the method's kernels")
+        .def_readonly("kernel_seconds", &obbsat::find_pairs_stats::kernel_seconds,
+                      "the method's kernels alone, summed over the threads (part of the sweep)")
         .def_readonly("output_seconds", &obbsat::find_pairs_stats::output_seconds,
                       "mapping back to the caller's indices and sorting")
         .def("__repr__", [](const obbsat::find_pairs_stats& s) {
@@ -791,7 +793,8 @@ PYBIND11_MODULE(_core, m) {
                    count("slow_path_pairs", s.slow_path_pairs) + "reused_order=" +
                    (s.reused_order ? "True, " : "False, ") + seconds("bounds_seconds", s.bounds_seconds) + ", " +
                    seconds("order_seconds", s.order_seconds) + ", " + seconds("sweep_seconds", s.sweep_seconds) +
-                   ", " + seconds("output_seconds", s.output_seconds) + ")";
+                   ", " + seconds("kernel_seconds", s.kernel_seconds) + ", " +
+                   seconds("output_seconds", s.output_seconds) + ")";
         });
     py::class_<scene_finder>(m, "PairFinder",
                              "obbsat::pair_finder: a scene query that keeps its order and buffers between calls.")

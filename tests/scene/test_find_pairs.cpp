@@ -470,6 +470,8 @@ TEST(pair_finder, every_frame_equals_a_fresh_query) {
         EXPECT_SAME_PAIRS(got, obbsat::find_pairs(store, options_for(method::exact))) << "frame " << frame;
         reused += finder.stats().reused_order ? 1u : 0u;
         EXPECT_EQ(finder.stats().pairs, got.size());
+        EXPECT_GT(finder.stats().kernel_seconds, 0.0);
+        EXPECT_LE(finder.stats().kernel_seconds, 2.0 * finder.stats().sweep_seconds + 1e-3);  // two threads at most
         for (rect_pose& p : poses) {
             p.center.x += random.uniform(-0.1f, 0.1f);
             p.center.y += random.uniform(-0.1f, 0.1f);

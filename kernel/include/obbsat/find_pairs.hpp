@@ -57,6 +57,7 @@ struct find_pairs_stats {
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
     double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
+    double kernel_seconds = 0;   ///< the method's kernels alone, summed over the threads (part of the sweep)
     double output_seconds = 0;   ///< mapping back to the caller's indices and sorting
 };
 

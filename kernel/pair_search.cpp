@@ -476,7 +476,7 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
         q_lo[e] = std::numeric_limits<float>::infinity();
         q_hi[e] = 0;
         ids[e] = 0;
-        starts[e] = 0;
+        starts[e] = -1;  // never at least an entry's starts_needed (0 or 1): never taken
         store[e] = 0;
         lo_x[e] = std::numeric_limits<float>::infinity();
         lo_y[e] = 0;

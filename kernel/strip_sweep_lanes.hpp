@@ -52,8 +52,9 @@ OBBSAT_LANE_INLINE std::size_t emit_candidates(unsigned bits, std::int32_t e_id,
 
 /// The sweep for queries within one store (Cross false) or across two.
 /// Lanes past the reach of e need no test of their own: q is monotone, so a
-/// lane whose lo_x is at most e's hi_x is within reach, and the sentinels'
-/// lo_x is +inf.
+/// lane whose lo_x is at most e's hi_x is within reach. The sentinels' starts
+/// (-1) fails the starts test of every entry, even one whose bounds are
+/// infinite and so overlap the sentinels' too.
 template <class Arch, bool Cross>
 std::size_t strip_sweep_of(const strip_view& strip, sweep_cursor& cursor, pair_index* out, std::size_t capacity) {
     using floats = xsimd::batch<float, Arch>;

@@ -1,7 +1,9 @@
 // One strip of a scene query's sweep, as the sweep kernels read it: its
 // entries sorted by quantized lo_x, in structure-of-arrays form, followed by
-// `strip_padding` sentinel entries whose q_lo and lo_x are +inf, so that a
-// kernel may read whole vectors past the last entry and never take one.
+// `strip_padding` sentinel entries whose q_lo and lo_x are +inf and whose
+// starts is -1, so that a kernel may read whole vectors past the last entry
+// and never take one: the bounds alone would not keep them out, since an
+// entry whose bounds are infinite overlaps every bounds there are.
 // Internal to the library.
 #pragma once
 
@@ -23,7 +25,7 @@ struct strip_view {
     const float* q_lo;        ///< quantized lo_x, ascending; sentinels hold +inf
     const float* q_hi;        ///< quantized hi_x
     const std::int32_t* id;   ///< the rectangle, in the query's order
-    const float* starts;      ///< 1 if the rectangle's lowest strip is this one, 0 for a visitor from below
+    const float* starts;      ///< 1 if the rectangle's lowest strip is this one, 0 for a visitor from below, -1 for a sentinel
     const float* store;       ///< 0 for the first store, 1 for the second
     const float* lo_x;
     const float* lo_y;

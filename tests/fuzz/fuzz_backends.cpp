@@ -1,8 +1,10 @@
 // Fuzz target: every backend this CPU runs, for every method and through every
 // batch entry point (collide_pairs over rect_records and over rect_soa, and
 // collide_stream), must give exactly the verdicts of the method's scalar
-// reference on any finite input. The first difference is printed with the two
-// rectangles in hex floats and stops the run.
+// reference on any finite input, and the scene query with method exact must
+// report exactly the pairs the exact oracle calls colliding. The first
+// difference is printed (with the two rectangles in hex floats for a pair)
+// and stops the run.
 //
 // Input format (see decode_rect): one byte for the number of rectangles, one
 // byte of flags, then each rectangle as a kind byte and its payload; the bytes
@@ -12,7 +14,9 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/error.hpp>
+#include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/oracle/contact.hpp>
 #include <obbsat/pose.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records.hpp>
@@ -284,6 +288,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (exact_verdicts[i] == 1 && conservative_verdicts[i] == 0) {
             stop("method conservative says apart where the exact oracle says they collide: " +
                  pair_text(in, i));
+        }
+    }
+    // The scene query with method exact, over the rectangles read in place, on
+    // every backend: exactly the pairs i < j the oracle calls colliding.
+    std::vector<obbsat::pair_index> colliding;
+    for (std::uint32_t i = 0; i < in.rects.size(); ++i) {
+        for (std::uint32_t j = i + 1; j < in.rects.size(); ++j) {
+            if (obbsat::oracle::intersects(in.rects[i], in.rects[j])) {
+                colliding.push_back(obbsat::pair_index{i, j});
+            }
+        }
+    }
+    for (const backend b : backends) {
+        obbsat::collide_options options;
+        options.test = method::exact;
+        options.use = b;
+        const std::vector<obbsat::pair_index> found = obbsat::find_pairs(in.rects, options);
+        bool same = found.size() == colliding.size();
+        for (std::size_t k = 0; same && k < found.size(); ++k) {
+            same = found[k].a == colliding[k].a && found[k].b == colliding[k].b;
+        }
+        if (!same) {
+            stop("find_pairs(exact) on " + std::string(obbsat::backend_name(b)) + " reports " +
+                 std::to_string(found.size()) + " pairs, the oracle " + std::to_string(colliding.size()));
         }
     }
     return 0;

@@ -2,8 +2,9 @@
 // through every pose entry point (collide_pairs over pose_records,
 // collide_stream over pose_records and over pose_soa), must give exactly the
 // verdicts of the method's scalar reference on any valid pose (for exact: the
-// exact pose oracle); conservative must never miss a collision; the
-// conversion to corners must equal its reference byte for byte. The first
+// exact pose oracle); conservative must never miss a collision; the scene
+// query with method exact must report exactly the pairs the pose oracle calls
+// colliding; the conversion to corners must equal its reference byte for byte. The first
 // difference is printed with the two poses in hex floats and stops the run.
 //
 // Input format: one byte for the number of poses, then each pose as a kind
@@ -13,12 +14,15 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
+#include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/pose_soa.hpp>
 #include <obbsat/ref/pose_corners.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -177,6 +181,52 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 stop("conservative says apart where the pose oracle says they collide\n  A " + text_of(side_a[i]) +
                      "\n  B " + text_of(side_b[i]));
             }
+        }
+    }
+    // The scene query with method exact, over the poses read in place, on
+    // every backend: exactly the pairs i < j the pose oracle calls colliding.
+    std::vector<pair_index> colliding;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        for (std::uint32_t j = i + 1; j < count; ++j) {
+            if (obbsat::oracle::intersects(poses[i], poses[j])) {
+                colliding.push_back(pair_index{i, j});
+            }
+        }
+    }
+    for (const backend b : obbsat::compiled_backends()) {
+        if (!obbsat::cpu_supports(b)) {
+            continue;
+        }
+        obbsat::collide_options options;
+        options.test = method::exact;
+        options.use = b;
+        const std::vector<pair_index> found = obbsat::find_pairs(poses, options);
+        bool same = found.size() == colliding.size();
+        for (std::size_t k = 0; same && k < found.size(); ++k) {
+            same = found[k].a == colliding[k].a && found[k].b == colliding[k].b;
+        }
+        if (!same) {
+            std::string detail;
+            const auto has = [](const std::vector<pair_index>& list, const pair_index& p) {
+                return std::any_of(list.begin(), list.end(),
+                                   [&](const pair_index& q) { return q.a == p.a && q.b == p.b; });
+            };
+            int shown = 0;
+            for (const pair_index& p : found) {
+                if (!has(colliding, p) && shown++ < 3) {
+                    detail += "\n  only the query: (" + std::to_string(p.a) + ", " + std::to_string(p.b) + ")\n    A " +
+                              text_of(poses[p.a]) + "\n    B " + text_of(poses[p.b]);
+                }
+            }
+            for (const pair_index& p : colliding) {
+                if (!has(found, p) && shown++ < 6) {
+                    detail += "\n  only the oracle: (" + std::to_string(p.a) + ", " + std::to_string(p.b) + ")\n    A " +
+                              text_of(poses[p.a]) + "\n    B " + text_of(poses[p.b]);
+                }
+            }
+            stop("find_pairs(exact) on " + std::string(obbsat::backend_name(b)) + " reports " +
+                 std::to_string(found.size()) + " pairs, the pose oracle " + std::to_string(colliding.size()) +
+                 detail);
         }
     }
     std::vector<obbsat::rect> corners(count);

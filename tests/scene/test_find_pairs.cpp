@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -358,9 +359,22 @@ TEST(find_pairs, every_box_in_one_place_is_every_pair) {
 
 TEST(find_pairs, boxes_whose_bounds_overflow_still_meet_everything_they_touch) {
     auto poses = seeded_scene(500, obbsat::scene_sizes::uniform, 51);
-    poses.push_back(rect_pose{{0, 0}, {3e38f, 1.0f}, {1.0f, 1.0f}});  // bounds (-inf, +inf)
+    // Bounds infinite on every side, first in the sweep's order and last, and a
+    // box alone: the sweep must take no padding past a strip's last entry.
+    const rect_pose everywhere{{0, 0}, {3e38f, 3e38f}, {2.0f, 2.0f}};
+    const obbsat::ref::box_bounds b = obbsat::ref::bounds_of(everywhere);
+    ASSERT_TRUE(std::isinf(b.lo_x) && std::isinf(b.lo_y) && std::isinf(b.hi_x) && std::isinf(b.hi_y));
+    poses.insert(poses.begin(), everywhere);
+    poses.push_back(everywhere);
     const auto want = brute_force(poses, obbsat::pose_method_reference(method::exact), false);
-    EXPECT_SAME_PAIRS(obbsat::find_pairs(obbsat::pose_records(poses), options_for(method::exact)), want);
+    for (const obbsat::backend use : runnable_backends()) {
+        SCOPED_TRACE(obbsat::backend_name(use));
+        EXPECT_SAME_PAIRS(obbsat::find_pairs(poses, options_for(method::exact, use)), want);
+        const std::vector<rect_pose> alone{everywhere};
+        EXPECT_TRUE(obbsat::find_pairs(alone, options_for(method::exact, use)).empty());
+        const std::vector<rect_pose> two{everywhere, poses[3]};
+        EXPECT_SAME_PAIRS(obbsat::find_pairs(two, options_for(method::exact, use)), (std::vector<pair_index>{{0, 1}}));
+    }
 }
 
 // Errors.

@@ -63,17 +63,27 @@ struct pose_steps {
         out.reach[3] = ((b.hy * nb) + (a.hx * Q)) + (a.hy * P);
     }
 
-    /// Steps 7 and 8 of the pose conservative method: the margin, +inf where
-    /// the pair proves nothing.
-    static OBBSAT_LANE_INLINE batch margin(const pose_lanes<Arch>& a, const pose_lanes<Arch>& b, const axes& x) {
+    /// Steps 7 and 8 of the pose conservative method: the margins of A's axes
+    /// and of B's, +inf where the pair proves nothing.
+    struct margins {
+        batch a, b;
+    };
+    static OBBSAT_LANE_INLINE margins margins_of(const pose_lanes<Arch>& a, const pose_lanes<Arch>& b,
+                                                 const axes& x) {
         const batch D = xsimd::abs(x.dx) + xsimd::abs(x.dy);
-        const batch R = xsimd::max(xsimd::max(xsimd::abs(a.c), xsimd::abs(a.s)),
-                                   xsimd::max(xsimd::abs(b.c), xsimd::abs(b.s)));
-        const batch H = ((a.hx + a.hy) + b.hx) + b.hy;
-        const batch S = (D * R) + ((R * R) * H);
-        const mask proves = (S <= batch(0x1p100f)) & (R >= batch(0x1p-40f)) & (R <= batch(0x1p62f));
-        return xsimd::select(proves, (batch(0x1p-19f) * S) + batch(0x1p-140f),
-                             batch(std::numeric_limits<float>::infinity()));
+        // Rotation components are finite, so max is the reference's fmax.
+        const batch Ra = xsimd::max(xsimd::abs(a.c), xsimd::abs(a.s));
+        const batch Rb = xsimd::max(xsimd::abs(b.c), xsimd::abs(b.s));
+        const batch Ha = a.hx + a.hy;
+        const batch Hb = b.hx + b.hy;
+        const batch T = (D + (Ra * Ha)) + (Rb * Hb);
+        const batch Sa = Ra * T;
+        const batch Sb = Rb * T;
+        const mask proves = (Sa <= batch(0x1p100f)) & (Sb <= batch(0x1p100f)) & (Ra >= batch(0x1p-40f)) &
+                            (Ra <= batch(0x1p62f)) & (Rb >= batch(0x1p-40f)) & (Rb <= batch(0x1p62f));
+        const batch none(std::numeric_limits<float>::infinity());
+        return margins{xsimd::select(proves, (batch(0x1p-19f) * Sa) + batch(0x1p-140f), none),
+                       xsimd::select(proves, (batch(0x1p-19f) * Sb) + batch(0x1p-140f), none)};
     }
 
     static OBBSAT_LANE_INLINE batch gap(const axes& x, unsigned k) { return xsimd::abs(x.offset[k]) - x.reach[k]; }
@@ -112,13 +122,13 @@ struct pose_conservative_lanes {
         typename steps::axes x;
         batch P, Q;
         steps::first_axes(a, b, x, P, Q);
-        const batch m = steps::margin(a, b, x);
-        const mask apart_on_a = (steps::gap(x, 0) > m) | (steps::gap(x, 1) > m);
+        const typename steps::margins m = steps::margins_of(a, b, x);
+        const mask apart_on_a = (steps::gap(x, 0) > m.a) | (steps::gap(x, 1) > m.a);
         if (xsimd::all(apart_on_a)) {
             return lane_verdicts{0, 0};
         }
         steps::second_axes(a, b, x, P, Q);
-        const mask apart = apart_on_a | (steps::gap(x, 2) > m) | (steps::gap(x, 3) > m);
+        const mask apart = apart_on_a | (steps::gap(x, 2) > m.b) | (steps::gap(x, 3) > m.b);
         return lane_verdicts{lane_bits(~apart), 0};
     }
 };
@@ -138,14 +148,15 @@ struct pose_exact_lanes {
         batch P, Q;
         steps::first_axes(a, b, x, P, Q);
         steps::second_axes(a, b, x, P, Q);
-        const batch m = steps::margin(a, b, x);
-        const batch neg = -m;  // m >= 2^-140 or +inf: never a zero whose sign a backend could flip
-        mask apart = steps::gap(x, 0) > m;
-        mask overlapping = steps::gap(x, 0) < neg;
+        const typename steps::margins m = steps::margins_of(a, b, x);
+        // Margins are >= 2^-140 or +inf: never a zero whose sign a backend could flip.
+        mask apart = steps::gap(x, 0) > m.a;
+        mask overlapping = steps::gap(x, 0) < -m.a;
         for (unsigned k = 1; k < 4; ++k) {
             const batch g = steps::gap(x, k);
-            apart = apart | (g > m);
-            overlapping = overlapping & (g < neg);
+            const batch margin = k < 2 ? m.a : m.b;
+            apart = apart | (g > margin);
+            overlapping = overlapping & (g < -margin);
         }
         return lane_verdicts{lane_bits(overlapping), lane_bits(~(apart | overlapping))};
     }

@@ -115,6 +115,16 @@ std::vector<backend> compiled_backends() {
     return out;
 }
 
+std::vector<backend> runnable_backends() {
+    std::vector<backend> out;
+    for (const backend b : compiled_backends()) {
+        if (cpu_supports(b)) {
+            out.push_back(b);
+        }
+    }
+    return out;
+}
+
 bool cpu_supports(backend b) {
     const backend_entry* e = find(b);
     return e != nullptr && e->compiled && e->runs_here();

@@ -31,15 +31,6 @@ using obbsat::rect_soa;
 
 constexpr std::uint8_t canary = 0xa5;
 
-std::vector<backend> runnable_backends() {
-    std::vector<backend> out;
-    for (const backend b : obbsat::compiled_backends()) {
-        if (obbsat::cpu_supports(b)) {
-            out.push_back(b);
-        }
-    }
-    return out;
-}
 
 obbsat::collide_options options_for(backend use, unsigned threads) {
     obbsat::collide_options options;
@@ -97,7 +88,7 @@ TEST(collide_api, out_of_range_index_names_pair_and_index_and_writes_nothing) {
         {0, {0xffffffffu, 1}, "index 4294967295"},
         {39999, {4, 10}, "index 10"},  // the very last pair
     };
-    for (const backend use : runnable_backends()) {
+    for (const backend use : obbsat::runnable_backends()) {
         for (const unsigned threads : {1u, 0u}) {
             for (const bad_case& c : cases) {
                 SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " +
@@ -158,7 +149,7 @@ TEST(collide_api, pairs_into_an_empty_set_of_rectangles_are_out_of_range) {
 TEST(collide_api, unequal_stream_lengths_are_refused_and_nothing_is_written) {
     const rect_soa five = grid_of_squares(5);
     const rect_soa six = grid_of_squares(6);
-    for (const backend use : runnable_backends()) {
+    for (const backend use : obbsat::runnable_backends()) {
         SCOPED_TRACE(obbsat::backend_name(use));
         std::vector<std::uint8_t> verdicts(6, canary);
         const std::string what = message_of(
@@ -208,7 +199,7 @@ TEST(collide_api, a_test_value_that_names_no_method_is_refused_and_nothing_is_wr
     const rect_records records(grid_rects(20));
     const std::vector<pair_index> pairs = {{0, 1}, {2, 3}};
     for (const unsigned bad : {obbsat::method_count, obbsat::method_count + 1, 255u, 0xffffffffu}) {
-        for (const backend use : runnable_backends()) {
+        for (const backend use : obbsat::runnable_backends()) {
             SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", test " + std::to_string(bad));
             obbsat::collide_options options = options_for(use, 1);
             options.test = static_cast<obbsat::method>(bad);
@@ -269,7 +260,7 @@ TEST(collide_api, colliding_pairs_are_exactly_the_hits_in_input_order) {
             ASSERT_EQ(hits[i].b, expected[i].b) << "hit " << i;
         }
     };
-    for (const backend use : runnable_backends()) {
+    for (const backend use : obbsat::runnable_backends()) {
         for (const unsigned threads : {1u, 2u}) {
             SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " + std::to_string(threads) +
                          " threads");
@@ -293,7 +284,7 @@ TEST(collide_api, vector_forms_match_the_pointer_forms_with_bytes_zero_or_one) {
         all[i] = s.rects[i];
     }
     const rect_records records(all);
-    for (const backend use : runnable_backends()) {
+    for (const backend use : obbsat::runnable_backends()) {
         SCOPED_TRACE(obbsat::backend_name(use));
         const auto options = options_for(use, 1);
         const std::vector<std::uint8_t> indexed = obbsat::collide_pairs(s.rects, s.pairs, options);
@@ -316,7 +307,7 @@ TEST(collide_api, empty_batches_are_answered_with_nothing) {
     const rect_records no_records;
     const rect_records records(grid_rects(3));
     const std::vector<pair_index> no_pairs;
-    for (const backend use : runnable_backends()) {
+    for (const backend use : obbsat::runnable_backends()) {
         for (const unsigned threads : {1u, 0u}) {
             SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " + std::to_string(threads) +
                          " threads");
@@ -389,7 +380,7 @@ TEST(collide_api, backend_table_is_ordered_best_first_ending_at_scalar) {
     EXPECT_EQ(obbsat::backend_lanes(backend::avx2), 8u);
     EXPECT_EQ(obbsat::backend_lanes(backend::avx512), 16u);
     // The best supported backend is the first runnable one of the table.
-    const std::vector<backend> runnable = runnable_backends();
+    const std::vector<backend> runnable = obbsat::runnable_backends();
     ASSERT_FALSE(runnable.empty());
     EXPECT_EQ(obbsat::best_supported_backend(), runnable.front());
 }
@@ -416,7 +407,7 @@ TEST(collide_api, slow_path_pairs_is_reported_for_exact_and_zero_otherwise) {
         obbsat::make_scene(obbsat::scene_spec_for(obbsat::scene_density::typical, 3000, 30000, 9));
     const rect_records records(s.rects);
     std::vector<std::uint8_t> verdicts(s.pairs.size());
-    for (const backend use : runnable_backends()) {
+    for (const backend use : obbsat::runnable_backends()) {
         for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::corners)) {
             for (const unsigned threads : {1u, 0u}) {
                 SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " +
@@ -467,9 +458,30 @@ void exit_with_resolved_backend(const char* environment_value, backend requested
     }
 }
 
+TEST(backends, the_runnable_ones_run_best_first_and_end_with_scalar) {
+    const std::vector<backend> runnable = obbsat::runnable_backends();
+    ASSERT_FALSE(runnable.empty());
+    EXPECT_EQ(runnable.front(), obbsat::best_supported_backend());
+    EXPECT_EQ(runnable.back(), backend::scalar);
+    const std::vector<rect> one{rect{{0, 1}, {1, 1}, {1, 0}, {0, 0}}};
+    const rect_records records(one);
+    const std::vector<obbsat::pair_index> pairs{{0, 0}};
+    std::uint8_t verdict = 0;
+    for (const backend b : obbsat::compiled_backends()) {
+        const bool listed = std::find(runnable.begin(), runnable.end(), b) != runnable.end();
+        EXPECT_EQ(listed, obbsat::cpu_supports(b)) << obbsat::backend_name(b);
+        if (listed) {
+            obbsat::collide_options options;
+            options.use = b;
+            EXPECT_EQ(obbsat::collide_pairs(records, pairs.data(), 1, &verdict, options), b);
+            EXPECT_EQ(verdict, 1);
+        }
+    }
+}
+
 TEST(backend_environment, obbsat_backend_forces_the_automatic_choice) {
     testing::FLAGS_gtest_death_test_style = "threadsafe";
-    for (const backend b : runnable_backends()) {
+    for (const backend b : obbsat::runnable_backends()) {
         const std::string name = obbsat::backend_name(b);
         EXPECT_EXIT(exit_with_resolved_backend(name.c_str()), testing::ExitedWithCode(0),
                     "forced " + name + "\nran " + name + "\n");
@@ -490,7 +502,7 @@ TEST(backend_environment, an_unknown_obbsat_backend_is_refused_naming_it) {
 
 TEST(backend_environment, an_unknown_obbsat_backend_is_refused_when_a_backend_is_named_too) {
     testing::FLAGS_gtest_death_test_style = "threadsafe";
-    for (const backend b : runnable_backends()) {
+    for (const backend b : obbsat::runnable_backends()) {
         EXPECT_EXIT(exit_with_resolved_backend("avx1024", b), testing::ExitedWithCode(3),
                     "unsupported_backend: OBBSAT_BACKEND=avx1024 names no backend \\(expected auto, scalar, "
                     "sse2, avx2 or avx512\\)");
@@ -499,7 +511,7 @@ TEST(backend_environment, an_unknown_obbsat_backend_is_refused_when_a_backend_is
 
 TEST(backend_environment, a_named_backend_wins_over_a_valid_obbsat_backend) {
     testing::FLAGS_gtest_death_test_style = "threadsafe";
-    for (const backend b : runnable_backends()) {
+    for (const backend b : obbsat::runnable_backends()) {
         const std::string name = obbsat::backend_name(b);
         EXPECT_EXIT(exit_with_resolved_backend("scalar", b), testing::ExitedWithCode(0),
                     "forced scalar\nran " + name + "\n");

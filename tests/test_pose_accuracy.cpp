@@ -74,6 +74,17 @@ const std::vector<tally>& measured() {
 
 const tally& measured(pose_family f) { return measured()[static_cast<std::size_t>(f)]; }
 
+
+/// Method exact's verdicts on a[i] against b[i] on backend `use`.
+std::vector<std::uint8_t> exact_verdicts(obbsat::backend use, const obbsat::pose_records& a,
+                                         const obbsat::pose_records& b, std::size_t* slow_path_pairs = nullptr) {
+    obbsat::collide_options options;
+    options.test = obbsat::method::exact;
+    options.use = use;
+    options.slow_path_pairs = slow_path_pairs;
+    return obbsat::collide_stream(a, b, options);
+}
+
 TEST(pose_accuracy, conservative_never_misses_a_collision_on_any_family) {
     for (const pose_family f : obbsat::suites::all_pose_families()) {
         const tally& t = measured(f);
@@ -163,16 +174,9 @@ TEST(pose_accuracy, exact_on_poses_is_the_oracle_on_every_backend) {
     obbsat::seeded_random random(5);
     const obbsat::suites::pose_pairs pairs = obbsat::suites::random_pose_pairs(random, 300000);
     const obbsat::pose_records a(pairs.a), b(pairs.b);
-    for (const obbsat::backend use : obbsat::compiled_backends()) {
-        if (!obbsat::cpu_supports(use)) {
-            continue;
-        }
-        obbsat::collide_options options;
-        options.test = obbsat::method::exact;
-        options.use = use;
+    for (const obbsat::backend use : obbsat::runnable_backends()) {
         std::size_t slow = 0;
-        options.slow_path_pairs = &slow;
-        const std::vector<std::uint8_t> verdicts = obbsat::collide_stream(a, b, options);
+        const std::vector<std::uint8_t> verdicts = exact_verdicts(use, a, b, &slow);
         std::size_t wrong = 0;
         for (std::size_t i = 0; i < verdicts.size(); ++i) {
             wrong += (verdicts[i] != 0) != obbsat::oracle::intersects(pairs.a[i], pairs.b[i]) ? 1u : 0u;
@@ -229,14 +233,8 @@ TEST(pose_accuracy, huge_rotations_with_tiny_half_extents_prove_nothing_false) {
     EXPECT_GT(colliding, as.size() / 8);
     EXPECT_LT(colliding, as.size());
     const obbsat::pose_records a(as), b(bs);
-    for (const obbsat::backend use : obbsat::compiled_backends()) {
-        if (!obbsat::cpu_supports(use)) {
-            continue;
-        }
-        obbsat::collide_options options;
-        options.test = obbsat::method::exact;
-        options.use = use;
-        const std::vector<std::uint8_t> verdicts = obbsat::collide_stream(a, b, options);
+    for (const obbsat::backend use : obbsat::runnable_backends()) {
+        const std::vector<std::uint8_t> verdicts = exact_verdicts(use, a, b);
         for (std::size_t i = 0; i < verdicts.size(); ++i) {
             ASSERT_EQ(verdicts[i] != 0, obbsat::oracle::intersects(as[i], bs[i])) << obbsat::backend_name(use) << " pair " << i;
         }

@@ -230,20 +230,11 @@ batch decode(const std::uint8_t* data, std::size_t size, std::uint8_t& flags) {
     return out;
 }
 
-std::vector<backend> runnable_backends() {
-    std::vector<backend> out;
-    for (const backend b : obbsat::compiled_backends()) {
-        if (obbsat::cpu_supports(b)) {
-            out.push_back(b);
-        }
-    }
-    return out;
-}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static const std::vector<backend> backends = runnable_backends();
+    static const std::vector<backend> backends = obbsat::runnable_backends();
     std::uint8_t flags = 0;
     const batch in = decode(data, size, flags);
     const std::size_t n = in.pairs.size();

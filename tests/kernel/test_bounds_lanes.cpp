@@ -4,7 +4,7 @@
 // Poses across every scale (subnormal half extents, rotations far from unit
 // length, coordinates whose bounds overflow to infinity) and corners with
 // zeros of both signs, at every length up to a few vectors.
-#include "backend_registry.hpp"
+#include "backend_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
@@ -105,20 +105,7 @@ void expect_reference_bounds(const obbsat::detail::kernel_table& table, store_ki
     EXPECT_EQ(hi_y[n], -7.0f) << what;
 }
 
-struct backend_case {
-    obbsat::backend id;
-    const obbsat::detail::kernel_table* table;
-};
-
-std::vector<backend_case> backends_here() {
-    std::vector<backend_case> out;
-    for (const obbsat::backend b : obbsat::compiled_backends()) {
-        out.push_back({b, obbsat::cpu_supports(b) ? &obbsat::detail::kernels_for(b) : nullptr});
-    }
-    return out;
-}
-
-class bounds_lanes : public ::testing::TestWithParam<backend_case> {};
+class bounds_lanes : public ::testing::TestWithParam<obbsat_test::backend_case> {};
 
 TEST_P(bounds_lanes, equal_the_reference_bit_for_bit) {
     if (!obbsat::cpu_supports(GetParam().id)) {
@@ -156,10 +143,8 @@ TEST(bounds_lanes_cases, the_cases_reach_infinity_and_signed_zeros) {
     EXPECT_GT(negative_zero_lows, 100u);
 }
 
-std::string name_of(const ::testing::TestParamInfo<backend_case>& info) {
-    return obbsat::backend_name(info.param.id);
-}
 
-INSTANTIATE_TEST_SUITE_P(backends, bounds_lanes, ::testing::ValuesIn(backends_here()), name_of);
+INSTANTIATE_TEST_SUITE_P(backends, bounds_lanes, ::testing::ValuesIn(obbsat_test::backends_here()),
+                         obbsat_test::backend_case_name);
 
 }  // namespace

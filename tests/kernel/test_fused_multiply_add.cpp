@@ -3,7 +3,7 @@
 // it. The cases that catch a sum rounded twice (first to double, then to
 // float) are built on purpose: their exact value sits a hair off a float
 // midpoint, where the double rounding lands on the midpoint itself.
-#include "backend_registry.hpp"
+#include "backend_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/scene.hpp>
@@ -105,22 +105,7 @@ void expect_same_as_std_fma(const obbsat::detail::kernel_table& table, const tri
     EXPECT_EQ(shown, 0u) << what;
 }
 
-struct backend_case {
-    obbsat::backend id;
-    const obbsat::detail::kernel_table* table;
-};
-
-// Every compiled backend, from the dispatcher's registry; one this CPU cannot
-// run is skipped in the test, never called.
-std::vector<backend_case> backends_here() {
-    std::vector<backend_case> out;
-    for (const obbsat::backend b : obbsat::compiled_backends()) {
-        out.push_back({b, obbsat::cpu_supports(b) ? &obbsat::detail::kernels_for(b) : nullptr});
-    }
-    return out;
-}
-
-class fused_multiply_add : public ::testing::TestWithParam<backend_case> {};
+class fused_multiply_add : public ::testing::TestWithParam<obbsat_test::backend_case> {};
 
 TEST_P(fused_multiply_add, rounds_once_like_std_fma) {
     if (!obbsat::cpu_supports(GetParam().id)) {
@@ -147,10 +132,8 @@ TEST(fused_multiply_add_cases, the_midpoint_case_separates_one_rounding_from_two
     EXPECT_EQ(static_cast<float>(twice), 0x1p24f + 4.0f) << "the case must tell the two apart";
 }
 
-std::string name_of(const ::testing::TestParamInfo<backend_case>& info) {
-    return obbsat::backend_name(info.param.id);
-}
 
-INSTANTIATE_TEST_SUITE_P(backends, fused_multiply_add, ::testing::ValuesIn(backends_here()), name_of);
+INSTANTIATE_TEST_SUITE_P(backends, fused_multiply_add, ::testing::ValuesIn(obbsat_test::backends_here()),
+                         obbsat_test::backend_case_name);
 
 }  // namespace

@@ -99,15 +99,6 @@ collide_options options_for(method m, obbsat::backend use = obbsat::backend::aut
     return o;
 }
 
-std::vector<obbsat::backend> runnable_backends() {
-    std::vector<obbsat::backend> out;
-    for (const obbsat::backend b : obbsat::compiled_backends()) {
-        if (obbsat::cpu_supports(b)) {
-            out.push_back(b);
-        }
-    }
-    return out;
-}
 
 // Scenes.
 
@@ -265,7 +256,7 @@ TEST(find_pairs, every_backend_and_thread_count_gives_the_same_pairs) {
     const obbsat::rect_records corners(rects);
     for (const method m : {method::exact, method::local}) {
         const auto baseline = obbsat::find_pairs(store, options_for(m, obbsat::backend::scalar, 1));
-        for (const obbsat::backend b : runnable_backends()) {
+        for (const obbsat::backend b : obbsat::runnable_backends()) {
             for (const unsigned threads : {1u, 2u, 0u}) {
                 SCOPED_TRACE(std::string(obbsat::backend_name(b)) + " threads " + std::to_string(threads) + " " +
                              obbsat::method_name(m));
@@ -274,7 +265,7 @@ TEST(find_pairs, every_backend_and_thread_count_gives_the_same_pairs) {
         }
     }
     const auto corner_baseline = obbsat::find_pairs(corners, options_for(method::sat4, obbsat::backend::scalar, 1));
-    for (const obbsat::backend b : runnable_backends()) {
+    for (const obbsat::backend b : obbsat::runnable_backends()) {
         EXPECT_SAME_PAIRS(obbsat::find_pairs(corners, options_for(method::sat4, b, 2)), corner_baseline);
     }
 }
@@ -367,7 +358,7 @@ TEST(find_pairs, boxes_whose_bounds_overflow_still_meet_everything_they_touch) {
     poses.insert(poses.begin(), everywhere);
     poses.push_back(everywhere);
     const auto want = brute_force(poses, obbsat::pose_method_reference(method::exact), false);
-    for (const obbsat::backend use : runnable_backends()) {
+    for (const obbsat::backend use : obbsat::runnable_backends()) {
         SCOPED_TRACE(obbsat::backend_name(use));
         EXPECT_SAME_PAIRS(obbsat::find_pairs(poses, options_for(method::exact, use)), want);
         const std::vector<rect_pose> alone{everywhere};

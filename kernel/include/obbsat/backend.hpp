@@ -33,6 +33,9 @@ std::vector<backend> compiled_backends();
 /// True iff `b` is compiled in and this CPU (and its OS) can run it.
 bool cpu_supports(backend b);
 
+/// The compiled backends this CPU runs, best first; scalar is always last.
+std::vector<backend> runnable_backends();
+
 /// The best backend this CPU runs, ignoring OBBSAT_BACKEND.
 backend best_supported_backend();
 

@@ -32,8 +32,9 @@ enum class batch_mode {
 /// Where a batch reads its rectangles from: corner records or structure of
 /// arrays (indexed batches; corner streams always use rect_soa), or poses:
 /// pose_soa for streams, pose_records for indexed batches (poses), and
-/// pose_records for streams too (pose_records_stream).
-enum class rect_store { records, soa, poses, pose_records_stream };
+/// pose_records for streams too (pose_records_stream), or rect_pose rows in
+/// the caller's memory for indexed batches (pose_rows).
+enum class rect_store { records, soa, poses, pose_records_stream, pose_rows };
 
 const char* mode_name(batch_mode mode) {
     switch (mode) {
@@ -81,12 +82,16 @@ std::string case_name(const collide_case& c) {
     }
     // A method that runs on corners too is marked when it runs on poses;
     // local runs on nothing else.
-    const bool on_poses = c.store == rect_store::poses || c.store == rect_store::pose_records_stream;
+    const bool on_poses = c.store == rect_store::poses || c.store == rect_store::pose_records_stream ||
+                          c.store == rect_store::pose_rows;
     if (on_poses && obbsat::runs_on(c.test, obbsat::store_kind::corners)) {
         name += "/store:poses";
     }
     if (c.store == rect_store::pose_records_stream) {
         name += "/records";
+    }
+    if (c.store == rect_store::pose_rows) {
+        name += "/rows";
     }
     return name;
 }
@@ -98,6 +103,12 @@ obbsat::backend run_batch(workload& w, const collide_case& c, std::uint8_t* verd
     options.threads = c.threads;
     if (c.store == rect_store::pose_records_stream) {
         return obbsat::collide_stream(w.pose_stream_a(), w.pose_stream_b(), verdicts, options);
+    }
+    if (c.store == rect_store::pose_rows) {
+        const obbsat::pair_index* pairs =
+            c.mode == batch_mode::indexed_sorted ? w.sorted_pairs().data() : w.shuffled_pairs().data();
+        const std::vector<obbsat::rect_pose>& rows = w.pose_rows();
+        return obbsat::collide_pairs(rows.data(), rows.size(), pairs, c.pairs, verdicts, options);
     }
     if (c.store == rect_store::poses) {
         if (c.mode == batch_mode::stream) {
@@ -125,7 +136,8 @@ obbsat::backend run_batch(workload& w, const collide_case& c, std::uint8_t* verd
 
 const std::vector<std::uint8_t>& expected_verdicts(workload& w, const collide_case& c) {
     // The streams follow the sorted list, so they share its reference.
-    if (c.store == rect_store::poses || c.store == rect_store::pose_records_stream) {
+    if (c.store == rect_store::poses || c.store == rect_store::pose_records_stream ||
+        c.store == rect_store::pose_rows) {
         return c.mode == batch_mode::indexed_random ? w.pose_shuffled_reference(c.test)
                                                     : w.pose_sorted_reference(c.test);
     }
@@ -272,6 +284,18 @@ void register_collide_benchmarks(std::ostream& skipped) {
             for (const std::size_t pairs : grid_sizes) {
                 register_case({test, batch_mode::stream, use, pairs, 1, obbsat::scene_density::typical,
                                rect_store::pose_records_stream});
+            }
+        }
+        // Pair lists over rect_pose rows read in place (what Python's arrays
+        // are), beside the same lists over pose_records.
+        for (const batch_mode mode : {batch_mode::indexed_sorted, batch_mode::indexed_random}) {
+            for (const obbsat::backend use : runnable) {
+                for (const std::size_t pairs : grid_sizes) {
+                    for (const unsigned threads : thread_counts) {
+                        register_case({test, mode, use, pairs, threads, obbsat::scene_density::typical,
+                                       rect_store::pose_rows});
+                    }
+                }
             }
         }
     }

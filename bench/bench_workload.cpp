@@ -119,6 +119,17 @@ const obbsat::pose_records& workload::poses() {
     return *poses_;
 }
 
+const std::vector<obbsat::rect_pose>& workload::pose_rows() {
+    if (pose_rows_.empty()) {
+        const obbsat::pose_records& store = poses();
+        pose_rows_.reserve(store.size());
+        for (std::size_t i = 0; i < store.size(); ++i) {
+            pose_rows_.push_back(store[i]);
+        }
+    }
+    return pose_rows_;
+}
+
 namespace {
 
 std::vector<std::uint8_t> pose_reference_verdicts(obbsat::method test, const obbsat::pose_records& poses,

@@ -61,6 +61,8 @@ public:
 
     /// The scene's rectangles as poses (pose_records::from_corners); built on first use.
     const obbsat::pose_records& poses();
+    /// The same poses as rows in the caller's memory (24 bytes each); built on first use.
+    const std::vector<obbsat::rect_pose>& pose_rows();
     /// Reference verdicts of pose method `test` for sorted_pairs() over poses().
     const std::vector<std::uint8_t>& pose_sorted_reference(obbsat::method test);
     /// Reference verdicts of pose method `test` for shuffled_pairs() over poses().
@@ -92,6 +94,7 @@ private:
     std::unique_ptr<obbsat::rect_soa> stream_a_;
     std::unique_ptr<obbsat::rect_soa> stream_b_;
     std::unique_ptr<obbsat::pose_records> poses_;
+    std::vector<obbsat::rect_pose> pose_rows_;
     std::map<obbsat::method, std::vector<std::uint8_t>> pose_sorted_reference_;
     std::map<obbsat::method, std::vector<std::uint8_t>> pose_shuffled_reference_;
     std::unique_ptr<obbsat::pose_records> pose_stream_a_;

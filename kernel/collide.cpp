@@ -286,6 +286,46 @@ backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::s
     return ran;
 }
 
+backend collide_pairs(const rect_pose* poses, std::size_t pose_count, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options) {
+    const backend ran = resolve_backend(options.use);
+    const detail::pose_stream_fn kernel = pose_kernels_of(ran, options).stream;
+    require_valid_poses(poses, pose_count);
+    check_indices(pose_count, pairs, count);
+    split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
+        // Each pair's two poses gathered into records (cx, cy, hx, hy, c, s,
+        // 0, 0), a block small enough for L1 at a time: the same floats the
+        // indexed kernel would transpose from a pose_records.
+        constexpr std::size_t block = 256;
+        constexpr std::size_t ahead = 16;
+        constexpr std::size_t floats = pose_records::record_floats;
+        alignas(64) float a[block * floats];
+        alignas(64) float b[block * floats];
+        static_assert(sizeof(rect_pose) == 6 * sizeof(float), "a rect_pose row is cx, cy, hx, hy, c, s");
+        // Straight from the row to the record: a local copy reloaded whole
+        // would stall on store forwarding.
+        const auto put = [](float* record, const rect_pose* p) {
+            std::memcpy(record, p, sizeof(rect_pose));
+            std::memset(record + 6, 0, 2 * sizeof(float));
+        };
+        std::size_t settled = 0;
+        for (std::size_t first = begin; first < end; first += block) {
+            const std::size_t n = std::min(block, end - first);
+            for (std::size_t k = 0; k < n; ++k) {
+                if (first + k + ahead < end) {
+                    __builtin_prefetch(poses + pairs[first + k + ahead].a);
+                    __builtin_prefetch(poses + pairs[first + k + ahead].b);
+                }
+                put(a + floats * k, poses + pairs[first + k].a);
+                put(b + floats * k, poses + pairs[first + k].b);
+            }
+            settled += kernel(a, b, n, verdicts + first);
+        }
+        return settled;
+    });
+    return ran;
+}
+
 std::vector<std::uint8_t> collide_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
                                         const collide_options& options) {
     return verdicts_of(poses, pairs, options);

@@ -59,6 +59,18 @@ bool valid_pose(const rect_pose& p) {
 
 }  // namespace
 
+void require_valid_poses(const rect_pose* poses, std::size_t count) {
+    bool all_valid = true;
+    for (std::size_t i = 0; i < count; ++i) {
+        all_valid &= valid_pose(poses[i]);
+    }
+    if (!all_valid) {
+        for (std::size_t i = 0; i < count; ++i) {
+            require_valid_pose(poses[i], i);
+        }
+    }
+}
+
 pose_records::pose_records(const rect_pose* poses, std::size_t count) {
     // One pass copies and checks; only a batch with a bad pose is searched
     // again, to name the first one.

@@ -109,7 +109,13 @@ TEST(CollideCallerMemory, RefusesAnIndexOutOfRangeWithNothingWritten) {
 
 TEST(CollideCallerMemory, EmptyInputs) {
     std::uint8_t verdict = 0xa5;
-    EXPECT_NO_THROW(obbsat::collide_pairs(nullptr, 0, nullptr, 0, &verdict));
+    EXPECT_NO_THROW(obbsat::collide_pairs(static_cast<const obbsat::rect*>(nullptr), 0, nullptr, 0, &verdict));
+    EXPECT_NO_THROW(obbsat::collide_pairs(static_cast<const obbsat::rect_pose*>(nullptr), 0, nullptr, 0, &verdict,
+                                          [] {
+                                              obbsat::collide_options options;
+                                              options.test = obbsat::method::local;
+                                              return options;
+                                          }()));
     EXPECT_EQ(verdict, 0xa5);
 }
 

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -102,6 +103,15 @@ struct indexed_poses {
     std::vector<pair_index> pairs;
 };
 
+/// The poses of a store as rows in the caller's memory.
+std::vector<rect_pose> rows_of(const pose_records& store) {
+    std::vector<rect_pose> rows;
+    for (std::size_t i = 0; i < store.size(); ++i) {
+        rows.push_back(store[i]);
+    }
+    return rows;
+}
+
 indexed_poses scattered(const pose_pairs& pairs, std::uint64_t seed) {
     const std::size_t n = pairs.a.size();
     std::vector<std::uint32_t> place(2 * n);
@@ -160,6 +170,13 @@ protected:
                   GetParam());
         EXPECT_TRUE(same_verdicts(expected, got, pairs)) << "collide_pairs over pose_records";
 
+        const std::vector<rect_pose> rows = rows_of(indexed.pool);
+        std::fill(got.begin(), got.end(), std::uint8_t{0xee});
+        EXPECT_EQ(obbsat::collide_pairs(rows.data(), rows.size(), indexed.pairs.data(), indexed.pairs.size(),
+                                        got.data(), forced(m, threads)),
+                  GetParam());
+        EXPECT_TRUE(same_verdicts(expected, got, pairs)) << "collide_pairs over rect_pose rows";
+
         std::vector<pair_index> hits_expected;
         for (std::size_t i = 0; i < expected.size(); ++i) {
             if (expected[i] != 0) {
@@ -211,6 +228,7 @@ TEST_P(pose_backends, golden_digests_on_every_path) {
     const pose_records a(pairs.a), b(pairs.b);
     const obbsat::pose_soa soa_a(pairs.a), soa_b(pairs.b);
     const indexed_poses indexed = scattered(pairs, 5);
+    const std::vector<rect_pose> rows = rows_of(indexed.pool);
     for (const golden_entry& e : golden_digests) {
         for (const unsigned threads : {1u, 0u}) {
             const verdicts streamed = obbsat::collide_stream(a, b, forced(e.test, threads));
@@ -222,6 +240,11 @@ TEST_P(pose_backends, golden_digests_on_every_path) {
             const verdicts picked = obbsat::collide_pairs(indexed.pool, indexed.pairs, forced(e.test, threads));
             EXPECT_EQ(hex_digest(obbsat::verdict_digest(picked.data(), picked.size())), hex_digest(e.digest))
                 << obbsat::method_name(e.test) << " indexed, " << threads << " threads";
+            verdicts from_rows(picked.size(), 0xee);
+            obbsat::collide_pairs(rows.data(), rows.size(), indexed.pairs.data(), indexed.pairs.size(),
+                                  from_rows.data(), forced(e.test, threads));
+            EXPECT_EQ(hex_digest(obbsat::verdict_digest(from_rows.data(), from_rows.size())), hex_digest(e.digest))
+                << obbsat::method_name(e.test) << " indexed over rows, " << threads << " threads";
         }
     }
 }
@@ -295,6 +318,40 @@ TEST_P(pose_backends, corners_keep_the_sign_of_zero_where_products_underflow) {
     for (const obbsat::rect& r : got) {
         EXPECT_EQ(std::memcmp(&expected, &r, sizeof r), 0);
     }
+}
+
+TEST_P(pose_backends, rows_in_place_refuse_a_bad_pose_or_index_and_write_nothing) {
+    obbsat::seeded_random random(8);
+    const pose_pairs pairs = obbsat::suites::random_pose_pairs(random, 3000);
+    std::vector<rect_pose> rows = pairs.a;
+    rows.insert(rows.end(), pairs.b.begin(), pairs.b.end());
+    std::vector<pair_index> index_pairs;
+    for (std::uint32_t i = 0; i < 3000; ++i) {
+        index_pairs.push_back({i, i + 3000});
+    }
+    const auto refused = [&](const std::vector<pair_index>& list, const std::string& text) {
+        verdicts got(list.size(), 0xee);
+        try {
+            obbsat::collide_pairs(rows.data(), rows.size(), list.data(), list.size(), got.data(),
+                                  forced(method::exact, 2));
+            ADD_FAILURE() << "accepted; expected: " << text;
+        } catch (const obbsat::invalid_input& e) {
+            EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(std::all_of(got.begin(), got.end(), [](std::uint8_t v) { return v == 0xee; }));
+    };
+    rows[4100].half_extents.x = -1.0f;
+    rows[5000].center.y = std::numeric_limits<float>::infinity();
+    refused(index_pairs, "pose 4100: half extent hx is -1, negative");
+    rows[4100].half_extents.x = 1.0f;
+    refused(index_pairs, "pose 5000: cy is inf, not a finite number");
+    rows[5000].center.y = 1.0f;
+    std::vector<pair_index> out_of_range = index_pairs;
+    out_of_range[2999].b = 6000;
+    refused(out_of_range, "pair 2999: index 6000 is out of range");
+    EXPECT_THROW(obbsat::collide_pairs(rows.data(), rows.size(), index_pairs.data(), index_pairs.size(), nullptr,
+                                       forced(method::sat4)),
+                 obbsat::invalid_input);
 }
 
 TEST_P(pose_backends, methods_that_do_not_run_on_poses_are_refused_and_nothing_is_written) {

@@ -14,13 +14,12 @@ decides the whole batch in C++ with the SIMD backend this CPU runs best, with
 the GIL released; every backend gives verdicts bitwise identical to the
 method's scalar reference. The methods differ per form (:func:`methods`).
 
-Zero copy: a C-contiguous float32 corner array and a C-contiguous uint32 pair
-array are read where they are. Anything else (float64 corners, int64 pairs, a
-strided view) is converted once per call, which costs one pass and a
-temporary of N * 32 bytes (rectangles) or M * 8 bytes (pairs). Poses are
-copied once per call into the library's 32-byte pose records (the layout its
-pose kernels read); a :class:`PoseRecords` store (:func:`records`) pays that
-copy once.
+Zero copy: a C-contiguous float32 corner or pose array and a C-contiguous
+uint32 pair array are read where they are. Anything else (float64 corners,
+int64 pairs, a strided view) is converted once per call, which costs one pass
+and a temporary of N * 32 (corners) or N * 24 bytes (poses), or M * 8 bytes
+(pairs). A :func:`records` store is checked once, when built, where an array
+is checked on every call.
 
 >>> import numpy as np, obbsat
 >>> rects = np.array([[0, 1, 2, 1, 2, 0, 0, 0],
@@ -251,9 +250,9 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
         (:class:`RectRecords`, :class:`PoseRecords`). float32 C-contiguous
         corners are read in place; anything else is converted once. Every
         coordinate must be finite (checked on every call: one read pass).
-        Poses are copied once per call into the library's 32-byte pose
-        records, checked as they are copied (finite, half extents >= 0,
-        rotation not (0, 0)). A store was checked once, when built.
+        float32 C-contiguous poses are read in place too, each checked on
+        every call (finite, half extents >= 0, rotation not (0, 0)). A store
+        was checked once, when built.
     pairs : array_like of int, shape (M, 2)
         Indices into ``rects``: row i asks whether ``rects[pairs[i, 0]]``
         and ``rects[pairs[i, 1]]`` collide. C-contiguous uint32 is read in

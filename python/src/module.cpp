@@ -6,8 +6,8 @@
 // unsafe to read or write.
 //
 // Two stores: corners (rows of eight floats, read in place or kept in a
-// rect_records) and poses (rows of six floats cx, cy, hx, hy, c, s, copied
-// into a pose_records or, for streams, a pose_soa on every call, or kept in a
+// rect_records) and poses (rows of six floats cx, cy, hx, hy, c, s, read in
+// place by pair-list calls, copied into a pose_soa for streams, or kept in a
 // pose_records). A method is checked against the store before anything is
 // read or copied.
 //
@@ -304,9 +304,7 @@ std::string collide_poses(const py::array& poses, const py::array& pairs, py::ar
     const obbsat::backend ran = without_gil([&, list = list, pose_count = pose_count, pair_list = pair_list,
                                              count = count] {
         require_runs_on(options, obbsat::store_kind::poses);
-        // The library's pose calls read its 32-byte records only: one copy per call.
-        const obbsat::pose_records store(list, pose_count);
-        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
+        return obbsat::collide_pairs(list, pose_count, pair_list, count, verdicts, options);
     });
     return obbsat::backend_name(ran);
 }

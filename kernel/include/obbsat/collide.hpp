@@ -95,6 +95,14 @@ std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
 backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options);
 
+/// The same over poses in the caller's memory (24 bytes each, read in place):
+/// every pose is checked first (invalid_input naming the first bad pose and
+/// field, nothing written), then the two poses of each pair are gathered, a
+/// block at a time, into records the method's stream kernel reads. Verdicts
+/// are those of collide_pairs over a pose_records of the same poses.
+backend collide_pairs(const rect_pose* poses, std::size_t pose_count, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options = {});
+
 /// The verdicts of collide_pairs over poses, one byte (0 or 1) per pair.
 std::vector<std::uint8_t> collide_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
                                         const collide_options& options);

@@ -76,4 +76,8 @@ private:
 /// and the field, e.g. "pose 7: half extent hy is -1".
 void require_valid_pose(const rect_pose& p, std::size_t index);
 
+/// Throws as require_valid_pose for the first invalid pose of poses[0, count);
+/// one branch-free pass when every pose is valid.
+void require_valid_poses(const rect_pose* poses, std::size_t count);
+
 }  // namespace obbsat

@@ -2,6 +2,8 @@
 
 import os
 import pathlib
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -69,3 +71,30 @@ def shared_case_folders():
     if not root or not pathlib.Path(root).is_dir():
         return []
     return sorted(p for p in pathlib.Path(root).iterdir() if (p / "pairs.csv").exists())
+
+
+def calls_in_two_threads(call, repeats=3):
+    """Runs call(i) `repeats` times in each of two threads i = 0, 1, started
+    together. Returns the last result of each thread, how long their calls
+    overlapped in time and the shorter of the two threads' total time in
+    calls, in seconds. Were the GIL held during a call, the other thread
+    could not enter its own meanwhile and the overlap would be about 0."""
+    spans = [[], []]
+    results = [None, None]
+    barrier = threading.Barrier(2)
+
+    def work(i):
+        barrier.wait()
+        for _ in range(repeats):
+            begin = time.perf_counter()
+            results[i] = call(i)
+            spans[i].append((begin, time.perf_counter()))
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    overlap = sum(max(0.0, min(e0, e1) - max(b0, b1)) for b0, e0 in spans[0] for b1, e1 in spans[1])
+    busy = min(sum(e - b for b, e in s) for s in spans)
+    return results, overlap, busy

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import obbsat
-from conftest import random_poses, random_rects
+from conftest import calls_in_two_threads, random_poses, random_rects
 
 CORNER_METHODS = obbsat.methods()
 POSE_METHODS = obbsat.methods(poses=True)
@@ -466,24 +466,8 @@ def test_python_runs_while_a_query_works(huge_scene):
 
 def test_two_threads_query_at_the_same_time(huge_scene):
     # As test_threads.py: were the GIL held during a query, the two threads' calls could not overlap.
-    spans = [[], []]
-    answers = [None, None]
-    barrier = threading.Barrier(2)
-
-    def work(i):
-        barrier.wait()
-        for _ in range(3):
-            begin = time.perf_counter()
-            answers[i] = obbsat.find_pairs(huge_scene, method="local", backend="scalar")
-            spans[i].append((begin, time.perf_counter()))
-
-    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    overlap = sum(max(0.0, min(e0, e1) - max(b0, b1)) for b0, e0 in spans[0] for b1, e1 in spans[1])
-    busy = min(sum(e - b for b, e in s) for s in spans)
+    answers, overlap, busy = calls_in_two_threads(
+        lambda i: obbsat.find_pairs(huge_scene, method="local", backend="scalar"))
     assert overlap > 0.5 * busy, f"queries overlapped {overlap:.3f} s of {busy:.3f} s"
     assert answers[0].tobytes() == answers[1].tobytes()
 

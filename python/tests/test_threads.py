@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import obbsat
+from conftest import calls_in_two_threads
 
 
 @pytest.fixture(scope="module")
@@ -37,22 +38,7 @@ def test_two_threads_decide_at_the_same_time(scene):
     # run. (How far that scales with free cores: python/bench/bench_collide.py.)
     rects, pairs = scene
     outs = [np.empty(len(pairs), dtype=bool) for _ in range(2)]
-    spans = [[], []]
-    barrier = threading.Barrier(2)
-
-    def work(i):
-        barrier.wait()
-        for _ in range(3):
-            begin = time.perf_counter()
-            obbsat.collide(rects, pairs, method="sat4_double", backend="scalar", out=outs[i])
-            spans[i].append((begin, time.perf_counter()))
-
-    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    overlap = sum(max(0.0, min(e0, e1) - max(b0, b1)) for b0, e0 in spans[0] for b1, e1 in spans[1])
-    busy = min(sum(e - b for b, e in s) for s in spans)
+    _, overlap, busy = calls_in_two_threads(
+        lambda i: obbsat.collide(rects, pairs, method="sat4_double", backend="scalar", out=outs[i]))
     assert overlap > 0.5 * busy, f"calls overlapped {overlap:.3f} s of {busy:.3f} s"
     assert outs[0].tobytes() == outs[1].tobytes()

@@ -1,6 +1,7 @@
 #include "backend_registry.hpp"
 #include "finite_check.hpp"
 #include "method_check.hpp"
+#include "pose_record.hpp"
 #include "thread_pool.hpp"
 
 #include <obbsat/collide.hpp>
@@ -116,21 +117,11 @@ const detail::pose_method_kernels& pose_kernels_of(backend ran, const collide_op
     return detail::kernels_for(ran).on_poses(options.test);
 }
 
-/// True iff no coordinate of rects[begin, end) is a NaN or an infinity: a float
-/// is non-finite exactly when its exponent bits are all ones, and adding one to
-/// that exponent then carries into the top bit. Branch-free, so it vectorises.
+/// True iff no coordinate of rects[begin, end) is a NaN or an infinity.
 bool all_finite(const rect* rects, std::size_t begin, std::size_t end) {
     constexpr std::size_t floats_per_rect = sizeof(rect) / sizeof(float);
     static_assert(floats_per_rect == coord_count, "a rect is eight packed floats");
-    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(rects + begin);
-    const std::size_t floats = (end - begin) * floats_per_rect;
-    std::uint32_t carried = 0;
-    for (std::size_t i = 0; i < floats; ++i) {
-        std::uint32_t bits;
-        std::memcpy(&bits, bytes + i * sizeof(float), sizeof(float));
-        carried |= (bits & 0x7f800000u) + 0x00800000u;
-    }
-    return (carried & 0x80000000u) == 0;
+    return detail::all_finite(reinterpret_cast<const float*>(rects + begin), (end - begin) * floats_per_rect);
 }
 
 /// Throws invalid_input naming the first non-finite coordinate of rects[0, count).
@@ -302,11 +293,8 @@ backend collide_pairs(const rect_pose* poses, std::size_t pose_count, const pair
         alignas(64) float a[block * floats];
         alignas(64) float b[block * floats];
         static_assert(sizeof(rect_pose) == 6 * sizeof(float), "a rect_pose row is cx, cy, hx, hy, c, s");
-        // Straight from the row to the record: a local copy reloaded whole
-        // would stall on store forwarding.
         const auto put = [](float* record, const rect_pose* p) {
-            std::memcpy(record, p, sizeof(rect_pose));
-            std::memset(record + 6, 0, 2 * sizeof(float));
+            detail::widen_pose_row(record, reinterpret_cast<const float*>(p));
         };
         std::size_t settled = 0;
         for (std::size_t first = begin; first < end; first += block) {

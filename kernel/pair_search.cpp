@@ -4,6 +4,7 @@
 #include "finite_check.hpp"
 #include "method_check.hpp"
 #include "pair_sort.hpp"
+#include "pose_record.hpp"
 #include "radix_sort.hpp"
 #include "strip_view.hpp"
 #include "thread_pool.hpp"
@@ -77,22 +78,9 @@ std::size_t stride_of(const query_input& input, std::size_t id) {
     return id < input.a_count ? input.a_stride : input.b_stride;
 }
 
-/// True iff the values of one row are a valid rectangle of its kind: every
-/// value finite; for a pose, no half extent negative and a rotation that is
-/// not (0, 0) (as pose_records checks). Branch-free.
+/// True iff the values of one row are a valid rectangle of its kind (finite_check.hpp).
 bool valid_row(store_kind kind, const float* v) {
-    const std::size_t values = kind == store_kind::poses ? 6 : 8;
-    std::uint32_t carried = 0;
-    for (std::size_t k = 0; k < values; ++k) {
-        std::uint32_t bits;
-        std::memcpy(&bits, v + k, sizeof bits);
-        carried |= (bits & 0x7f800000u) + 0x00800000u;  // carries into bit 31 only for inf and NaN
-    }
-    bool ok = (carried & 0x80000000u) == 0;
-    if (kind == store_kind::poses) {
-        ok = ok & !(v[2] < 0.0f) & !(v[3] < 0.0f) & !(v[4] == 0.0f && v[5] == 0.0f);
-    }
-    return ok;
+    return kind == store_kind::poses ? valid_pose_row(v) : all_finite(v, 8);
 }
 
 /// Throws the store's own message for row `id` of the query, which valid_row
@@ -328,9 +316,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                 if (stride_of(input, id) == sizeof(record) / sizeof(float)) {
                     std::memcpy(records_[k].v, record_at(input, id), sizeof(record));
                 } else {
-                    // A pose row of six floats: the record's two last floats are zero.
-                    std::memset(records_[k].v, 0, sizeof(record));
-                    std::memcpy(records_[k].v, record_at(input, id), 6 * sizeof(float));
+                    widen_pose_row(records_[k].v, record_at(input, id));
                 }
                 side_[k] = id >= a_count_ && !self_ ? 1 : 0;
             }

@@ -7,6 +7,7 @@
 #include <obbsat/rect_pose.hpp>
 
 #include <cstddef>
+#include <cstring>
 
 namespace obbsat::detail {
 namespace {
@@ -17,6 +18,14 @@ constexpr std::size_t pose_record_floats = pose_records::record_floats;
 inline rect_pose pose_record_at(const float* records, std::size_t index) {
     const float* v = records + pose_record_floats * index;
     return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}};
+}
+
+/// Writes the six floats of a pose row (cx, cy, hx, hy, c, s) as the record
+/// at `record`, its two last floats zero. Straight from the row: a local
+/// copy reloaded whole would stall on store forwarding.
+inline void widen_pose_row(float* record, const float* row) {
+    std::memcpy(record, row, 6 * sizeof(float));
+    std::memset(record + 6, 0, (pose_record_floats - 6) * sizeof(float));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <obbsat/pose_records.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace obbsat {
@@ -48,13 +49,10 @@ namespace {
 
 /// True iff `p` is valid, without branches, so that a batch checks at copy speed.
 bool valid_pose(const rect_pose& p) {
-    const float values[6] = {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y};
-    bool finite = true;
-    for (const float v : values) {
-        finite &= std::isfinite(v);
-    }
-    return finite & (p.half_extents.x >= 0.0f) & (p.half_extents.y >= 0.0f) &
-           ((p.rotation.x != 0.0f) | (p.rotation.y != 0.0f));
+    float row[6];
+    static_assert(sizeof row == sizeof p, "a rect_pose is cx, cy, hx, hy, c, s");
+    std::memcpy(row, &p, sizeof row);
+    return detail::valid_pose_row(row);
 }
 
 }  // namespace

@@ -4,6 +4,13 @@
 //
 //   scene/<method>/<store>/...  obbsat::find_pairs, a fresh query each time
 //   frame/<method>/<store>/...  one obbsat::pair_finder across the frames
+//   drift/<method>/poses/...    one obbsat::pair_finder over a scene in steady
+//       motion: each box at its own velocity (up to ±frame_step in x and y per
+//       frame) and turning rate (up to ±0.005 rad per frame), reversing every
+//       drift_half_period frames, so that boxes keep leaving the widened
+//       bounds the finder kept and the workload stays the same however many
+//       iterations run. The motion itself is not timed. Counter
+//       reused_candidates: the share of frames answered from kept candidates.
 //
 // The peers' rows (peer_scene/, peer_frame/) answer the same question on the
 // same scenes; scene_harness.hpp says how every row is timed and checked.
@@ -17,6 +24,13 @@
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect_records.hpp>
 
+#include <benchmark/benchmark.h>
+
+#include <obbsat/rect_pose.hpp>
+#include <obbsat/scene.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
@@ -133,6 +147,91 @@ scene_query_prepare prepare_for(scene_method m, frame_stores<Store> (*stores_of)
     };
 }
 
+/// Frames a drift row moves one way before it turns back.
+constexpr int drift_half_period = 32;
+
+/// The poses of a scene in steady motion (see the top of this file).
+class drifting_scene {
+public:
+    explicit drifting_scene(const obbsat::pose_records& start) : current_(start) {
+        obbsat::seeded_random random(4242);
+        for (std::size_t i = 0; i < start.size(); ++i) {
+            start_.push_back(start[i]);
+            velocity_.push_back({random.uniform(-frame_step, frame_step), random.uniform(-frame_step, frame_step)});
+            turn_.push_back(random.uniform(-0.005f, 0.005f));
+        }
+    }
+
+    /// Moves every box to frame `t`.
+    void go_to(int t) {
+        const int phase = t % (2 * drift_half_period);
+        const auto k = static_cast<float>(phase <= drift_half_period ? phase : 2 * drift_half_period - phase);
+        for (std::size_t i = 0; i < start_.size(); ++i) {
+            obbsat::rect_pose p = start_[i];
+            p.center = {p.center.x + velocity_[i].x * k, p.center.y + velocity_[i].y * k};
+            const float c = std::cos(turn_[i] * k), s = std::sin(turn_[i] * k);
+            p.rotation = {p.rotation.x * c - p.rotation.y * s, p.rotation.x * s + p.rotation.y * c};
+            current_.set(i, p);
+        }
+    }
+
+    const obbsat::pose_records& poses() const { return current_; }
+
+private:
+    std::vector<obbsat::rect_pose> start_;
+    std::vector<obbsat::point> velocity_;
+    std::vector<float> turn_;
+    obbsat::pose_records current_;
+};
+
+void run_drift_row(benchmark::State& state, obbsat::method test, std::size_t boxes, obbsat::scene_sizes sizes,
+                   unsigned threads) {
+    try {
+        scene_workload& w = scene_workload_for(boxes, sizes);
+        drifting_scene scene(w.poses(scene_frame::as_generated));
+        obbsat::pair_finder finder(options_for(test, threads));
+        int t = 0;
+        if (boxes <= check_limit) {
+            // Every frame of one period equals a fresh query before anything is timed.
+            for (; t < 2 * drift_half_period; ++t) {
+                scene.go_to(t);
+                const std::vector<obbsat::pair_index>& got = finder.find(scene.poses());
+                const std::vector<obbsat::pair_index> fresh = obbsat::find_pairs(scene.poses(), options_for(test, 1));
+                const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
+                    return x.a == y.a && x.b == y.b;
+                };
+                if (got.size() != fresh.size() || !std::equal(got.begin(), got.end(), fresh.begin(), same)) {
+                    state.SkipWithError(("frame " + std::to_string(t) + " differs from a fresh query").c_str());
+                    return;
+                }
+            }
+        } else {
+            finder.find(scene.poses());
+        }
+        double pairs = 0, candidates = 0, from_kept = 0;
+        for (auto _ : state) {
+            state.PauseTiming();
+            scene.go_to(++t);
+            state.ResumeTiming();
+            const std::vector<obbsat::pair_index>& found = finder.find(scene.poses());
+            benchmark::DoNotOptimize(found.data());
+            pairs += static_cast<double>(found.size());
+            candidates += static_cast<double>(finder.stats().candidates);
+            from_kept += finder.stats().reused_candidates ? 1.0 : 0.0;
+        }
+        const auto n = static_cast<double>(boxes);
+        state.counters["ns_per_box"] =
+            benchmark::Counter(n * 1e-9, static_cast<benchmark::Counter::Flags>(
+                                             benchmark::Counter::kIsIterationInvariantRate |
+                                             benchmark::Counter::kInvert));
+        state.counters["pairs_per_box"] = benchmark::Counter(pairs / n, benchmark::Counter::kAvgIterations);
+        state.counters["candidates_per_box"] = benchmark::Counter(candidates / n, benchmark::Counter::kAvgIterations);
+        state.counters["reused_candidates"] = benchmark::Counter(from_kept, benchmark::Counter::kAvgIterations);
+    } catch (const std::exception& e) {
+        state.SkipWithError(e.what());
+    }
+}
+
 }  // namespace
 
 void register_scene_benchmarks() {
@@ -146,6 +245,22 @@ void register_scene_benchmarks() {
         rows.prepare = m.store == obbsat::store_kind::poses ? prepare_for(m, pose_frames)
                                                             : prepare_for(m, corner_frames);
         register_scene_rows(rows);
+    }
+    for (const obbsat::method test : {obbsat::method::exact, obbsat::method::local}) {
+        for (const std::size_t boxes : scene_box_counts_to_register()) {
+            for (const obbsat::scene_sizes sizes : scene_size_spreads) {
+                for (const unsigned threads : {1u, 2u}) {
+                    const std::string name = std::string("drift/") + obbsat::method_name(test) + "/poses/" +
+                                             scene_name_tail(boxes, sizes, threads);
+                    benchmark::RegisterBenchmark(name.c_str(),
+                                                 [test, boxes, sizes, threads](benchmark::State& state) {
+                                                     run_drift_row(state, test, boxes, sizes, threads);
+                                                 })
+                        ->UseRealTime()
+                        ->Unit(benchmark::kMillisecond);
+                }
+            }
+        }
     }
 }
 

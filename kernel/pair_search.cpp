@@ -112,6 +112,16 @@ ref::box_bounds bounds_of_record(store_kind kind, const float* v) {
     return ref::bounds_of(rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
 }
 
+/// Copies row `id` of the query into `out` (a pose row's two last floats zero).
+void copy_row(const query_input& input, std::size_t id, float* out) {
+    const float* row = record_at(input, id);
+    if (stride_of(input, id) == 8) {
+        std::memcpy(out, row, 8 * sizeof(float));
+    } else {
+        widen_pose_row(out, row);
+    }
+}
+
 double clamp_finite(float x) {
     return static_cast<double>(std::min(std::max(x, -FLT_MAX), FLT_MAX));
 }
@@ -119,6 +129,20 @@ double clamp_finite(float x) {
 }  // namespace
 
 pair_search::pair_search(const collide_options& options) : options_(options) {}
+
+void pair_search::widen(bounds_run& b, std::size_t count) const {
+    if (!keep_ || margin_ == 0.0f) {
+        return;
+    }
+    // Rounding is monotone, so lo - m <= lo and hi + m >= hi: the widened
+    // bounds contain the bounds.
+    for (std::size_t i = 0; i < count; ++i) {
+        b.lo_x[i] -= margin_;
+        b.lo_y[i] -= margin_;
+        b.hi_x[i] += margin_;
+        b.hi_y[i] += margin_;
+    }
+}
 
 void pair_search::input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const {
     const bounds_fn kernel = kernels_for(ran_).bounds;
@@ -171,6 +195,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             input_bounds(input, run_begin, run_end, b);
+            widen(b, run_end - run_begin);
             for (std::size_t i = run_begin; i < run_end; ++i) {
                 // A row that fails its check has bounds of no meaning: it takes no part.
                 if ((i < a_count_ ? check_a : check_b) && !valid_row(kind_, record_at(input, i))) {
@@ -236,6 +261,7 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
             for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
                 const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
                 input_bounds(input, run_begin, run_end, b);
+                widen(b, run_end - run_begin);
                 for (std::size_t i = run_begin; i < run_end; ++i) {
                     keys_[i] = grid_.key_of(b.lo_x[i - run_begin], b.lo_y[i - run_begin]);
                     order_[i] = static_cast<std::uint32_t>(i);
@@ -301,6 +327,11 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     q_hi_.resize(n_);
     strip_hi_.resize(n_);
     side_.resize(n_);
+    if (keep_) {
+        for (auto* v : {&now_lo_x_, &now_lo_y_, &now_hi_x_, &now_hi_y_}) {
+            v->resize(n_);
+        }
+    }
     const bounds_fn bounds = kernels_for(ran_).bounds;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
@@ -313,16 +344,30 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                     __builtin_prefetch(record_at(input, order_[k + ahead]));
                 }
                 const std::uint32_t id = order_[k];
-                if (stride_of(input, id) == sizeof(record) / sizeof(float)) {
-                    std::memcpy(records_[k].v, record_at(input, id), sizeof(record));
-                } else {
-                    widen_pose_row(records_[k].v, record_at(input, id));
-                }
+                copy_row(input, id, records_[k].v);
                 side_[k] = id >= a_count_ && !self_ ? 1 : 0;
             }
             // The same function on the same floats as the extent pass: the bounds of step 1.
             bounds(kind_, records_[run_begin].v, run_end - run_begin, in_lo_x_.data() + run_begin,
                    in_lo_y_.data() + run_begin, in_hi_x_.data() + run_begin, in_hi_y_.data() + run_begin);
+            if (keep_) {
+                // The bounds themselves for the kept candidates' test, the widened ones for the sweep.
+                bounds_run widened;
+                const std::size_t count = run_end - run_begin;
+                std::memcpy(widened.lo_x, in_lo_x_.data() + run_begin, count * sizeof(float));
+                std::memcpy(widened.lo_y, in_lo_y_.data() + run_begin, count * sizeof(float));
+                std::memcpy(widened.hi_x, in_hi_x_.data() + run_begin, count * sizeof(float));
+                std::memcpy(widened.hi_y, in_hi_y_.data() + run_begin, count * sizeof(float));
+                std::memcpy(now_lo_x_.data() + run_begin, widened.lo_x, count * sizeof(float));
+                std::memcpy(now_lo_y_.data() + run_begin, widened.lo_y, count * sizeof(float));
+                std::memcpy(now_hi_x_.data() + run_begin, widened.hi_x, count * sizeof(float));
+                std::memcpy(now_hi_y_.data() + run_begin, widened.hi_y, count * sizeof(float));
+                widen(widened, count);
+                std::memcpy(in_lo_x_.data() + run_begin, widened.lo_x, count * sizeof(float));
+                std::memcpy(in_lo_y_.data() + run_begin, widened.lo_y, count * sizeof(float));
+                std::memcpy(in_hi_x_.data() + run_begin, widened.hi_x, count * sizeof(float));
+                std::memcpy(in_hi_y_.data() + run_begin, widened.hi_y, count * sizeof(float));
+            }
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 q_lo_[k] = grid_.q_of(in_lo_x_[k]);
                 q_hi_[k] = grid_.q_of(in_hi_x_[k]);
@@ -368,6 +413,21 @@ void pair_search::collect_visits(std::size_t parts) {
     stats_.visits = visits;
 }
 
+void pair_search::test_candidates(part& p, std::size_t count) const {
+    const kernel_table& table = kernels_for(ran_);
+    const auto kernel_start = clock_type::now();
+    if (kind_ == store_kind::poses) {
+        p.slow_path +=
+            table.on_poses(options_.test).indexed(records_.data()->v, p.candidates.data(), count, p.verdicts.data());
+    } else {
+        p.slow_path += table.of(options_.test)
+                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), p.candidates.data(),
+                                            count, p.verdicts.data());
+    }
+    p.kernel_seconds += seconds_since(kernel_start);
+    p.tested += count;
+}
+
 void pair_search::flush_candidates(part& p) const {
     const std::size_t count = p.candidate_count;
     if (count == 0) {
@@ -388,17 +448,12 @@ void pair_search::flush_candidates(part& p) const {
         candidates[i].a = swap ? second : first;
         candidates[i].b = swap ? first : second;
     }
-    const kernel_table& table = kernels_for(ran_);
-    const auto kernel_start = clock_type::now();
-    if (kind_ == store_kind::poses) {
-        p.slow_path += table.on_poses(options_.test).indexed(records_.data()->v, candidates, count, p.verdicts.data());
-    } else {
-        p.slow_path += table.of(options_.test)
-                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), candidates, count,
-                                            p.verdicts.data());
+    if (keep_) {
+        p.captured.insert(p.captured.end(), candidates, candidates + count);
+        p.candidate_count = 0;
+        return;
     }
-    p.kernel_seconds += seconds_since(kernel_start);
-    p.tested += count;
+    test_candidates(p, count);
     const std::size_t had = p.found.size();
     p.found.resize(had + count);
     pair_index* out = p.found.data() + had;
@@ -504,6 +559,7 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         }
         p.candidate_count = 0;
         p.found.clear();
+        p.captured.clear();
         p.tested = 0;
         p.slow_path = 0;
         p.kernel_seconds = 0;
@@ -546,7 +602,7 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     }
 }
 
-void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
+void pair_search::set_query(const query_input& input) {
     detail::require_method_on(options_, input.kind);
     ran_ = resolve_backend(options_.use);
     stats_ = find_pairs_stats{};
@@ -558,6 +614,10 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
         throw invalid_input("a scene query takes at most 4294967295 rectangles, not " + std::to_string(n_));
     }
     stats_.boxes = n_;
+}
+
+void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
+    set_query(input);
     used_parts_ = 0;
     for (part& p : parts_) {
         p.found.clear();
@@ -598,13 +658,217 @@ void pair_search::sort_found() {
         p.found.clear();
     }
     stats_.pairs = pairs_.size();
-    stats_.output_seconds = seconds_since(start);
+    stats_.output_seconds += seconds_since(start);
 }
 
 const std::vector<pair_index>& pair_search::collect(const query_input& input) {
-    run(input, pair_chunk_sink{});
-    sort_found();
+    set_query(input);
+    const std::size_t parts = parts_for(n_, options_.threads);
+    if (kept_ready_ && same_scene_as_last() && n_ >= 2) {
+        const auto start = clock_type::now();
+        const bool fits = refresh_records(input, parts);
+        stats_.bounds_seconds = seconds_since(start);
+        if (fits) {
+            ++kept_calls_;
+            stats_.reused_order = true;
+            stats_.reused_candidates = true;
+            stats_.kept_candidates = kept_.size();
+            stats_.strips = grid_.strips;
+            stats_.visits = visit_keys_.size();
+            used_parts_ = parts;
+            test_kept(parts);
+            answer_from_kept(parts);
+            return pairs_;
+        }
+    }
+    // A full query that keeps its candidates. The margin follows the motion:
+    // kept candidates that served only a few calls widen the next ones, and
+    // candidates that outlived many calls narrow them.
+    if (kept_ready_ && margin_ > 0.0f) {
+        if (kept_calls_ < 4) {
+            margin_share_ = std::min(margin_share_ * 2, 1.0 / 2);
+        } else if (kept_calls_ > 64) {
+            margin_share_ = std::max(margin_share_ / 2, 1.0 / 256);
+        }
+    }
+    const bool same = same_scene_as_last();
+    margin_ = same ? static_cast<float>(std::min(mean_height_ * margin_share_, static_cast<double>(FLT_MAX))) : 0.0f;
+    kept_ready_ = false;
+    kept_calls_ = 0;
+    keep_ = true;
+    try {
+        run(input, pair_chunk_sink{});
+    } catch (...) {
+        keep_ = false;
+        throw;
+    }
+    keep_ = false;
+    if (used_parts_ == 0) {
+        pairs_.clear();
+        return pairs_;
+    }
+    mean_height_ = std::max(0.0, extent_.mean_height - 2.0 * static_cast<double>(margin_));
+    keep_candidates(used_parts_);
+    kept_ready_ = true;
+    test_kept(used_parts_);
+    answer_from_kept(used_parts_);
     return pairs_;
+}
+
+bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
+    // The records in the kept order with this call's rows; every rectangle's
+    // bounds must lie inside its widened bounds. A row that fails its check
+    // makes this false too: the full query names it.
+    const bounds_fn bounds = kernels_for(ran_).bounds;
+    const bool check_a = !input.a_checked;
+    const bool check_b = !input.b_checked;
+    std::vector<unsigned char> fits(parts, 1);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        constexpr std::size_t ahead = 16;
+        constexpr std::size_t run = 256;
+        bool ok = true;
+        for (std::size_t run_begin = begin; run_begin < end && ok; run_begin += run) {
+            const std::size_t run_end = std::min(end, run_begin + run);
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                if (k + ahead < end) {
+                    __builtin_prefetch(record_at(input, order_[k + ahead]));
+                }
+                const std::uint32_t id = order_[k];
+                if (id < a_count_ ? check_a : check_b) {
+                    ok &= valid_row(kind_, record_at(input, id));
+                }
+                copy_row(input, id, records_[k].v);
+            }
+            bounds(kind_, records_[run_begin].v, run_end - run_begin, now_lo_x_.data() + run_begin,
+                   now_lo_y_.data() + run_begin, now_hi_x_.data() + run_begin, now_hi_y_.data() + run_begin);
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                ok &= (now_lo_x_[k] >= in_lo_x_[k]) & (now_lo_y_[k] >= in_lo_y_[k]) & (now_hi_x_[k] <= in_hi_x_[k]) &
+                      (now_hi_y_[k] <= in_hi_y_[k]);
+            }
+        }
+        fits[share] = ok ? 1 : 0;
+    });
+    return std::find(fits.begin(), fits.end(), 0) == fits.end();
+}
+
+void pair_search::keep_candidates(std::size_t parts) {
+    // The parts' candidates one after the other, in the sweep's order, and
+    // each one's pair in the caller's indices tagged with its position.
+    const auto start = clock_type::now();
+    std::vector<std::size_t> offsets(parts + 1, 0);
+    for (std::size_t i = 0; i < parts; ++i) {
+        offsets[i + 1] = offsets[i] + parts_[i].captured.size();
+    }
+    kept_.resize(offsets[parts]);
+    const std::uint32_t second_start = self_ ? 0 : static_cast<std::uint32_t>(a_count_);
+    std::vector<const std::vector<tagged_pair>*> sources;
+    run_parts(parts, [&](std::size_t share) {
+        part& p = parts_[share];
+        std::copy(p.captured.begin(), p.captured.end(), kept_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
+        p.tagged.resize(p.captured.size());
+        for (std::size_t i = 0; i < p.captured.size(); ++i) {
+            p.tagged[i] = tagged_pair{order_[p.captured[i].a], order_[p.captured[i].b] - second_start,
+                                      static_cast<std::uint32_t>(offsets[share] + i)};
+        }
+        p.captured.clear();
+    });
+    for (std::size_t i = 0; i < parts; ++i) {
+        sources.push_back(&parts_[i].tagged);
+    }
+    if (tag_scratch_.size() < parts) {
+        tag_scratch_.resize(parts);
+    }
+    sort_pairs(sources, self_ ? n_ : a_count_, kept_by_caller_, tag_scratch_);
+    for (std::size_t i = 0; i < parts; ++i) {
+        parts_[i].tagged.clear();
+    }
+    stats_.kept_candidates = kept_.size();
+    stats_.output_seconds += seconds_since(start);
+}
+
+void pair_search::test_kept(std::size_t parts) {
+    // The kept candidates whose bounds overlap now, by the sweep's own test,
+    // are the candidates a sweep would find; the method decides them.
+    const auto start = clock_type::now();
+    if (parts_.size() < parts) {
+        parts_.resize(parts);
+    }
+    kept_verdicts_.resize(kept_.size());
+    const float* const lo_x = now_lo_x_.data();
+    const float* const lo_y = now_lo_y_.data();
+    const float* const hi_x = now_hi_x_.data();
+    const float* const hi_y = now_hi_y_.data();
+    run_parts(parts, [&](std::size_t share) {
+        part& p = parts_[share];
+        if (p.candidates.size() < candidate_block) {
+            p.candidates.resize(candidate_block);
+            p.verdicts.resize(candidate_block);
+        }
+        p.slots.resize(candidate_block);
+        p.tested = 0;
+        p.slow_path = 0;
+        p.kernel_seconds = 0;
+        const auto [begin, end] = share_of(kept_.size(), share, parts);
+        for (std::size_t first = begin; first < end; first += candidate_block) {
+            const std::size_t last = std::min(end, first + candidate_block);
+            std::size_t count = 0;
+            for (std::size_t i = first; i < last; ++i) {
+                const std::uint32_t a = kept_[i].a;
+                const std::uint32_t b = kept_[i].b;
+                const bool overlap = (lo_x[b] <= hi_x[a]) & (hi_x[b] >= lo_x[a]) & (lo_y[b] <= hi_y[a]) &
+                                     (hi_y[b] >= lo_y[a]);
+                p.candidates[count] = kept_[i];
+                p.slots[count] = static_cast<std::uint32_t>(i);
+                count += overlap ? 1u : 0u;
+                kept_verdicts_[i] = 0;
+            }
+            test_candidates(p, count);
+            for (std::size_t c = 0; c < count; ++c) {
+                kept_verdicts_[p.slots[c]] = p.verdicts[c];
+            }
+        }
+    });
+    for (std::size_t i = 0; i < parts; ++i) {
+        stats_.candidates += parts_[i].tested;
+        stats_.slow_path_pairs += parts_[i].slow_path;
+        stats_.kernel_seconds += parts_[i].kernel_seconds;
+    }
+    if (options_.slow_path_pairs != nullptr) {
+        *options_.slow_path_pairs = stats_.slow_path_pairs;
+    }
+    stats_.sweep_seconds += seconds_since(start);
+}
+
+void pair_search::answer_from_kept(std::size_t parts) {
+    // The kept pairs are sorted in the caller's indices: the answer is the
+    // ones the method called colliding, read in that order.
+    const auto start = clock_type::now();
+    std::vector<std::size_t> offsets(parts + 1, 0);
+    run_parts(parts, [&](std::size_t share) {
+        part& p = parts_[share];
+        const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
+        p.found.resize(end - begin);
+        pair_index* out = p.found.data();
+        std::size_t kept = 0;
+        for (std::size_t j = begin; j < end; ++j) {
+            const tagged_pair& t = kept_by_caller_[j];
+            out[kept] = pair_index{t.a, t.b};
+            kept += kept_verdicts_[t.tag] != 0 ? 1u : 0u;
+        }
+        p.found.resize(kept);
+    });
+    for (std::size_t i = 0; i < parts; ++i) {
+        offsets[i + 1] = offsets[i] + parts_[i].found.size();
+    }
+    pairs_.resize(offsets[parts]);
+    run_parts(parts, [&](std::size_t share) {
+        part& p = parts_[share];
+        std::copy(p.found.begin(), p.found.end(), pairs_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
+        p.found.clear();
+    });
+    stats_.pairs = pairs_.size();
+    stats_.output_seconds += seconds_since(start);
 }
 
 std::vector<pair_index> pair_search::collect_once(const query_input& input) {

@@ -19,6 +19,17 @@
 //      so each pair whose bounds overlap is found exactly once.
 //   5. Candidates go to the method's indexed kernel in blocks, over the
 //      reordered records; the colliding ones are mapped back.
+//
+// A persistent query (collect, for pair_finder) widens every bounds by a
+// margin before step 2 and keeps the candidates of the widened bounds
+// instead of testing them. While each rectangle's bounds stay inside its
+// widened bounds (an exact float comparison), those candidates hold every
+// pair whose bounds overlap now, so the next call refreshes the records in
+// the kept order, takes the kept candidates whose bounds overlap now (the
+// same pairs a sweep would give), tests them, and reads the answer in the
+// caller's order through a permutation kept with them: no sort, no sweep,
+// no output sort. A rectangle that left its widened bounds makes the call a
+// full query again, which builds new candidates.
 #pragma once
 
 #include "pair_sort.hpp"
@@ -63,7 +74,8 @@ public:
     /// to `emit` in chunks, one call at a time.
     void run(const query_input& input, const pair_chunk_sink& emit);
 
-    /// Runs the query and returns its pairs sorted by (a, b).
+    /// Runs the query and returns its pairs sorted by (a, b); keeps the
+    /// candidates of widened bounds for the next call.
     const std::vector<pair_index>& collect(const query_input& input);
 
     /// Runs the query once and hands over its pairs: the per-thread buffers
@@ -89,6 +101,11 @@ private:
         std::vector<std::uint8_t> verdicts;
         // Colliding pairs in the caller's indices.
         std::vector<pair_index> found;
+        // Candidates kept instead of tested (a query that keeps them), and
+        // the kept candidates' positions of a block under test.
+        std::vector<pair_index> captured;
+        std::vector<tagged_pair> tagged;
+        std::vector<std::uint32_t> slots;
         std::size_t tested = 0;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;
@@ -114,7 +131,15 @@ private:
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
+    void test_candidates(part& p, std::size_t count) const;
     void sort_found();
+    // The kept candidates (see the top of this file).
+    void set_query(const query_input& input);
+    void widen(bounds_run& b, std::size_t count) const;
+    bool refresh_records(const query_input& input, std::size_t parts);
+    void keep_candidates(std::size_t parts);
+    void test_kept(std::size_t parts);
+    void answer_from_kept(std::size_t parts);
 
     collide_options options_;
     find_pairs_stats stats_;
@@ -152,7 +177,22 @@ private:
     std::vector<part> parts_;
     std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
-    std::vector<pair_sort_scratch> sort_scratch_;
+    std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
+
+    // Kept candidates. keep_ is set while a query keeps its candidates, and
+    // margin_ is then the widening of its bounds (in_lo_x_... hold the
+    // widened bounds, now_lo_x_... the bounds themselves).
+    bool keep_ = false;
+    bool kept_ready_ = false;
+    float margin_ = 0;
+    double margin_share_ = 1.0 / 16;  ///< margin_ in mean bounds heights
+    double mean_height_ = 0;          ///< of the last query's own bounds
+    std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
+    std::vector<float> now_lo_x_, now_lo_y_, now_hi_x_, now_hi_y_;
+    std::vector<pair_index> kept_;             ///< in the query's order, as the kernel takes them
+    std::vector<tagged_pair> kept_by_caller_;  ///< (a, b) in the caller's indices, sorted; tag: index into kept_
+    std::vector<std::uint8_t> kept_verdicts_;
+    std::vector<pair_sort_scratch<tagged_pair>> tag_scratch_;
 };
 
 }  // namespace obbsat::detail

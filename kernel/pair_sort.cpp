@@ -15,14 +15,15 @@ constexpr unsigned bucket_bits = 8;
 /// Sorts pairs[0, n), all of whose a share their high bits, by a then b:
 /// a counting sort on the low `low_bits` of a through `spare`, then an
 /// insertion sort on b within each run of equal a.
-void sort_bucket(pair_index* pairs, std::size_t n, unsigned low_bits, std::vector<pair_index>& spare,
+template <class Pair>
+void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, std::vector<Pair>& spare,
                  std::vector<std::uint32_t>& counts) {
     if (n < 2) {
         return;
     }
     const std::uint32_t mask = (std::uint32_t{1} << low_bits) - 1;
     if (n < 32) {
-        std::sort(pairs, pairs + n, [](const pair_index& x, const pair_index& y) {
+        std::sort(pairs, pairs + n, [](const Pair& x, const Pair& y) {
             return x.a < y.a || (x.a == y.a && x.b < y.b);
         });
         return;
@@ -46,12 +47,12 @@ void sort_bucket(pair_index* pairs, std::size_t n, unsigned low_bits, std::vecto
         if (end - begin > 32) {
             std::sort(spare.begin() + static_cast<std::ptrdiff_t>(begin),
                       spare.begin() + static_cast<std::ptrdiff_t>(end),
-                      [](const pair_index& x, const pair_index& y) { return x.b < y.b; });
+                      [](const Pair& x, const Pair& y) { return x.b < y.b; });
             begin = end;
             continue;
         }
         for (std::size_t i = begin + 1; i < end; ++i) {
-            const pair_index p = spare[i];
+            const Pair p = spare[i];
             std::size_t j = i;
             while (j > begin && spare[j - 1].b > p.b) {
                 spare[j] = spare[j - 1];
@@ -66,8 +67,9 @@ void sort_bucket(pair_index* pairs, std::size_t n, unsigned low_bits, std::vecto
 
 }  // namespace
 
-void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std::size_t a_count,
-                std::vector<pair_index>& out, std::vector<pair_sort_scratch>& scratch) {
+template <class Pair>
+void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_t a_count, std::vector<Pair>& out,
+                std::vector<pair_sort_scratch<Pair>>& scratch) {
     std::size_t n = 0;
     for (const auto* source : sources) {
         n += source->size();
@@ -91,7 +93,7 @@ void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std:
     const std::size_t sources_count = sources.size();
     std::vector<std::vector<std::size_t>> next(sources_count, std::vector<std::size_t>(buckets, 0));
     run(sources_count, [&](std::size_t s) {
-        for (const pair_index& p : *sources[s]) {
+        for (const Pair& p : *sources[s]) {
             ++next[s][p.a >> high_shift];
         }
     });
@@ -108,7 +110,7 @@ void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std:
     begin[buckets] = sum;
     run(sources_count, [&](std::size_t s) {
         std::vector<std::size_t>& slot = next[s];
-        for (const pair_index& p : *sources[s]) {
+        for (const Pair& p : *sources[s]) {
             out[slot[p.a >> high_shift]++] = p;
         }
     });
@@ -121,5 +123,10 @@ void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std:
         }
     });
 }
+
+template void sort_pairs<pair_index>(const std::vector<const std::vector<pair_index>*>&, std::size_t,
+                                     std::vector<pair_index>&, std::vector<pair_sort_scratch<pair_index>>&);
+template void sort_pairs<tagged_pair>(const std::vector<const std::vector<tagged_pair>*>&, std::size_t,
+                                      std::vector<tagged_pair>&, std::vector<pair_sort_scratch<tagged_pair>>&);
 
 }  // namespace obbsat::detail

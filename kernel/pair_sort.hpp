@@ -12,16 +12,26 @@
 
 namespace obbsat::detail {
 
+/// A pair with a tag that rides along, such as where it came from.
+struct tagged_pair {
+    std::uint32_t a;
+    std::uint32_t b;
+    std::uint32_t tag;
+};
+
 /// Working memory of one thread of sort_pairs, kept between calls.
+template <class Pair>
 struct pair_sort_scratch {
-    std::vector<pair_index> spare;
+    std::vector<Pair> spare;
     std::vector<std::uint32_t> counts;
 };
 
 /// Every pair of every source, sorted by a then b, into `out`; every a must
 /// be < a_count. One thread of the shared pool per source scatters it; the
-/// buckets are then sorted by scratch.size() threads.
-void sort_pairs(const std::vector<const std::vector<pair_index>*>& sources, std::size_t a_count,
-                std::vector<pair_index>& out, std::vector<pair_sort_scratch>& scratch);
+/// buckets are then sorted by scratch.size() threads. Pair is pair_index or
+/// tagged_pair; equal (a, b) keep no particular order.
+template <class Pair>
+void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_t a_count, std::vector<Pair>& out,
+                std::vector<pair_sort_scratch<Pair>>& scratch);
 
 }  // namespace obbsat::detail

@@ -10,6 +10,7 @@
 #include "test_support/float_text.hpp"
 #include "test_support/hard_pairs.hpp"
 #include "test_support/random_pairs.hpp"
+#include "test_support/sanitizers.hpp"
 #include "test_support/shared_cases.hpp"
 
 #include <obbsat/backend.hpp>
@@ -312,9 +313,10 @@ TEST_P(backend_equivalence, forced_backend_is_the_one_that_ran) {
 // Ten million random pairs through every path with sat4, the article's
 // method, and the first two million of them with every other method: the
 // other methods share sat4's loads, stores and lane steps, so what they add
-// is their own arithmetic, which two million pairs exercise amply.
+// is their own arithmetic, which two million pairs exercise amply. Under the
+// sanitizers, the first two million with every method (sanitizers.hpp).
 TEST_P(backend_equivalence, ten_million_random_pairs_match_reference) {
-    constexpr std::size_t chunks = 10;
+    constexpr std::size_t chunks = obbsat::test_support::volume(10, 2);
     constexpr std::size_t pairs_per_chunk = 1000000;
     constexpr std::size_t chunks_for_other_methods = 2;
     std::map<method, std::pair<std::size_t, std::size_t>> hits;  // method -> (hits, pairs)

@@ -498,17 +498,19 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
 
 class PairFinder:
     """A scene query that persists between calls (``obbsat::pair_finder``),
-    for simulations: it keeps the order of the rectangles and its buffers,
-    so a scene whose rectangles moved a little is answered by repairing the
-    previous order, with no allocation once its buffers have grown.
+    for simulations: it keeps the order of the rectangles, its buffers and the
+    candidates of slightly widened bounds, so a scene whose rectangles moved
+    a little is answered from those candidates (or, once a rectangle left its
+    widened bounds, by repairing the previous order), with no allocation once
+    its buffers have grown.
 
     ``find(boxes, against=None)`` returns what :func:`find_pairs` with the
     finder's method, backend and threads returns on the same data, always;
     the pairs are copied out of the finder's buffer (K * 8 bytes), which the
     next call reuses. ``stats`` says what the last call did
     (:class:`FindPairsStats`: ``boxes``, ``strips``, ``visits``,
-    ``candidates``, ``pairs``, ``slow_path_pairs``, ``reused_order`` and the
-    seconds of each phase). The default method is ``"exact"``, as in
+    ``candidates``, ``pairs``, ``slow_path_pairs``, ``reused_order``,
+    ``reused_candidates``, ``kept_candidates`` and the seconds of each phase). The default method is ``"exact"``, as in
     :func:`find_pairs`. One call runs at a time (another thread calling meanwhile waits, with
     the GIL released).
 

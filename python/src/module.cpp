@@ -769,6 +769,10 @@ PYBIND11_MODULE(_core, m) {
                       "candidates decided on the exact slow path (method exact)")
         .def_readonly("reused_order", &obbsat::find_pairs_stats::reused_order,
                       "the previous query's order was repaired, not rebuilt")
+        .def_readonly("reused_candidates", &obbsat::find_pairs_stats::reused_candidates,
+                      "PairFinder: answered from the candidates the last full query kept, without a sweep")
+        .def_readonly("kept_candidates", &obbsat::find_pairs_stats::kept_candidates,
+                      "PairFinder: candidates of the widened bounds kept for the next calls")
         .def_readonly("bounds_seconds", &obbsat::find_pairs_stats::bounds_seconds,
                       "bounds, the strips and the sort keys")
         .def_readonly("order_seconds", &obbsat::find_pairs_stats::order_seconds,
@@ -789,7 +793,9 @@ PYBIND11_MODULE(_core, m) {
             return "FindPairsStats(" + count("boxes", s.boxes) + count("strips", s.strips) +
                    count("visits", s.visits) + count("candidates", s.candidates) + count("pairs", s.pairs) +
                    count("slow_path_pairs", s.slow_path_pairs) + "reused_order=" +
-                   (s.reused_order ? "True, " : "False, ") + seconds("bounds_seconds", s.bounds_seconds) + ", " +
+                   (s.reused_order ? "True, " : "False, ") + "reused_candidates=" +
+                   (s.reused_candidates ? "True, " : "False, ") + count("kept_candidates", s.kept_candidates) +
+                   seconds("bounds_seconds", s.bounds_seconds) + ", " +
                    seconds("order_seconds", s.order_seconds) + ", " + seconds("sweep_seconds", s.sweep_seconds) +
                    ", " + seconds("kernel_seconds", s.kernel_seconds) + ", " +
                    seconds("output_seconds", s.output_seconds) + ")";

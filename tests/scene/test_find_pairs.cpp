@@ -489,6 +489,125 @@ TEST(pair_finder, every_frame_equals_a_fresh_query) {
     EXPECT_FALSE(finder.stats().reused_order);
 }
 
+/// The scene after `frame` frames of steady motion: each box drifts by its
+/// own velocity, up to `speed` per frame in each axis, and turns a little.
+std::vector<rect_pose> drifted(const std::vector<rect_pose>& start, int frame, float speed, std::uint64_t seed) {
+    obbsat::seeded_random random(seed);
+    std::vector<rect_pose> out = start;
+    const float t = static_cast<float>(frame);
+    for (rect_pose& p : out) {
+        const float vx = random.uniform(-speed, speed);
+        const float vy = random.uniform(-speed, speed);
+        const float turn = random.uniform(-0.01f, 0.01f) * t;
+        p.center = {p.center.x + vx * t, p.center.y + vy * t};
+        const float c = std::cos(turn), s = std::sin(turn);
+        p.rotation = {p.rotation.x * c - p.rotation.y * s, p.rotation.x * s + p.rotation.y * c};
+    }
+    return out;
+}
+
+/// The typical half extent of a scene, for motion at its scale.
+float typical_size(const std::vector<rect_pose>& poses) {
+    std::vector<float> sizes;
+    for (const rect_pose& p : poses) {
+        sizes.push_back(std::max(p.half_extents.x, p.half_extents.y));
+    }
+    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+    return sizes[sizes.size() / 2];
+}
+
+// Frames answered from the kept candidates equal fresh queries: every method,
+// both kinds of store, every hard scene, in steady motion (some frames from
+// the kept candidates, some after a rectangle left its widened bounds) and
+// in a scene that goes back and forth between two states (the exact contacts
+// of the tiles come back in frames answered from kept candidates).
+TEST(pair_finder, kept_candidates_answer_as_a_fresh_query_in_every_scene_and_method) {
+    std::size_t from_kept = 0, rebuilt = 0;
+    for (const named_scene& scene : hard_scenes()) {
+        const float speed = 0.02f * typical_size(scene.poses);
+        for (const bool back_and_forth : {false, true}) {
+            std::vector<std::vector<rect_pose>> frames;
+            for (int f = 0; f < 8; ++f) {
+                frames.push_back(drifted(scene.poses, back_and_forth ? f % 2 : f, speed, 7));
+            }
+            for (const method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+                obbsat::pair_finder finder(options_for(m));
+                for (std::size_t f = 0; f < frames.size(); ++f) {
+                    const obbsat::pose_records store(frames[f]);
+                    const std::vector<pair_index> got = finder.find(store);
+                    SCOPED_TRACE(scene.name + " / " + obbsat::method_name(m) + " / frame " + std::to_string(f) +
+                                 (back_and_forth ? " back and forth" : " steady"));
+                    EXPECT_SAME_PAIRS(got, obbsat::find_pairs(store, options_for(m)));
+                    from_kept += finder.stats().reused_candidates ? 1u : 0u;
+                    rebuilt += finder.stats().reused_candidates ? 0u : 1u;
+                    EXPECT_GE(finder.stats().kept_candidates, finder.stats().candidates);
+                }
+            }
+            for (const method m : obbsat::methods_on(obbsat::store_kind::corners)) {
+                obbsat::pair_finder finder(options_for(m));
+                for (std::size_t f = 0; f < frames.size(); ++f) {
+                    const std::vector<rect> rects = corners_of_scene(frames[f]);
+                    SCOPED_TRACE(scene.name + " / corners / " + obbsat::method_name(m) + " / frame " +
+                                 std::to_string(f));
+                    EXPECT_SAME_PAIRS(finder.find(rects), obbsat::find_pairs(rects, options_for(m)));
+                }
+            }
+        }
+    }
+    // Both ways of answering were taken, many times.
+    EXPECT_GT(from_kept, 100u);
+    EXPECT_GT(rebuilt, 50u);
+}
+
+TEST(pair_finder, kept_candidates_on_two_threads_and_across_stores) {
+    const auto start = seeded_scene(40000, obbsat::scene_sizes::mixed, 64, 0, 2.0);
+    const auto other = seeded_scene(3000, obbsat::scene_sizes::uniform, 65, 0, 2.0);
+    obbsat::pair_finder finder(options_for(method::exact, obbsat::backend::automatic, 2));
+    obbsat::pair_finder across(options_for(method::exact, obbsat::backend::automatic, 2));
+    std::size_t from_kept = 0;
+    for (int f = 0; f < 10; ++f) {
+        const auto frame = drifted(start, f, 0.01f, 9);
+        const auto moved_other = drifted(other, f, 0.03f, 10);
+        EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact))) << f;
+        from_kept += finder.stats().reused_candidates ? 1u : 0u;
+        EXPECT_SAME_PAIRS(across.find(moved_other, frame),
+                          obbsat::find_pairs(moved_other, frame, options_for(method::exact)))
+            << f;
+        from_kept += across.stats().reused_candidates ? 1u : 0u;
+    }
+    EXPECT_GE(from_kept, 8u);
+}
+
+TEST(pair_finder, a_box_that_jumps_and_a_bad_row_are_handled_between_kept_frames) {
+    auto poses = seeded_scene(20000, obbsat::scene_sizes::uniform, 66, 0, 2.0);
+    obbsat::pair_finder finder(options_for(method::exact));
+    finder.find(poses);
+    for (rect_pose& p : poses) {
+        p.center.x += 0.01f;
+    }
+    finder.find(poses);  // built with widened bounds
+    poses[1].center.x += 0.01f;
+    EXPECT_SAME_PAIRS(finder.find(poses), obbsat::find_pairs(poses, options_for(method::exact)));
+    EXPECT_TRUE(finder.stats().reused_candidates);
+    // A box lands on another far away: its bounds left the widened ones.
+    poses[3].center = poses[19000].center;
+    EXPECT_SAME_PAIRS(finder.find(poses), obbsat::find_pairs(poses, options_for(method::exact)));
+    EXPECT_FALSE(finder.stats().reused_candidates);
+    const auto with_jump = finder.find(poses);
+    EXPECT_TRUE(finder.stats().reused_candidates);
+    EXPECT_TRUE(std::binary_search(with_jump.begin(), with_jump.end(), pair_index{3, 19000}, operator_less));
+    // A bad row between kept frames is refused by name, as a fresh query refuses it.
+    poses[7].half_extents.x = -2.0f;
+    try {
+        finder.find(poses);
+        ADD_FAILURE() << "a negative half extent was accepted";
+    } catch (const obbsat::invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("pose 7: half extent hx is -2"), std::string::npos) << e.what();
+    }
+    poses[7].half_extents.x = 1.0f;
+    EXPECT_SAME_PAIRS(finder.find(poses), obbsat::find_pairs(poses, options_for(method::exact)));
+}
+
 TEST(pair_finder, a_scene_that_moves_far_gets_a_new_layout_and_the_right_pairs) {
     auto poses = seeded_scene(20000, obbsat::scene_sizes::uniform, 71, 0, 2.0);
     obbsat::pair_finder finder(options_for(method::local));

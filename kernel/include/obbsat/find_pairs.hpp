@@ -54,6 +54,8 @@ struct find_pairs_stats {
     std::size_t pairs = 0;       ///< pairs reported
     std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
+    bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
+    std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
     double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels

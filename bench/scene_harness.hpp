@@ -7,7 +7,8 @@
 //       everything built from the poses, answered, and torn down.
 //   <frame prefix>/boxes:<N>/sizes:<S>/threads:<T>  one query kept across
 //       iterations, each iteration on the other frame of the scene (every box
-//       moved by ±frame_step): a simulation step.
+//       moved by ±frame_step): a simulation step. Two untimed calls, one on
+//       each frame, come first.
 // Counters: ns_per_box, pairs_per_box (pairs reported), candidates_per_box
 // (pairs whose bounds overlap, handed to the narrowphase) and, for obbsat's
 // pair_finder, reused_order (the share of iterations that repaired the

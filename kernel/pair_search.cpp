@@ -328,9 +328,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     strip_hi_.resize(n_);
     side_.resize(n_);
     if (keep_) {
-        for (auto* v : {&now_lo_x_, &now_lo_y_, &now_hi_x_, &now_hi_y_}) {
-            v->resize(n_);
-        }
+        now_.resize(n_);
     }
     const bounds_fn bounds = kernels_for(ran_).bounds;
     run_parts(parts, [&](std::size_t share) {
@@ -352,16 +350,15 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                    in_lo_y_.data() + run_begin, in_hi_x_.data() + run_begin, in_hi_y_.data() + run_begin);
             if (keep_) {
                 // The bounds themselves for the kept candidates' test, the widened ones for the sweep.
+                for (std::size_t k = run_begin; k < run_end; ++k) {
+                    now_[k] = ref::box_bounds{in_lo_x_[k], in_lo_y_[k], in_hi_x_[k], in_hi_y_[k]};
+                }
                 bounds_run widened;
                 const std::size_t count = run_end - run_begin;
                 std::memcpy(widened.lo_x, in_lo_x_.data() + run_begin, count * sizeof(float));
                 std::memcpy(widened.lo_y, in_lo_y_.data() + run_begin, count * sizeof(float));
                 std::memcpy(widened.hi_x, in_hi_x_.data() + run_begin, count * sizeof(float));
                 std::memcpy(widened.hi_y, in_hi_y_.data() + run_begin, count * sizeof(float));
-                std::memcpy(now_lo_x_.data() + run_begin, widened.lo_x, count * sizeof(float));
-                std::memcpy(now_lo_y_.data() + run_begin, widened.lo_y, count * sizeof(float));
-                std::memcpy(now_hi_x_.data() + run_begin, widened.hi_x, count * sizeof(float));
-                std::memcpy(now_hi_y_.data() + run_begin, widened.hi_y, count * sizeof(float));
                 widen(widened, count);
                 std::memcpy(in_lo_x_.data() + run_begin, widened.lo_x, count * sizeof(float));
                 std::memcpy(in_lo_y_.data() + run_begin, widened.lo_y, count * sizeof(float));
@@ -726,10 +723,10 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
         constexpr std::size_t ahead = 16;
-        constexpr std::size_t run = 256;
+        bounds_run b;
         bool ok = true;
-        for (std::size_t run_begin = begin; run_begin < end && ok; run_begin += run) {
-            const std::size_t run_end = std::min(end, run_begin + run);
+        for (std::size_t run_begin = begin; run_begin < end && ok; run_begin += bounds_run::size) {
+            const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
                     __builtin_prefetch(record_at(input, order_[k + ahead]));
@@ -740,11 +737,12 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
                 }
                 copy_row(input, id, records_[k].v);
             }
-            bounds(kind_, records_[run_begin].v, run_end - run_begin, now_lo_x_.data() + run_begin,
-                   now_lo_y_.data() + run_begin, now_hi_x_.data() + run_begin, now_hi_y_.data() + run_begin);
+            bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
             for (std::size_t k = run_begin; k < run_end; ++k) {
-                ok &= (now_lo_x_[k] >= in_lo_x_[k]) & (now_lo_y_[k] >= in_lo_y_[k]) & (now_hi_x_[k] <= in_hi_x_[k]) &
-                      (now_hi_y_[k] <= in_hi_y_[k]);
+                const std::size_t r = k - run_begin;
+                ok &= (b.lo_x[r] >= in_lo_x_[k]) & (b.lo_y[r] >= in_lo_y_[k]) & (b.hi_x[r] <= in_hi_x_[k]) &
+                      (b.hi_y[r] <= in_hi_y_[k]);
+                now_[k] = ref::box_bounds{b.lo_x[r], b.lo_y[r], b.hi_x[r], b.hi_y[r]};
             }
         }
         fits[share] = ok ? 1 : 0;
@@ -795,10 +793,7 @@ void pair_search::test_kept(std::size_t parts) {
         parts_.resize(parts);
     }
     kept_verdicts_.resize(kept_.size());
-    const float* const lo_x = now_lo_x_.data();
-    const float* const lo_y = now_lo_y_.data();
-    const float* const hi_x = now_hi_x_.data();
-    const float* const hi_y = now_hi_y_.data();
+    const ref::box_bounds* const now = now_.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
         if (p.candidates.size() < candidate_block) {
@@ -810,22 +805,28 @@ void pair_search::test_kept(std::size_t parts) {
         p.slow_path = 0;
         p.kernel_seconds = 0;
         const auto [begin, end] = share_of(kept_.size(), share, parts);
+        // Plain pointers: a byte store may alias anything, and the vectors'
+        // own pointers would be reloaded on every candidate.
+        const pair_index* const kept = kept_.data();
+        std::uint8_t* const verdicts = kept_verdicts_.data();
+        pair_index* const candidates = p.candidates.data();
+        std::uint32_t* const slots = p.slots.data();
         for (std::size_t first = begin; first < end; first += candidate_block) {
             const std::size_t last = std::min(end, first + candidate_block);
             std::size_t count = 0;
             for (std::size_t i = first; i < last; ++i) {
-                const std::uint32_t a = kept_[i].a;
-                const std::uint32_t b = kept_[i].b;
-                const bool overlap = (lo_x[b] <= hi_x[a]) & (hi_x[b] >= lo_x[a]) & (lo_y[b] <= hi_y[a]) &
-                                     (hi_y[b] >= lo_y[a]);
-                p.candidates[count] = kept_[i];
-                p.slots[count] = static_cast<std::uint32_t>(i);
+                const ref::box_bounds a = now[kept[i].a];
+                const ref::box_bounds b = now[kept[i].b];
+                const bool overlap = (b.lo_x <= a.hi_x) & (b.hi_x >= a.lo_x) & (b.lo_y <= a.hi_y) & (b.hi_y >= a.lo_y);
+                candidates[count] = kept[i];
+                slots[count] = static_cast<std::uint32_t>(i);
                 count += overlap ? 1u : 0u;
-                kept_verdicts_[i] = 0;
             }
+            std::memset(verdicts + first, 0, last - first);
             test_candidates(p, count);
+            const std::uint8_t* const tested = p.verdicts.data();
             for (std::size_t c = 0; c < count; ++c) {
-                kept_verdicts_[p.slots[c]] = p.verdicts[c];
+                verdicts[slots[c]] = tested[c];
             }
         }
     });

@@ -9,7 +9,7 @@
 //       frame) and turning rate (up to ±0.005 rad per frame), reversing every
 //       drift_half_period frames, so that boxes keep leaving the widened
 //       bounds the finder kept and the workload stays the same however many
-//       iterations run. One period untimed, then two timed (128 frames).
+//       iterations run. One period untimed, then one timed (64 frames).
 //       The motion itself is not timed. Counter
 //       reused_candidates: the share of frames answered from kept candidates.
 //

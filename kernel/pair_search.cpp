@@ -740,8 +740,11 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
             bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 const std::size_t r = k - run_begin;
-                ok &= (b.lo_x[r] >= in_lo_x_[k]) & (b.lo_y[r] >= in_lo_y_[k]) & (b.hi_x[r] <= in_hi_x_[k]) &
-                      (b.hi_y[r] <= in_hi_y_[k]);
+                const unsigned inside = static_cast<unsigned>(b.lo_x[r] >= in_lo_x_[k]) &
+                                        static_cast<unsigned>(b.lo_y[r] >= in_lo_y_[k]) &
+                                        static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
+                                        static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
+                ok &= inside != 0;
                 now_[k] = ref::box_bounds{b.lo_x[r], b.lo_y[r], b.hi_x[r], b.hi_y[r]};
             }
         }
@@ -817,10 +820,11 @@ void pair_search::test_kept(std::size_t parts) {
             for (std::size_t i = first; i < last; ++i) {
                 const ref::box_bounds a = now[kept[i].a];
                 const ref::box_bounds b = now[kept[i].b];
-                const bool overlap = (b.lo_x <= a.hi_x) & (b.hi_x >= a.lo_x) & (b.lo_y <= a.hi_y) & (b.hi_y >= a.lo_y);
+                const unsigned overlap = static_cast<unsigned>(b.lo_x <= a.hi_x) & static_cast<unsigned>(b.hi_x >= a.lo_x) &
+                                         static_cast<unsigned>(b.lo_y <= a.hi_y) & static_cast<unsigned>(b.hi_y >= a.lo_y);
                 candidates[count] = kept[i];
                 slots[count] = static_cast<std::uint32_t>(i);
-                count += overlap ? 1u : 0u;
+                count += overlap;
             }
             std::memset(verdicts + first, 0, last - first);
             test_candidates(p, count);

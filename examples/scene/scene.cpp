@@ -171,7 +171,7 @@ double milliseconds_between(clock_type::time_point from, clock_type::time_point 
 // Sums of one second's frames, in milliseconds.
 struct second_totals {
     double motion = 0, query = 0, bounds = 0, order = 0, sweep = 0, output = 0, slowest_frame = 0;
-    std::size_t pairs = 0, reused_order = 0;
+    std::size_t pairs = 0, reused_order = 0, reused_candidates = 0;
 
     void add(const obbsat::find_pairs_stats& s) {
         bounds += 1e3 * s.bounds_seconds;
@@ -180,6 +180,7 @@ struct second_totals {
         output += 1e3 * s.output_seconds;
         pairs += s.pairs;
         reused_order += s.reused_order ? 1 : 0;
+        reused_candidates += s.reused_candidates ? 1 : 0;
     }
 };
 
@@ -222,12 +223,12 @@ int run(unsigned long seconds, std::size_t box_count) {
         const double frames = static_cast<double>(frames_per_second);
         const double frame_ms = (sum.motion + sum.query) / frames;
         std::printf("t=%3lus  pairs %.0f (%.2f/box)  frame %.3f ms, %.1f ns/box: motion %.3f, bounds %.3f, "
-                    "order %.3f, sweep %.3f, output %.3f (order reused %zu/%zu, slowest %.3f)\n",
+                    "order %.3f, sweep %.3f, output %.3f (candidates kept %zu/%zu, order reused %zu/%zu, slowest %.3f)\n",
                     second, static_cast<double>(sum.pairs) / frames,
                     static_cast<double>(sum.pairs) / frames / static_cast<double>(box_count), frame_ms,
                     1e6 * frame_ms / static_cast<double>(box_count), sum.motion / frames, sum.bounds / frames,
-                    sum.order / frames, sum.sweep / frames, sum.output / frames, sum.reused_order,
-                    frames_per_second, sum.slowest_frame);
+                    sum.order / frames, sum.sweep / frames, sum.output / frames, sum.reused_candidates,
+                    frames_per_second, sum.reused_order, frames_per_second, sum.slowest_frame);
     }
     std::printf("pair digest %016llx\n", static_cast<unsigned long long>(digest));
     return check_pairs(boxes, *pairs, options) ? 0 : 1;

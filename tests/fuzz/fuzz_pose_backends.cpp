@@ -4,8 +4,9 @@
 // verdicts of the method's scalar reference on any valid pose (for exact: the
 // exact pose oracle); conservative must never miss a collision; the scene
 // query with method exact must report exactly the pairs the pose oracle calls
-// colliding; the conversion to corners must equal its reference byte for byte. The first
-// difference is printed with the two poses in hex floats and stops the run.
+// colliding, fresh and from a pair_finder's kept candidates; the conversion to
+// corners must equal its reference byte for byte. The first difference is
+// printed with the two poses in hex floats and stops the run.
 //
 // Input format: one byte for the number of poses, then each pose as a kind
 // byte and its payload; the bytes left over are pairs of indices (each taken
@@ -227,6 +228,36 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             stop("find_pairs(exact) on " + std::string(obbsat::backend_name(b)) + " reports " +
                  std::to_string(found.size()) + " pairs, the pose oracle " + std::to_string(colliding.size()) +
                  detail);
+        }
+    }
+    // A persistent query that saw the poses nudged by one ulp, then sees them
+    // again: answered from the candidates it kept when they still fit, and
+    // exactly the oracle's pairs either way.
+    std::vector<rect_pose> nudged = poses;
+    for (rect_pose& p : nudged) {
+        const float x = std::nextafter(p.center.x, 0.0f);
+        p.center.x = std::isfinite(x) ? x : p.center.x;
+    }
+    for (const backend b : obbsat::compiled_backends()) {
+        if (!obbsat::cpu_supports(b)) {
+            continue;
+        }
+        obbsat::collide_options options;
+        options.test = method::exact;
+        options.use = b;
+        obbsat::pair_finder finder(options);
+        finder.find(poses);
+        finder.find(nudged);
+        const std::vector<pair_index>& found = finder.find(poses);
+        bool same = found.size() == colliding.size();
+        for (std::size_t k = 0; same && k < found.size(); ++k) {
+            same = found[k].a == colliding[k].a && found[k].b == colliding[k].b;
+        }
+        if (!same) {
+            stop("pair_finder(exact) on " + std::string(obbsat::backend_name(b)) + " reports " +
+                 std::to_string(found.size()) + " pairs after a nudge, the pose oracle " +
+                 std::to_string(colliding.size()) +
+                 (finder.stats().reused_candidates ? " (from kept candidates)" : " (full query)"));
         }
     }
     std::vector<obbsat::rect> corners(count);

@@ -124,11 +124,20 @@ namespace detail {
 class pair_search;
 }  // namespace detail
 
-/// A persistent query for simulations: it keeps the order of the rectangles
-/// and every buffer from one call to the next, so a scene whose rectangles
-/// moved a little is answered by repairing the previous order, with no
-/// allocation once the buffers have grown. The answer is always the same as a
-/// fresh find_pairs on the same data.
+/// A persistent query for simulations. Its full query widens every bounds by
+/// a margin and keeps the pairs whose widened bounds overlap, sorted in the
+/// caller's indices. A later call with the same number of rectangles checks
+/// that each one's bounds still lie inside its widened bounds (exact float
+/// comparisons); if so, the kept pairs hold every pair whose bounds overlap
+/// now, and the call tests just those (no sweep, no sort). Otherwise it runs
+/// the full query again, repairing the previous order instead of sorting
+/// anew when it can. The margin follows the motion: a fraction of the mean
+/// bounds height that doubles when the kept pairs served fewer than four
+/// calls and halves when they served more than 64. The answer is always the
+/// same as a fresh find_pairs on the same data, for every method. No
+/// allocation once the buffers have grown. Memory beyond find_pairs': 21
+/// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding
+/// pairs per rectangle) and 16 per rectangle.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);

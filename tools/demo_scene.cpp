@@ -79,7 +79,9 @@ bool print_scene_queries(const scene_demo_settings& settings) {
                 "the median of %u runs after one warm-up, stages in ms as the query reports them (bounds: bounds\n"
                 "and sort keys; order: sorting and copying the records; sweep: broadphase and exact narrowphase;\n"
                 "output: caller's indices, sorted). cold: a new query each run; frame: one pair_finder, every\n"
-                "box moved up to 0.05 between runs\n",
+                "box moved up to 0.05 between runs, answered from the pairs of widened bounds it kept (bounds:\n"
+                "the records refreshed and checked; sweep: the kept pairs filtered and tested; output: the\n"
+                "answer read in the kept order)\n",
                 settings.boxes, backend_name(best), settings.reps);
     std::printf("  %-7s  %7s  %-5s  %7s  %7s  %7s  %7s  %8s  %7s  %9s  %-16s\n", "sizes", "threads", "query", "bounds",
                 "order", "sweep", "output", "total", "ns/box", "pairs/box", "digest");

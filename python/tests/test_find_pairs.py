@@ -294,6 +294,7 @@ def test_a_pair_finder_equals_fresh_queries_frame_after_frame(large_poses, metho
     finder = obbsat.PairFinder(method=method, threads=2)
     assert finder.stats.boxes == 0 and not finder.stats.reused_order
     answers = []
+    reused_candidates = 0
     for k, frame in enumerate(frames(large_poses, 6, seed=1)):
         got = finder.find(frame)
         assert_pairs(got, obbsat.find_pairs(frame, method=method))
@@ -303,11 +304,16 @@ def test_a_pair_finder_equals_fresh_queries_frame_after_frame(large_poses, metho
         assert stats.strips > 0 and 0 < stats.kernel_seconds <= stats.sweep_seconds * 2.5
         assert stats.reused_order == (k > 0), k
         assert (stats.slow_path_pairs > 0) <= (method == "exact")
+        assert stats.kept_candidates >= stats.candidates
+        reused_candidates += stats.reused_candidates
         answers.append(got)
     # Each answer is a copy: the next frame did not overwrite it.
     for frame, got in zip(frames(large_poses, 6, seed=1), answers):
         assert_pairs(got, obbsat.find_pairs(frame, method=method))
     assert "reused_order=True" in repr(finder.stats)
+    # Steady motion: some frames from the kept candidates, some not (the first
+    # keeps the bounds themselves, so the second must run the full query).
+    assert 1 <= reused_candidates <= 4, reused_candidates
 
 
 def test_a_pair_finder_on_cross_queries_corners_and_stores(large_poses):

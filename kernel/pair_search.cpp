@@ -14,6 +14,10 @@
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/ref/bounds.hpp>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <cfloat>
@@ -110,6 +114,23 @@ ref::box_bounds bounds_of_record(store_kind kind, const float* v) {
         return ref::bounds_of(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}});
     }
     return ref::bounds_of(rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
+}
+
+/// 1 iff the bounds a and b, each (lo_x, lo_y, -hi_x, -hi_y), overlap (closed
+/// intervals): b's lo is at most a's hi and a's lo at most b's hi on both
+/// axes, that is b <= (a.hi_x, a.hi_y, -a.lo_x, -a.lo_y) in every place.
+/// Negation is exact, so this is the sweep's test, comparison for comparison.
+unsigned signed_bounds_overlap(const float* a, const float* b) {
+#if defined(__SSE2__)
+    const __m128 va = _mm_loadu_ps(a);
+    const __m128 vb = _mm_loadu_ps(b);
+    const __m128 swapped = _mm_shuffle_ps(va, va, _MM_SHUFFLE(1, 0, 3, 2));
+    const __m128 reach = _mm_xor_ps(swapped, _mm_set1_ps(-0.0f));
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(vb, reach)) == 15);
+#else
+    return static_cast<unsigned>(b[0] <= -a[2]) & static_cast<unsigned>(b[1] <= -a[3]) &
+           static_cast<unsigned>(b[2] <= -a[0]) & static_cast<unsigned>(b[3] <= -a[1]);
+#endif
 }
 
 /// Copies row `id` of the query into `out` (a pose row's two last floats zero).
@@ -351,7 +372,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
             if (keep_) {
                 // The bounds themselves for the kept candidates' test, the widened ones for the sweep.
                 for (std::size_t k = run_begin; k < run_end; ++k) {
-                    now_[k] = ref::box_bounds{in_lo_x_[k], in_lo_y_[k], in_hi_x_[k], in_hi_y_[k]};
+                    now_[k] = signed_bounds{{in_lo_x_[k], in_lo_y_[k], -in_hi_x_[k], -in_hi_y_[k]}};
                 }
                 bounds_run widened;
                 const std::size_t count = run_end - run_begin;
@@ -745,7 +766,7 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
                                         static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
                                         static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
                 ok &= inside != 0;
-                now_[k] = ref::box_bounds{b.lo_x[r], b.lo_y[r], b.hi_x[r], b.hi_y[r]};
+                now_[k] = signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
             }
         }
         fits[share] = ok ? 1 : 0;
@@ -796,7 +817,7 @@ void pair_search::test_kept(std::size_t parts) {
         parts_.resize(parts);
     }
     kept_verdicts_.resize(kept_.size());
-    const ref::box_bounds* const now = now_.data();
+    const signed_bounds* const now = now_.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
         if (p.candidates.size() < candidate_block) {
@@ -818,10 +839,7 @@ void pair_search::test_kept(std::size_t parts) {
             const std::size_t last = std::min(end, first + candidate_block);
             std::size_t count = 0;
             for (std::size_t i = first; i < last; ++i) {
-                const ref::box_bounds a = now[kept[i].a];
-                const ref::box_bounds b = now[kept[i].b];
-                const unsigned overlap = static_cast<unsigned>(b.lo_x <= a.hi_x) & static_cast<unsigned>(b.hi_x >= a.lo_x) &
-                                         static_cast<unsigned>(b.lo_y <= a.hi_y) & static_cast<unsigned>(b.hi_y >= a.lo_y);
+                const unsigned overlap = signed_bounds_overlap(now[kept[i].a].v, now[kept[i].b].v);
                 candidates[count] = kept[i];
                 slots[count] = static_cast<std::uint32_t>(i);
                 count += overlap;

@@ -183,14 +183,20 @@ private:
     // Kept candidates. keep_ is set while a query keeps its candidates, and
     // margin_ is then the widening of its bounds (in_lo_x_... hold the
     // widened bounds, now_ the bounds themselves, one 16-byte entry per
-    // rectangle so that a candidate's test reads two).
+    // rectangle so that a candidate's test reads two and compares them in one
+    // vector).
     bool keep_ = false;
     bool kept_ready_ = false;
     float margin_ = 0;
     double margin_share_ = 1.0 / 16;  ///< margin_ in mean bounds heights
     double mean_height_ = 0;          ///< of the last query's own bounds
     std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
-    std::vector<ref::box_bounds> now_;
+    /// Bounds as (lo_x, lo_y, -hi_x, -hi_y): two overlap iff one's entry is at
+    /// most the other's with halves swapped and negated, in all four places.
+    struct signed_bounds {
+        float v[4];
+    };
+    std::vector<signed_bounds> now_;
     std::vector<pair_index> kept_;             ///< in the query's order, as the kernel takes them
     std::vector<tagged_pair> kept_by_caller_;  ///< (a, b) in the caller's indices, sorted; tag: index into kept_
     std::vector<std::uint8_t> kept_verdicts_;

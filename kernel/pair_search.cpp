@@ -871,24 +871,32 @@ void pair_search::answer_from_kept(std::size_t parts) {
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
         const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
-        p.found.resize(end - begin);
-        pair_index* out = p.found.data();
-        std::size_t kept = 0;
-        for (std::size_t j = begin; j < end; ++j) {
-            const tagged_pair& t = kept_by_caller_[j];
-            out[kept] = pair_index{t.a, t.b};
-            kept += kept_verdicts_[t.tag] != 0 ? 1u : 0u;
+        if (p.share_room < end - begin) {
+            p.share.reset(new pair_index[end - begin]);
+            p.share_room = end - begin;
         }
-        p.found.resize(kept);
+        pair_index* const out = p.share.get();
+        const std::uint8_t* const verdicts = kept_verdicts_.data();
+        const tagged_pair* const kept = kept_by_caller_.data();
+        std::size_t found = 0;
+        constexpr std::size_t ahead = 32;
+        for (std::size_t j = begin; j < end; ++j) {
+            if (j + ahead < end) {
+                __builtin_prefetch(verdicts + kept[j + ahead].tag);
+            }
+            out[found] = pair_index{kept[j].a, kept[j].b};
+            found += verdicts[kept[j].tag] != 0 ? 1u : 0u;
+        }
+        p.share_size = found;
     });
     for (std::size_t i = 0; i < parts; ++i) {
-        offsets[i + 1] = offsets[i] + parts_[i].found.size();
+        offsets[i + 1] = offsets[i] + parts_[i].share_size;
     }
     pairs_.resize(offsets[parts]);
     run_parts(parts, [&](std::size_t share) {
-        part& p = parts_[share];
-        std::copy(p.found.begin(), p.found.end(), pairs_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
-        p.found.clear();
+        const part& p = parts_[share];
+        std::copy(p.share.get(), p.share.get() + p.share_size,
+                  pairs_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
     });
     stats_.pairs = pairs_.size();
     stats_.output_seconds += seconds_since(start);

@@ -47,6 +47,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace obbsat::detail {
@@ -107,6 +108,12 @@ private:
         std::vector<pair_index> captured;
         std::vector<tagged_pair> tagged;
         std::vector<std::uint32_t> slots;
+        // A share of the answer read from the kept candidates, before it is
+        // copied into place: room for every kept pair of the share, never
+        // cleared (a vector would zero it on every call).
+        std::unique_ptr<pair_index[]> share;
+        std::size_t share_room = 0;
+        std::size_t share_size = 0;
         std::size_t tested = 0;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;

@@ -194,42 +194,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
         }
     }
-    for (const backend b : obbsat::compiled_backends()) {
-        if (!obbsat::cpu_supports(b)) {
-            continue;
-        }
-        obbsat::collide_options options;
-        options.test = method::exact;
-        options.use = b;
-        const std::vector<pair_index> found = obbsat::find_pairs(poses, options);
+    const auto expect_oracle_pairs = [&](const std::vector<pair_index>& found, const std::string& what) {
         bool same = found.size() == colliding.size();
         for (std::size_t k = 0; same && k < found.size(); ++k) {
             same = found[k].a == colliding[k].a && found[k].b == colliding[k].b;
         }
-        if (!same) {
-            std::string detail;
-            const auto has = [](const std::vector<pair_index>& list, const pair_index& p) {
-                return std::any_of(list.begin(), list.end(),
-                                   [&](const pair_index& q) { return q.a == p.a && q.b == p.b; });
-            };
-            int shown = 0;
-            for (const pair_index& p : found) {
-                if (!has(colliding, p) && shown++ < 3) {
-                    detail += "\n  only the query: (" + std::to_string(p.a) + ", " + std::to_string(p.b) + ")\n    A " +
-                              text_of(poses[p.a]) + "\n    B " + text_of(poses[p.b]);
-                }
-            }
-            for (const pair_index& p : colliding) {
-                if (!has(found, p) && shown++ < 6) {
-                    detail += "\n  only the oracle: (" + std::to_string(p.a) + ", " + std::to_string(p.b) + ")\n    A " +
-                              text_of(poses[p.a]) + "\n    B " + text_of(poses[p.b]);
-                }
-            }
-            stop("find_pairs(exact) on " + std::string(obbsat::backend_name(b)) + " reports " +
-                 std::to_string(found.size()) + " pairs, the pose oracle " + std::to_string(colliding.size()) +
-                 detail);
+        if (same) {
+            return;
         }
-    }
+        std::string detail;
+        const auto has = [](const std::vector<pair_index>& list, const pair_index& p) {
+            return std::any_of(list.begin(), list.end(), [&](const pair_index& q) { return q.a == p.a && q.b == p.b; });
+        };
+        int shown = 0;
+        for (const pair_index& p : found) {
+            if (!has(colliding, p) && shown++ < 3) {
+                detail += "\n  only the query: (" + std::to_string(p.a) + ", " + std::to_string(p.b) + ")\n    A " +
+                          text_of(poses[p.a]) + "\n    B " + text_of(poses[p.b]);
+            }
+        }
+        for (const pair_index& p : colliding) {
+            if (!has(found, p) && shown++ < 6) {
+                detail += "\n  only the oracle: (" + std::to_string(p.a) + ", " + std::to_string(p.b) + ")\n    A " +
+                          text_of(poses[p.a]) + "\n    B " + text_of(poses[p.b]);
+            }
+        }
+        stop(what + " reports " + std::to_string(found.size()) + " pairs, the pose oracle " +
+             std::to_string(colliding.size()) + detail);
+    };
     // A persistent query that saw the poses nudged by one ulp, then sees them
     // again: answered from the candidates it kept when they still fit, and
     // exactly the oracle's pairs either way.
@@ -245,20 +237,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         obbsat::collide_options options;
         options.test = method::exact;
         options.use = b;
+        const std::string on = std::string(" on ") + obbsat::backend_name(b);
+        expect_oracle_pairs(obbsat::find_pairs(poses, options), "find_pairs(exact)" + on);
         obbsat::pair_finder finder(options);
         finder.find(poses);
         finder.find(nudged);
-        const std::vector<pair_index>& found = finder.find(poses);
-        bool same = found.size() == colliding.size();
-        for (std::size_t k = 0; same && k < found.size(); ++k) {
-            same = found[k].a == colliding[k].a && found[k].b == colliding[k].b;
-        }
-        if (!same) {
-            stop("pair_finder(exact) on " + std::string(obbsat::backend_name(b)) + " reports " +
-                 std::to_string(found.size()) + " pairs after a nudge, the pose oracle " +
-                 std::to_string(colliding.size()) +
-                 (finder.stats().reused_candidates ? " (from kept candidates)" : " (full query)"));
-        }
+        const std::vector<pair_index>& again = finder.find(poses);
+        expect_oracle_pairs(again, "pair_finder(exact)" + on + " after a nudge, " +
+                                       (finder.stats().reused_candidates ? "from kept candidates," : "full query,"));
     }
     std::vector<obbsat::rect> corners(count);
     for (const backend b : obbsat::compiled_backends()) {

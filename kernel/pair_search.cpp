@@ -155,13 +155,16 @@ void pair_search::widen(bounds_run& b, std::size_t count) const {
     if (!keep_ || margin_ == 0.0f) {
         return;
     }
-    // Rounding is monotone, so lo - m <= lo and hi + m >= hi: the widened
-    // bounds contain the bounds.
+    // Each box by a share of its own larger extent, so that a few huge boxes
+    // widen only themselves. Rounding is monotone, so lo - m <= lo and
+    // hi + m >= hi: the widened bounds contain the bounds. An extent is never
+    // NaN (lo <= hi, at worst -inf and +inf), so neither is m.
     for (std::size_t i = 0; i < count; ++i) {
-        b.lo_x[i] -= margin_;
-        b.lo_y[i] -= margin_;
-        b.hi_x[i] += margin_;
-        b.hi_y[i] += margin_;
+        const float m = margin_ * std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]);
+        b.lo_x[i] -= m;
+        b.lo_y[i] -= m;
+        b.hi_x[i] += m;
+        b.hi_y[i] += m;
     }
 }
 
@@ -710,7 +713,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         }
     }
     const bool same = same_scene_as_last();
-    margin_ = same ? static_cast<float>(std::min(mean_height_ * margin_share_, static_cast<double>(FLT_MAX))) : 0.0f;
+    margin_ = same ? static_cast<float>(margin_share_) : 0.0f;
     kept_ready_ = false;
     kept_calls_ = 0;
     keep_ = true;
@@ -725,7 +728,6 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         pairs_.clear();
         return pairs_;
     }
-    mean_height_ = std::max(0.0, extent_.mean_height - 2.0 * static_cast<double>(margin_));
     keep_candidates(used_parts_);
     kept_ready_ = true;
     test_kept(used_parts_);

@@ -188,15 +188,14 @@ private:
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 
     // Kept candidates. keep_ is set while a query keeps its candidates, and
-    // margin_ is then the widening of its bounds (in_lo_x_... hold the
+    // margin_ then sets the widening of its bounds (in_lo_x_... hold the
     // widened bounds, now_ the bounds themselves, one 16-byte entry per
     // rectangle so that a candidate's test reads two and compares them in one
     // vector).
     bool keep_ = false;
     bool kept_ready_ = false;
-    float margin_ = 0;
-    double margin_share_ = 1.0 / 16;  ///< margin_ in mean bounds heights
-    double mean_height_ = 0;          ///< of the last query's own bounds
+    float margin_ = 0;                ///< each box widened by margin_ times its larger extent
+    double margin_share_ = 1.0 / 16;  ///< margin_ of the next full query that follows motion
     std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
     /// Bounds as (lo_x, lo_y, -hi_x, -hi_y): two overlap iff one's entry is at
     /// most the other's with halves swapped and negated, in all four places.

@@ -131,9 +131,9 @@ class pair_search;
 /// comparisons); if so, the kept pairs hold every pair whose bounds overlap
 /// now, and the call tests just those (no sweep, no sort). Otherwise it runs
 /// the full query again, repairing the previous order instead of sorting
-/// anew when it can. The margin follows the motion: a fraction of the mean
-/// bounds height that doubles when the kept pairs served fewer than four
-/// calls and halves when they served more than 64. The answer is always the
+/// anew when it can. The margin follows the motion: each box widened by a
+/// share of its own larger extent, the share doubled when the kept pairs
+/// served fewer than four calls and halved when they served more than 64. The answer is always the
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding

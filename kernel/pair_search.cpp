@@ -19,9 +19,11 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cfloat>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -38,6 +40,11 @@ constexpr double strip_factor = 2.0;
 
 /// Candidates handed to the method's kernel at once.
 constexpr std::size_t candidate_block = 2048;
+
+/// A query that widens its bounds keeps at most this many times the
+/// candidates of the last query, plus one per rectangle; a scene whose
+/// widened bounds would give more is answered as a plain query.
+constexpr std::size_t kept_budget_factor = 4;
 
 /// Found pairs handed to a streaming sink at once.
 constexpr std::size_t emit_block = 4096;
@@ -155,12 +162,13 @@ void pair_search::widen(bounds_run& b, std::size_t count) const {
     if (!keep_ || margin_ == 0.0f) {
         return;
     }
-    // Each box by a share of its own larger extent, so that a few huge boxes
-    // widen only themselves. Rounding is monotone, so lo - m <= lo and
+    // Each box by a share of its larger extent or of the scene's typical
+    // extent, whichever is larger, so that a few huge boxes widen only
+    // themselves and the smallest still get room to move. Rounding is monotone, so lo - m <= lo and
     // hi + m >= hi: the widened bounds contain the bounds. An extent is never
     // NaN (lo <= hi, at worst -inf and +inf), so neither is m.
     for (std::size_t i = 0; i < count; ++i) {
-        const float m = margin_ * std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]);
+        const float m = margin_ * std::max(std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]), typical_extent_);
         b.lo_x[i] -= m;
         b.lo_y[i] -= m;
         b.hi_x[i] += m;
@@ -470,7 +478,13 @@ void pair_search::flush_candidates(part& p) const {
         candidates[i].b = swap ? first : second;
     }
     if (keep_) {
-        p.captured.insert(p.captured.end(), candidates, candidates + count);
+        // Past its budget a part keeps nothing more: the call then answers
+        // as a plain query (collect).
+        if (p.captured.size() + count <= p.capture_budget) {
+            p.captured.insert(p.captured.end(), candidates, candidates + count);
+        } else {
+            p.over_budget = true;
+        }
         p.candidate_count = 0;
         return;
     }
@@ -581,6 +595,10 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         p.candidate_count = 0;
         p.found.clear();
         p.captured.clear();
+        p.over_budget = false;
+        p.capture_budget = margin_ > 0.0f
+                               ? (kept_budget_factor * last_candidates_ + n_) / parts + candidate_block
+                               : std::numeric_limits<std::size_t>::max();
         p.tested = 0;
         p.slow_path = 0;
         p.kernel_seconds = 0;
@@ -728,9 +746,27 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         pairs_.clear();
         return pairs_;
     }
+    bool over_budget = false;
+    for (std::size_t i = 0; i < used_parts_; ++i) {
+        over_budget |= parts_[i].over_budget;
+    }
+    if (over_budget) {
+        // The widened bounds met too many others: this call answers as a
+        // plain query, and the next full query widens less.
+        for (std::size_t i = 0; i < used_parts_; ++i) {
+            std::vector<pair_index>().swap(parts_[i].captured);
+        }
+        margin_share_ = std::max(margin_share_ / 4, 1.0 / 256);
+        run(input, pair_chunk_sink{});
+        sort_found();
+        last_candidates_ = stats_.candidates;
+        return pairs_;
+    }
+    measure_typical_extent(used_parts_);
     keep_candidates(used_parts_);
     kept_ready_ = true;
     test_kept(used_parts_);
+    last_candidates_ = stats_.candidates;
     answer_from_kept(used_parts_);
     return pairs_;
 }
@@ -774,6 +810,37 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
         fits[share] = ok ? 1 : 0;
     });
     return std::find(fits.begin(), fits.end(), 0) == fits.end();
+}
+
+void pair_search::measure_typical_extent(std::size_t parts) {
+    // The median of the boxes' larger extents, to the power of two below it:
+    // a histogram of float exponents, robust to a few huge or tiny boxes.
+    std::vector<std::array<std::uint32_t, 256>> counts(parts);
+    run_parts(parts, [&](std::size_t share) {
+        std::array<std::uint32_t, 256>& c = counts[share];
+        c.fill(0);
+        const auto [begin, end] = share_of(n_, share, parts);
+        for (std::size_t k = begin; k < end; ++k) {
+            const float* v = now_[k].v;
+            const float extent = std::max(-v[2] - v[0], -v[3] - v[1]);
+            std::uint32_t bits;
+            std::memcpy(&bits, &extent, sizeof bits);
+            ++c[(bits >> 23) & 0xffu];
+        }
+    });
+    std::size_t seen = 0;
+    int median = 0;
+    for (int e = 0; e < 256; ++e) {
+        for (std::size_t share = 0; share < parts; ++share) {
+            seen += counts[share][static_cast<std::size_t>(e)];
+        }
+        if (2 * seen > n_) {
+            median = e;
+            break;
+        }
+    }
+    // Exponent 0 holds zero and subnormal extents, 255 infinite ones: no scale.
+    typical_extent_ = median > 0 && median < 255 ? std::ldexp(1.0f, median - 127) : 0.0f;
 }
 
 void pair_search::keep_candidates(std::size_t parts) {

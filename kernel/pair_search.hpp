@@ -106,6 +106,8 @@ private:
         // Candidates kept instead of tested (a query that keeps them), and
         // the kept candidates' positions of a block under test.
         std::vector<pair_index> captured;
+        std::size_t capture_budget = 0;
+        bool over_budget = false;
         std::vector<tagged_pair> tagged;
         std::vector<std::uint32_t> slots;
         // A share of the answer read from the kept candidates, before it is
@@ -145,6 +147,7 @@ private:
     void set_query(const query_input& input);
     void widen(bounds_run& b, std::size_t count) const;
     bool refresh_records(const query_input& input, std::size_t parts);
+    void measure_typical_extent(std::size_t parts);
     void keep_candidates(std::size_t parts);
     void test_kept(std::size_t parts);
     void answer_from_kept(std::size_t parts);
@@ -194,9 +197,11 @@ private:
     // vector).
     bool keep_ = false;
     bool kept_ready_ = false;
-    float margin_ = 0;                ///< each box widened by margin_ times its larger extent
+    float margin_ = 0;                ///< each box widened by margin_ times its larger extent or typical_extent_
+    float typical_extent_ = 0;        ///< about the median of the boxes' larger extents, from the last full query
     double margin_share_ = 1.0 / 16;  ///< margin_ of the next full query that follows motion
     std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
+    std::size_t last_candidates_ = 0;  ///< candidates of the last full query, for the budget of kept ones
     /// Bounds as (lo_x, lo_y, -hi_x, -hi_y): two overlap iff one's entry is at
     /// most the other's with halves swapped and negated, in all four places.
     struct signed_bounds {

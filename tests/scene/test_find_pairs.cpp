@@ -597,6 +597,30 @@ TEST(pair_finder, a_huge_box_does_not_widen_the_others) {
     EXPECT_GE(from_kept, 4u);
 }
 
+// Dense specks among as many huge boxes: the typical extent is huge, so the
+// widened specks would meet every other speck. The finder stays within its
+// budget of kept pairs and answers as a plain query.
+TEST(pair_finder, widened_bounds_that_meet_too_many_are_not_kept) {
+    std::vector<rect_pose> start;
+    for (int i = 0; i < 55; ++i) {
+        for (int j = 0; j < 55; ++j) {
+            start.push_back(rect_pose{{0.01f * static_cast<float>(i), 0.01f * static_cast<float>(j)},
+                                      {0.001f, 0.001f}, {1.0f, 0.0f}});
+        }
+    }
+    const std::size_t specks = start.size();
+    for (std::size_t k = 0; k <= specks; ++k) {
+        start.push_back(rect_pose{{1e4f + 1000.0f * static_cast<float>(k % 60), 1000.0f * static_cast<float>(k / 60)},
+                                  {50.0f, 50.0f}, {0.6f, 0.8f}});
+    }
+    obbsat::pair_finder finder(options_for(method::exact));
+    for (int f = 0; f < 6; ++f) {
+        const auto frame = drifted(start, f, 0.002f, 12);
+        EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact))) << f;
+        EXPECT_LE(finder.stats().kept_candidates, 4 * finder.stats().candidates + 2 * start.size()) << f;
+    }
+}
+
 TEST(pair_finder, a_box_that_jumps_and_a_bad_row_are_handled_between_kept_frames) {
     auto poses = seeded_scene(20000, obbsat::scene_sizes::uniform, 66, 0, 2.0);
     obbsat::pair_finder finder(options_for(method::exact));

@@ -132,8 +132,11 @@ class pair_search;
 /// now, and the call tests just those (no sweep, no sort). Otherwise it runs
 /// the full query again, repairing the previous order instead of sorting
 /// anew when it can. The margin follows the motion: each box widened by a
-/// share of its own larger extent, the share doubled when the kept pairs
-/// served fewer than four calls and halved when they served more than 64. The answer is always the
+/// share of its larger extent or of the scene's median extent, the share
+/// doubled when the kept pairs served fewer than four calls and halved when
+/// they served more than 64; a full query keeps at most four times the
+/// candidates of the last one plus one pair per box, else it answers as a
+/// plain query. The answer is always the
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding

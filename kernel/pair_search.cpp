@@ -164,9 +164,10 @@ void pair_search::widen(bounds_run& b, std::size_t count) const {
     }
     // Each box by a share of its larger extent or of the scene's typical
     // extent, whichever is larger, so that a few huge boxes widen only
-    // themselves and the smallest still get room to move. Rounding is monotone, so lo - m <= lo and
-    // hi + m >= hi: the widened bounds contain the bounds. An extent is never
-    // NaN (lo <= hi, at worst -inf and +inf), so neither is m.
+    // themselves and the smallest still get room to move. Rounding is
+    // monotone, so lo - m <= lo and hi + m >= hi: the widened bounds contain
+    // the bounds. An extent is never NaN (lo <= hi, at worst -inf and +inf),
+    // so neither is m.
     for (std::size_t i = 0; i < count; ++i) {
         const float m = margin_ * std::max(std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]), typical_extent_);
         b.lo_x[i] -= m;
@@ -366,9 +367,9 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
         constexpr std::size_t ahead = 16;
-        constexpr std::size_t run = 256;
-        for (std::size_t run_begin = begin; run_begin < end; run_begin += run) {
-            const std::size_t run_end = std::min(end, run_begin + run);
+        bounds_run b;
+        for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
+            const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
                     __builtin_prefetch(record_at(input, order_[k + ahead]));
@@ -378,29 +379,23 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                 side_[k] = id >= a_count_ && !self_ ? 1 : 0;
             }
             // The same function on the same floats as the extent pass: the bounds of step 1.
-            bounds(kind_, records_[run_begin].v, run_end - run_begin, in_lo_x_.data() + run_begin,
-                   in_lo_y_.data() + run_begin, in_hi_x_.data() + run_begin, in_hi_y_.data() + run_begin);
+            bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
             if (keep_) {
                 // The bounds themselves for the kept candidates' test, the widened ones for the sweep.
                 for (std::size_t k = run_begin; k < run_end; ++k) {
-                    now_[k] = signed_bounds{{in_lo_x_[k], in_lo_y_[k], -in_hi_x_[k], -in_hi_y_[k]}};
+                    now_[k] = signed_bounds_of(b, k - run_begin);
                 }
-                bounds_run widened;
-                const std::size_t count = run_end - run_begin;
-                std::memcpy(widened.lo_x, in_lo_x_.data() + run_begin, count * sizeof(float));
-                std::memcpy(widened.lo_y, in_lo_y_.data() + run_begin, count * sizeof(float));
-                std::memcpy(widened.hi_x, in_hi_x_.data() + run_begin, count * sizeof(float));
-                std::memcpy(widened.hi_y, in_hi_y_.data() + run_begin, count * sizeof(float));
-                widen(widened, count);
-                std::memcpy(in_lo_x_.data() + run_begin, widened.lo_x, count * sizeof(float));
-                std::memcpy(in_lo_y_.data() + run_begin, widened.lo_y, count * sizeof(float));
-                std::memcpy(in_hi_x_.data() + run_begin, widened.hi_x, count * sizeof(float));
-                std::memcpy(in_hi_y_.data() + run_begin, widened.hi_y, count * sizeof(float));
+                widen(b, run_end - run_begin);
             }
             for (std::size_t k = run_begin; k < run_end; ++k) {
-                q_lo_[k] = grid_.q_of(in_lo_x_[k]);
-                q_hi_[k] = grid_.q_of(in_hi_x_[k]);
-                strip_hi_[k] = grid_.strip_of(in_hi_y_[k]);
+                const std::size_t r = k - run_begin;
+                in_lo_x_[k] = b.lo_x[r];
+                in_lo_y_[k] = b.lo_y[r];
+                in_hi_x_[k] = b.hi_x[r];
+                in_hi_y_[k] = b.hi_y[r];
+                q_lo_[k] = grid_.q_of(b.lo_x[r]);
+                q_hi_[k] = grid_.q_of(b.hi_x[r]);
+                strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
             }
         }
     });
@@ -804,7 +799,7 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
                                         static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
                                         static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
                 ok &= inside != 0;
-                now_[k] = signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
+                now_[k] = signed_bounds_of(b, r);
             }
         }
         fits[share] = ok ? 1 : 0;

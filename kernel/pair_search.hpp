@@ -208,6 +208,10 @@ private:
         float v[4];
     };
     std::vector<signed_bounds> now_;
+    /// Entry r of a run of bounds as signed_bounds.
+    static signed_bounds signed_bounds_of(const bounds_run& b, std::size_t r) {
+        return signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
+    }
     std::vector<pair_index> kept_;             ///< in the query's order, as the kernel takes them
     std::vector<tagged_pair> kept_by_caller_;  ///< (a, b) in the caller's indices, sorted; tag: index into kept_
     std::vector<std::uint8_t> kept_verdicts_;

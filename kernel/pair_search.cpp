@@ -437,19 +437,21 @@ void pair_search::collect_visits(std::size_t parts) {
     stats_.visits = visits;
 }
 
-void pair_search::test_candidates(part& p, std::size_t count) const {
+void pair_search::test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const {
     const kernel_table& table = kernels_for(ran_);
     const auto kernel_start = clock_type::now();
     if (kind_ == store_kind::poses) {
-        p.slow_path +=
-            table.on_poses(options_.test).indexed(records_.data()->v, p.candidates.data(), count, p.verdicts.data());
+        p.slow_path += table.on_poses(options_.test).indexed(records_.data()->v, pairs, count, verdicts);
     } else {
         p.slow_path += table.of(options_.test)
-                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), p.candidates.data(),
-                                            count, p.verdicts.data());
+                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), pairs, count, verdicts);
     }
     p.kernel_seconds += seconds_since(kernel_start);
     p.tested += count;
+}
+
+void pair_search::test_candidates(part& p, std::size_t count) const {
+    test_pairs(p, p.candidates.data(), count, p.verdicts.data());
 }
 
 void pair_search::flush_candidates(part& p) const {
@@ -710,7 +712,12 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size();
             used_parts_ = parts;
-            test_kept(parts);
+            // An exact method calls a pair colliding only if the two
+            // rectangles share a point, so only if their bounds overlap (the
+            // bounds hold the rectangles): its verdict on a kept pair whose
+            // bounds do not overlap is false, the answer of leaving the pair
+            // out. Testing every kept pair costs less than the filter.
+            test_kept(parts, guarantee_of(options_.test) == method_guarantee::exact);
             answer_from_kept(parts);
             return pairs_;
         }
@@ -760,7 +767,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     measure_typical_extent(used_parts_);
     keep_candidates(used_parts_);
     kept_ready_ = true;
-    test_kept(used_parts_);
+    test_kept(used_parts_, false);
     last_candidates_ = stats_.candidates;
     answer_from_kept(used_parts_);
     return pairs_;
@@ -779,17 +786,21 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
         constexpr std::size_t ahead = 16;
         bounds_run b;
         bool ok = true;
+        // Plain locals: the record stores may alias anything the loop reads.
+        const query_input in = input;
+        const std::uint32_t* const order = order_.data();
+        record* const records = records_.data();
         for (std::size_t run_begin = begin; run_begin < end && ok; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
-                    __builtin_prefetch(record_at(input, order_[k + ahead]));
+                    __builtin_prefetch(record_at(in, order[k + ahead]));
                 }
-                const std::uint32_t id = order_[k];
-                if (id < a_count_ ? check_a : check_b) {
-                    ok &= valid_row(kind_, record_at(input, id));
+                const std::uint32_t id = order[k];
+                if (id < in.a_count ? check_a : check_b) {
+                    ok &= valid_row(in.kind, record_at(in, id));
                 }
-                copy_row(input, id, records_[k].v);
+                copy_row(in, id, records[k].v);
             }
             bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
             for (std::size_t k = run_begin; k < run_end; ++k) {
@@ -873,9 +884,10 @@ void pair_search::keep_candidates(std::size_t parts) {
     stats_.output_seconds += seconds_since(start);
 }
 
-void pair_search::test_kept(std::size_t parts) {
+void pair_search::test_kept(std::size_t parts, bool unfiltered) {
     // The kept candidates whose bounds overlap now, by the sweep's own test,
-    // are the candidates a sweep would find; the method decides them.
+    // are the candidates a sweep would find; the method decides them, or,
+    // `unfiltered`, every kept candidate.
     const auto start = clock_type::now();
     if (parts_.size() < parts) {
         parts_.resize(parts);
@@ -901,6 +913,10 @@ void pair_search::test_kept(std::size_t parts) {
         std::uint32_t* const slots = p.slots.data();
         for (std::size_t first = begin; first < end; first += candidate_block) {
             const std::size_t last = std::min(end, first + candidate_block);
+            if (unfiltered) {
+                test_pairs(p, kept + first, last - first, verdicts + first);
+                continue;
+            }
             std::size_t count = 0;
             for (std::size_t i = first; i < last; ++i) {
                 const unsigned overlap = signed_bounds_overlap(now[kept[i].a].v, now[kept[i].b].v);
@@ -943,7 +959,7 @@ void pair_search::answer_from_kept(std::size_t parts) {
         const std::uint8_t* const verdicts = kept_verdicts_.data();
         const tagged_pair* const kept = kept_by_caller_.data();
         std::size_t found = 0;
-        constexpr std::size_t ahead = 32;
+        constexpr std::size_t ahead = 64;
         for (std::size_t j = begin; j < end; ++j) {
             if (j + ahead < end) {
                 __builtin_prefetch(verdicts + kept[j + ahead].tag);

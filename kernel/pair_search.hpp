@@ -141,6 +141,8 @@ private:
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
+    /// The method's verdicts on `count` pairs of the query's records.
+    void test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const;
     void test_candidates(part& p, std::size_t count) const;
     void sort_found();
     // The kept candidates (see the top of this file).
@@ -149,7 +151,7 @@ private:
     bool refresh_records(const query_input& input, std::size_t parts);
     void measure_typical_extent(std::size_t parts);
     void keep_candidates(std::size_t parts);
-    void test_kept(std::size_t parts);
+    void test_kept(std::size_t parts, bool unfiltered);
     void answer_from_kept(std::size_t parts);
 
     collide_options options_;

@@ -50,7 +50,7 @@ struct find_pairs_stats {
     std::size_t boxes = 0;       ///< rectangles in the query (both stores for a cross query)
     std::size_t strips = 0;      ///< horizontal strips of the sweep
     std::size_t visits = 0;      ///< extra strip entries of rectangles taller than their strip
-    std::size_t candidates = 0;  ///< pairs whose bounds overlap, handed to the method
+    std::size_t candidates = 0;  ///< pairs handed to the method: those whose bounds overlap (pair_finder, method exact, from kept candidates: every kept one)
     std::size_t pairs = 0;       ///< pairs reported
     std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt

@@ -702,7 +702,10 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads);
     if (kept_ready_ && same_scene_as_last() && n_ >= 2) {
         const auto start = clock_type::now();
-        const bool fits = refresh_records(input, parts);
+        // An exact method tests every kept pair (see test_kept below), so it
+        // needs no bounds of this call beyond the check that they fit.
+        const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
+        const bool fits = refresh_records(input, parts, !exact);
         stats_.bounds_seconds = seconds_since(start);
         if (fits) {
             ++kept_calls_;
@@ -717,7 +720,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             // bounds hold the rectangles): its verdict on a kept pair whose
             // bounds do not overlap is false, the answer of leaving the pair
             // out. Testing every kept pair costs less than the filter.
-            test_kept(parts, guarantee_of(options_.test) == method_guarantee::exact);
+            test_kept(parts, exact);
             answer_from_kept(parts);
             return pairs_;
         }
@@ -773,7 +776,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     return pairs_;
 }
 
-bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
+bool pair_search::refresh_records(const query_input& input, std::size_t parts, bool keep_bounds) {
     // The records in the kept order with this call's rows; every rectangle's
     // bounds must lie inside its widened bounds. A row that fails its check
     // makes this false too: the full query names it.
@@ -810,7 +813,11 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts) {
                                         static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
                                         static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
                 ok &= inside != 0;
-                now_[k] = signed_bounds_of(b, r);
+            }
+            if (keep_bounds) {
+                for (std::size_t k = run_begin; k < run_end; ++k) {
+                    now_[k] = signed_bounds_of(b, k - run_begin);
+                }
             }
         }
         fits[share] = ok ? 1 : 0;

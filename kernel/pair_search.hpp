@@ -148,7 +148,9 @@ private:
     // The kept candidates (see the top of this file).
     void set_query(const query_input& input);
     void widen(bounds_run& b, std::size_t count) const;
-    bool refresh_records(const query_input& input, std::size_t parts);
+    /// Copies the rows into the kept order and checks that each one's bounds lie in its widened
+    /// bounds; with `keep_bounds`, also stores the bounds in now_ for test_kept's filter.
+    bool refresh_records(const query_input& input, std::size_t parts, bool keep_bounds);
     void measure_typical_extent(std::size_t parts);
     void keep_candidates(std::size_t parts);
     void test_kept(std::size_t parts, bool unfiltered);

@@ -952,17 +952,14 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
 
 void pair_search::answer_from_kept(std::size_t parts) {
     // The kept pairs are sorted in the caller's indices: the answer is the
-    // ones the method called colliding, read in that order.
+    // ones the method called colliding, read in that order. Each share writes
+    // its pairs where its kept pairs begin, in room for every kept pair; the
+    // shares after the first then move down to close the gaps.
     const auto start = clock_type::now();
-    std::vector<std::size_t> offsets(parts + 1, 0);
+    pairs_.resize(kept_by_caller_.size());
     run_parts(parts, [&](std::size_t share) {
-        part& p = parts_[share];
         const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
-        if (p.share_room < end - begin) {
-            p.share.reset(new pair_index[end - begin]);
-            p.share_room = end - begin;
-        }
-        pair_index* const out = p.share.get();
+        pair_index* const out = pairs_.data() + begin;
         const std::uint8_t* const verdicts = kept_verdicts_.data();
         const tagged_pair* const kept = kept_by_caller_.data();
         std::size_t found = 0;
@@ -974,17 +971,16 @@ void pair_search::answer_from_kept(std::size_t parts) {
             out[found] = pair_index{kept[j].a, kept[j].b};
             found += verdicts[kept[j].tag] != 0 ? 1u : 0u;
         }
-        p.share_size = found;
+        parts_[share].share_size = found;
     });
-    for (std::size_t i = 0; i < parts; ++i) {
-        offsets[i + 1] = offsets[i] + parts_[i].share_size;
+    std::size_t size = parts_[0].share_size;
+    for (std::size_t share = 1; share < parts; ++share) {
+        const auto from = pairs_.begin() + static_cast<std::ptrdiff_t>(share_of(kept_by_caller_.size(), share, parts).first);
+        std::copy(from, from + static_cast<std::ptrdiff_t>(parts_[share].share_size),
+                  pairs_.begin() + static_cast<std::ptrdiff_t>(size));
+        size += parts_[share].share_size;
     }
-    pairs_.resize(offsets[parts]);
-    run_parts(parts, [&](std::size_t share) {
-        const part& p = parts_[share];
-        std::copy(p.share.get(), p.share.get() + p.share_size,
-                  pairs_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
-    });
+    pairs_.resize(size);
     stats_.pairs = pairs_.size();
     stats_.output_seconds += seconds_since(start);
 }

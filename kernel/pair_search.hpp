@@ -110,12 +110,7 @@ private:
         bool over_budget = false;
         std::vector<tagged_pair> tagged;
         std::vector<std::uint32_t> slots;
-        // A share of the answer read from the kept candidates, before it is
-        // copied into place: room for every kept pair of the share, never
-        // cleared (a vector would zero it on every call).
-        std::unique_ptr<pair_index[]> share;
-        std::size_t share_room = 0;
-        std::size_t share_size = 0;
+        std::size_t share_size = 0;  ///< pairs of this share of the answer from kept candidates
         std::size_t tested = 0;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;

@@ -150,6 +150,15 @@ void copy_row(const query_input& input, std::size_t id, float* out) {
     }
 }
 
+/// How many of `count` verdicts (each 0 or 1) say colliding.
+std::size_t count_colliding(const std::uint8_t* verdicts, std::size_t count) {
+    std::size_t sum = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        sum += verdicts[i];
+    }
+    return sum;
+}
+
 double clamp_finite(float x) {
     return static_cast<double>(std::min(std::max(x, -FLT_MAX), FLT_MAX));
 }
@@ -909,6 +918,7 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         }
         p.slots.resize(candidate_block);
         p.tested = 0;
+        p.colliding = 0;
         p.slow_path = 0;
         p.kernel_seconds = 0;
         const auto [begin, end] = share_of(kept_.size(), share, parts);
@@ -922,6 +932,7 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
             const std::size_t last = std::min(end, first + candidate_block);
             if (unfiltered) {
                 test_pairs(p, kept + first, last - first, verdicts + first);
+                p.colliding += count_colliding(verdicts + first, last - first);
                 continue;
             }
             std::size_t count = 0;
@@ -937,6 +948,7 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
             for (std::size_t c = 0; c < count; ++c) {
                 verdicts[slots[c]] = tested[c];
             }
+            p.colliding += count_colliding(tested, count);
         }
     });
     for (std::size_t i = 0; i < parts; ++i) {
@@ -952,11 +964,16 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
 
 void pair_search::answer_from_kept(std::size_t parts) {
     // The kept pairs are sorted in the caller's indices: the answer is the
-    // ones the method called colliding, read in that order. Each share writes
-    // its pairs where its kept pairs begin, in room for every kept pair; the
-    // shares after the first then move down to close the gaps.
+    // ones the method called colliding, read in that order. One share writes
+    // them in room for their count (and the one write past the last, below);
+    // more shares each write where their kept pairs begin, in room for every
+    // kept pair, and the shares after the first then move down to close the gaps.
     const auto start = clock_type::now();
-    pairs_.resize(kept_by_caller_.size());
+    std::size_t colliding = 0;
+    for (std::size_t i = 0; i < parts; ++i) {
+        colliding += parts_[i].colliding;
+    }
+    pairs_.resize(parts == 1 ? colliding + 1 : kept_by_caller_.size());
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
         pair_index* const out = pairs_.data() + begin;

@@ -13,8 +13,8 @@ namespace {
 constexpr unsigned bucket_bits = 8;
 
 /// Sorts pairs[0, n), all of whose a share their high bits, by a then b:
-/// a counting sort on the low `low_bits` of a through `spare`, then an
-/// insertion sort on b within each run of equal a.
+/// a counting sort on the low `low_bits` of a through `spare`, then each
+/// run of equal a sorted by b on its way back.
 template <class Pair>
 void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, std::vector<Pair>& spare,
                  std::vector<std::uint32_t>& counts) {
@@ -40,29 +40,38 @@ void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, std::vector<Pair
     for (std::size_t i = 0; i < n; ++i) {
         spare[counts[pairs[i].a & mask]++] = pairs[i];
     }
-    // counts[v] is now the end of the run of low bits v.
+    // counts[v] is now the end of the run of low bits v, that is of one a.
+    // Each run goes back to `pairs` sorted by b: a short one by ranks (each
+    // pair to the count of pairs before it: smaller b, or equal b earlier),
+    // comparisons without branches, where an insertion sort would mispredict
+    // about once per pair; a long one by std::sort.
+    constexpr std::size_t short_run = 16;
     std::size_t begin = 0;
     for (std::size_t v = 0; v < values; ++v) {
         const std::size_t end = counts[v];
-        if (end - begin > 32) {
+        const std::size_t m = end - begin;
+        const Pair* const from = spare.data() + begin;
+        Pair* const to = pairs + begin;
+        if (m > short_run) {
             std::sort(spare.begin() + static_cast<std::ptrdiff_t>(begin),
                       spare.begin() + static_cast<std::ptrdiff_t>(end),
                       [](const Pair& x, const Pair& y) { return x.b < y.b; });
-            begin = end;
-            continue;
-        }
-        for (std::size_t i = begin + 1; i < end; ++i) {
-            const Pair p = spare[i];
-            std::size_t j = i;
-            while (j > begin && spare[j - 1].b > p.b) {
-                spare[j] = spare[j - 1];
-                --j;
+            std::copy(from, from + m, to);
+        } else {
+            for (std::size_t i = 0; i < m; ++i) {
+                const std::uint32_t b = from[i].b;
+                std::size_t rank = 0;
+                for (std::size_t j = 0; j < i; ++j) {
+                    rank += static_cast<std::size_t>(from[j].b <= b);
+                }
+                for (std::size_t j = i + 1; j < m; ++j) {
+                    rank += static_cast<std::size_t>(from[j].b < b);
+                }
+                to[rank] = from[i];
             }
-            spare[j] = p;
         }
         begin = end;
     }
-    std::copy(spare.begin(), spare.begin() + static_cast<std::ptrdiff_t>(n), pairs);
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 // The scene queries' sorts against std::stable_sort: radix_sort on one
 // thread and split over two (the same result either way, equal keys in their
 // input order), bucket_sort, and repair_sort on nearly sorted input and past
-// its move budget.
+// its move budget; sort_pairs against std::sort by (a, b).
+#include "pair_sort.hpp"
 #include "radix_sort.hpp"
 
+#include <obbsat/collide.hpp>
 #include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -79,6 +81,75 @@ TEST(bucket_sort, equals_a_stable_sort_by_bucket) {
         std::vector<std::uint32_t> spare_keys, spare_values;
         obbsat::detail::bucket_sort(keys.data(), values.data(), n, shift, buckets, spare_keys, spare_values);
         EXPECT_EQ(zipped(keys, values), want) << n << " keys";
+    }
+}
+
+/// Pairs over a_count first indices, split into `sources` lists: runs of one
+/// a from empty to long (up to 3 · 16 + 40 pairs), b drawn from few values so
+/// that equal b within a run are common; tags number the pairs.
+std::vector<std::vector<obbsat::detail::tagged_pair>> random_pairs(std::size_t a_count, std::size_t sources,
+                                                                   std::uint64_t seed) {
+    obbsat::seeded_random random(seed);
+    std::vector<std::vector<obbsat::detail::tagged_pair>> out(sources);
+    std::uint32_t tag = 0;
+    for (std::uint32_t a = 0; a < a_count; ++a) {
+        const std::uint64_t draw = random.next();
+        const std::size_t run = (draw % 7 == 0) ? 17 + draw % 40 : draw % 17;
+        for (std::size_t k = 0; k < run; ++k) {
+            const std::uint32_t b = static_cast<std::uint32_t>(random.next() % (run + 3)) * 1000u;
+            out[random.next() % sources].push_back({a, b, tag++});
+        }
+    }
+    for (auto& source : out) {  // sweep order: any order of a
+        for (std::size_t i = source.size(); i > 1; --i) {
+            std::swap(source[i - 1], source[random.next() % i]);
+        }
+    }
+    return out;
+}
+
+TEST(sort_pairs, equals_std_sort_by_a_then_b_with_and_without_tags) {
+    for (const std::size_t a_count : {std::size_t{1}, std::size_t{20}, std::size_t{3000}, std::size_t{300000}}) {
+        for (const std::size_t sources : {std::size_t{1}, std::size_t{2}}) {
+            const auto input = random_pairs(a_count, sources, a_count + sources);
+            std::vector<const std::vector<obbsat::detail::tagged_pair>*> lists;
+            std::vector<obbsat::detail::tagged_pair> want;
+            for (const auto& source : input) {
+                lists.push_back(&source);
+                want.insert(want.end(), source.begin(), source.end());
+            }
+            const auto by_pair = [](const auto& x, const auto& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); };
+            std::sort(want.begin(), want.end(), by_pair);
+            std::vector<obbsat::detail::tagged_pair> got;
+            std::vector<obbsat::detail::pair_sort_scratch<obbsat::detail::tagged_pair>> scratch(sources);
+            obbsat::detail::sort_pairs(lists, a_count, got, scratch);
+            ASSERT_EQ(got.size(), want.size());
+            // Sorted by (a, b), and a permutation of the input (every tag once).
+            std::vector<unsigned char> seen(got.size(), 0);
+            for (std::size_t i = 0; i < got.size(); ++i) {
+                ASSERT_EQ(got[i].a, want[i].a) << a_count << " boxes, pair " << i;
+                ASSERT_EQ(got[i].b, want[i].b) << a_count << " boxes, pair " << i;
+                ASSERT_LT(got[i].tag, seen.size());
+                ASSERT_EQ(seen[got[i].tag]++, 0) << "tag " << got[i].tag << " twice";
+            }
+            // The same pairs without tags.
+            std::vector<std::vector<obbsat::pair_index>> plain(sources);
+            std::vector<const std::vector<obbsat::pair_index>*> plain_lists;
+            for (std::size_t s = 0; s < sources; ++s) {
+                for (const auto& p : input[s]) {
+                    plain[s].push_back({p.a, p.b});
+                }
+                plain_lists.push_back(&plain[s]);
+            }
+            std::vector<obbsat::pair_index> plain_got;
+            std::vector<obbsat::detail::pair_sort_scratch<obbsat::pair_index>> plain_scratch(sources);
+            obbsat::detail::sort_pairs(plain_lists, a_count, plain_got, plain_scratch);
+            ASSERT_EQ(plain_got.size(), want.size());
+            for (std::size_t i = 0; i < want.size(); ++i) {
+                ASSERT_TRUE(plain_got[i].a == want[i].a && plain_got[i].b == want[i].b)
+                    << a_count << " boxes, pair " << i;
+            }
+        }
     }
 }
 

@@ -763,7 +763,7 @@ PYBIND11_MODULE(_core, m) {
         .def_readonly("visits", &obbsat::find_pairs_stats::visits,
                       "extra strip entries of rectangles taller than their strip")
         .def_readonly("candidates", &obbsat::find_pairs_stats::candidates,
-                      "pairs whose bounds overlap, handed to the method")
+                      "pairs handed to the method: those whose bounds overlap (a finder with method exact, from kept candidates: every kept one)")
         .def_readonly("pairs", &obbsat::find_pairs_stats::pairs, "pairs reported")
         .def_readonly("slow_path_pairs", &obbsat::find_pairs_stats::slow_path_pairs,
                       "candidates decided on the exact slow path (method exact)")

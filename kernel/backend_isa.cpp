@@ -59,9 +59,10 @@ constexpr method_kernels kernels_of_row() {
                       "a method's lanes and its catalogue row agree on the slow path");
         return method_kernels{stream_batch<isa_arch, corners::template lanes>,
                               indexed_batch<isa_arch, corners::template lanes>,
-                              indexed_records_batch<isa_arch, corners::template lanes>};
+                              indexed_records_batch<isa_arch, corners::template lanes>,
+                              indexed_records_batch<isa_arch, corners::template lanes, false>};
     } else {
-        return method_kernels{nullptr, nullptr, nullptr};
+        return method_kernels{nullptr, nullptr, nullptr, nullptr};
     }
 }
 
@@ -74,9 +75,10 @@ constexpr pose_method_kernels pose_kernels_of_row() {
                       "a method's lanes and its catalogue row agree on the slow path");
         return pose_method_kernels{pose_stream_batch<isa_arch, poses::template lanes>,
                                    pose_indexed_batch<isa_arch, poses::template lanes>,
-                                   pose_stream_soa_batch<isa_arch, poses::template lanes>};
+                                   pose_stream_soa_batch<isa_arch, poses::template lanes>,
+                                   pose_indexed_batch<isa_arch, poses::template lanes, false>};
     } else {
-        return pose_method_kernels{nullptr, nullptr, nullptr};
+        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr};
     }
 }
 

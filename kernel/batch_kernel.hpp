@@ -127,8 +127,9 @@ std::size_t indexed_batch(const soa_view& rects, const pair_index* pairs, std::s
 constexpr std::size_t prefetch_distance = 16;
 
 /// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
-/// returns the lanes settled exactly.
-template <class Arch, template <class> class Method>
+/// returns the lanes settled exactly. With Prefetch, the records of pairs
+/// ahead are fetched early (for random access through a pair list).
+template <class Arch, template <class> class Method, bool Prefetch = true>
 std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
@@ -137,10 +138,12 @@ std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, 
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
         const pair_index* p = pairs + i;
-        if (i + width + prefetch_distance <= count) {
-            for (std::size_t k = prefetch_distance; k < prefetch_distance + width; ++k) {
-                __builtin_prefetch(records + p[k].a);
-                __builtin_prefetch(records + p[k].b);
+        if constexpr (Prefetch) {
+            if (i + width + prefetch_distance <= count) {
+                for (std::size_t k = prefetch_distance; k < prefetch_distance + width; ++k) {
+                    __builtin_prefetch(records + p[k].a);
+                    __builtin_prefetch(records + p[k].b);
+                }
             }
         }
         const lane_verdicts v = Method<Arch>::collide(

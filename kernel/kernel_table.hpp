@@ -66,6 +66,10 @@ struct method_kernels {
     stream_fn stream;
     indexed_fn indexed;
     indexed_records_fn indexed_records;
+    /// indexed_records for a list whose pairs' records lie near the records of
+    /// the pairs before them (the scene queries'): the same verdicts, without
+    /// fetching records ahead, which there only costs instructions.
+    indexed_records_fn indexed_records_near;
 };
 
 /// One method's entry points on the pose store of one backend; all null when
@@ -74,6 +78,9 @@ struct pose_method_kernels {
     pose_stream_fn stream;
     pose_indexed_fn indexed;
     pose_stream_soa_fn stream_soa;
+    /// indexed for a list whose pairs' records lie near each other (see
+    /// method_kernels::indexed_records_near).
+    pose_indexed_fn indexed_near;
 };
 
 struct kernel_table {

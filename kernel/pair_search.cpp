@@ -450,10 +450,11 @@ void pair_search::test_pairs(part& p, const pair_index* pairs, std::size_t count
     const kernel_table& table = kernels_for(ran_);
     const auto kernel_start = clock_type::now();
     if (kind_ == store_kind::poses) {
-        p.slow_path += table.on_poses(options_.test).indexed(records_.data()->v, pairs, count, verdicts);
+        p.slow_path += table.on_poses(options_.test).indexed_near(records_.data()->v, pairs, count, verdicts);
     } else {
         p.slow_path += table.of(options_.test)
-                           .indexed_records(reinterpret_cast<const rect*>(records_.data()), pairs, count, verdicts);
+                           .indexed_records_near(reinterpret_cast<const rect*>(records_.data()), pairs, count,
+                                                 verdicts);
     }
     p.kernel_seconds += seconds_since(kernel_start);
     p.tested += count;

@@ -64,11 +64,12 @@ std::size_t pose_batch(const float* a, const float* b, const First& first, const
     return settled;
 }
 
-/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count.
-template <class Arch, template <class> class Method>
+/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
+/// with Prefetch, the records of pairs ahead are fetched early.
+template <class Arch, template <class> class Method, bool Prefetch = true>
 std::size_t pose_indexed_batch(const float* records, const pair_index* pairs, std::size_t count,
                                std::uint8_t* verdicts) {
-    return pose_batch<Arch, Method, true>(
+    return pose_batch<Arch, Method, Prefetch>(
         records, records, [&](std::size_t i) { return pairs[i].a; }, [&](std::size_t i) { return pairs[i].b; },
         count, verdicts);
 }

@@ -129,9 +129,10 @@ constexpr method_kernels kernels_of_row() {
         constexpr reference_fn reference = Row::corners::reference;
         return method_kernels{stream_pairs<reference, Row::has_slow_path>,
                               indexed_pairs<reference, Row::has_slow_path>,
+                              indexed_records<reference, Row::has_slow_path>,
                               indexed_records<reference, Row::has_slow_path>};
     } else {
-        return method_kernels{nullptr, nullptr, nullptr};
+        return method_kernels{nullptr, nullptr, nullptr, nullptr};
     }
 }
 
@@ -141,9 +142,10 @@ constexpr pose_method_kernels pose_kernels_of_row() {
         constexpr pose_reference_fn reference = Row::poses::reference;
         return pose_method_kernels{pose_stream_pairs<reference, Row::has_slow_path>,
                                    pose_indexed_pairs<reference, Row::has_slow_path>,
-                                   pose_stream_soa_pairs<reference, Row::has_slow_path>};
+                                   pose_stream_soa_pairs<reference, Row::has_slow_path>,
+                                   pose_indexed_pairs<reference, Row::has_slow_path>};
     } else {
-        return pose_method_kernels{nullptr, nullptr, nullptr};
+        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr};
     }
 }
 

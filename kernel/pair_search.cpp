@@ -993,9 +993,10 @@ void pair_search::answer_from_kept(std::size_t parts) {
     });
     std::size_t size = parts_[0].share_size;
     for (std::size_t share = 1; share < parts; ++share) {
-        const auto from = pairs_.begin() + static_cast<std::ptrdiff_t>(share_of(kept_by_caller_.size(), share, parts).first);
-        std::copy(from, from + static_cast<std::ptrdiff_t>(parts_[share].share_size),
-                  pairs_.begin() + static_cast<std::ptrdiff_t>(size));
+        const std::size_t from = share_of(kept_by_caller_.size(), share, parts).first;
+        if (from != size) {  // down, over what moved before (memmove: the ranges may overlap)
+            std::memmove(pairs_.data() + size, pairs_.data() + from, parts_[share].share_size * sizeof(pair_index));
+        }
         size += parts_[share].share_size;
     }
     pairs_.resize(size);

@@ -500,10 +500,8 @@ void pair_search::flush_candidates(part& p) const {
     p.found.resize(had + count);
     pair_index* out = p.found.data() + had;
     std::size_t kept = 0;
-    const std::uint32_t second_start = self_ ? 0 : offset;
     for (std::size_t i = 0; i < count; ++i) {
-        out[kept].a = order_[candidates[i].a];
-        out[kept].b = order_[candidates[i].b] - second_start;
+        out[kept] = caller_pair(candidates[i]);
         kept += p.verdicts[i] != 0 ? 1u : 0u;
     }
     p.found.resize(had + kept);
@@ -712,8 +710,12 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads);
     if (kept_ready_ && same_scene_as_last() && n_ >= 2) {
         const auto start = clock_type::now();
-        // An exact method tests every kept pair (see test_kept below), so it
-        // needs no bounds of this call beyond the check that they fit.
+        // An exact method calls a pair colliding only if the two rectangles
+        // share a point, so only if their bounds overlap (the bounds hold the
+        // rectangles): its verdict on a kept pair whose bounds do not overlap
+        // is false, the answer of leaving the pair out. It tests every kept
+        // pair, which costs less than the filter, and needs no bounds of this
+        // call beyond the check that they fit.
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
         const bool fits = refresh_records(input, parts, !exact);
         stats_.bounds_seconds = seconds_since(start);
@@ -725,11 +727,6 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size();
             used_parts_ = parts;
-            // An exact method calls a pair colliding only if the two
-            // rectangles share a point, so only if their bounds overlap (the
-            // bounds hold the rectangles): its verdict on a kept pair whose
-            // bounds do not overlap is false, the answer of leaving the pair
-            // out. Testing every kept pair costs less than the filter.
             test_kept(parts, exact);
             answer_from_kept(parts);
             return pairs_;
@@ -875,15 +872,14 @@ void pair_search::keep_candidates(std::size_t parts) {
         offsets[i + 1] = offsets[i] + parts_[i].captured.size();
     }
     kept_.resize(offsets[parts]);
-    const std::uint32_t second_start = self_ ? 0 : static_cast<std::uint32_t>(a_count_);
     std::vector<const std::vector<tagged_pair>*> sources;
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
         std::copy(p.captured.begin(), p.captured.end(), kept_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
         p.tagged.resize(p.captured.size());
         for (std::size_t i = 0; i < p.captured.size(); ++i) {
-            p.tagged[i] = tagged_pair{order_[p.captured[i].a], order_[p.captured[i].b] - second_start,
-                                      static_cast<std::uint32_t>(offsets[share] + i)};
+            const pair_index caller = caller_pair(p.captured[i]);
+            p.tagged[i] = tagged_pair{caller.a, caller.b, static_cast<std::uint32_t>(offsets[share] + i)};
         }
         p.captured.clear();
     });

@@ -26,9 +26,10 @@
 // widened bounds (an exact float comparison), those candidates hold every
 // pair whose bounds overlap now, so the next call refreshes the records in
 // the kept order, takes the kept candidates whose bounds overlap now (the
-// same pairs a sweep would give), tests them, and reads the answer in the
-// caller's order through a permutation kept with them: no sort, no sweep,
-// no output sort. A rectangle that left its widened bounds makes the call a
+// same pairs a sweep would give; an exact method takes every kept one, as
+// its verdict on the others is "apart" anyway), tests them, and reads the
+// answer in the caller's order through a permutation kept with them: no
+// sort, no sweep, no output sort. A rectangle that left its widened bounds makes the call a
 // full query again, which builds new candidates.
 #pragma once
 
@@ -47,7 +48,6 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace obbsat::detail {
@@ -137,6 +137,11 @@ private:
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
+    /// Pair `q` of the query's order in the caller's indices (in a query
+    /// across two sets, b counted from the second set's first rectangle).
+    pair_index caller_pair(pair_index q) const {
+        return pair_index{order_[q.a], order_[q.b] - (self_ ? 0u : static_cast<std::uint32_t>(a_count_))};
+    }
     /// The method's verdicts on `count` pairs of the query's records.
     void test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const;
     void test_candidates(part& p, std::size_t count) const;

@@ -40,6 +40,7 @@ constexpr double strip_factor = 2.0;
 
 /// Candidates handed to the method's kernel at once.
 constexpr std::size_t candidate_block = 2048;
+static_assert(candidate_block <= pair_blocks::block_pairs, "a block of candidates fits in a block of found pairs");
 
 /// A query that widens its bounds keeps at most this many times the
 /// candidates of the last query, plus one per rectangle; a scene whose
@@ -411,36 +412,47 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
 }
 
 void pair_search::collect_visits(std::size_t parts) {
+    // A rectangle taller than its strip visits each strip above its lowest
+    // up to its highest. Each share counts its visits, then writes them
+    // after the shares before it; the visits are then sorted by key.
     const std::uint32_t strips = grid_.strips;
     const unsigned q_bits = grid_.q_bits;
-    own_begin_.assign(strips + 1, 0);
-    std::size_t visits = 0;
-    for (std::size_t k = 0; k < n_; ++k) {
-        const std::uint32_t low = keys_[k] >> q_bits;
-        ++own_begin_[low + 1];
-        visits += strip_hi_[k] - low;
+    std::vector<std::size_t> first_visit(parts + 1, 0);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        std::size_t visits = 0;
+        for (std::size_t k = begin; k < end; ++k) {
+            visits += strip_hi_[k] - (keys_[k] >> q_bits);
+        }
+        first_visit[share + 1] = visits;
+    });
+    for (std::size_t share = 0; share < parts; ++share) {
+        first_visit[share + 1] += first_visit[share];
     }
-    for (std::uint32_t s = 0; s < strips; ++s) {
-        own_begin_[s + 1] += own_begin_[s];
-    }
+    const std::size_t visits = first_visit[parts];
     visit_keys_.resize(visits);
     visit_ids_.resize(visits);
-    std::size_t v = 0;
-    for (std::size_t k = 0; k < n_; ++k) {
-        const std::uint32_t low = keys_[k] >> q_bits;
-        for (std::uint32_t s = low + 1; s <= strip_hi_[k]; ++s) {
-            visit_keys_[v] = (s << q_bits) | q_lo_[k];
-            visit_ids_[v] = static_cast<std::uint32_t>(k);
-            ++v;
+    own_begin_.resize(strips + 1);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        bucket_starts(keys_.data(), n_, q_bits, strips, begin, end, own_begin_.data());
+        std::size_t v = first_visit[share];
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t low = keys_[k] >> q_bits;
+            for (std::uint32_t s = low + 1; s <= strip_hi_[k]; ++s) {
+                visit_keys_[v] = (s << q_bits) | q_lo_[k];
+                visit_ids_[v] = static_cast<std::uint32_t>(k);
+                ++v;
+            }
         }
-    }
+    });
     radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_, parts);
     visit_begin_.assign(strips + 1, 0);
-    for (std::size_t i = 0; i < visits; ++i) {
-        ++visit_begin_[(visit_keys_[i] >> q_bits) + 1];
-    }
-    for (std::uint32_t s = 0; s < strips; ++s) {
-        visit_begin_[s + 1] += visit_begin_[s];
+    if (visits > 0) {
+        run_parts(parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(visits, share, parts);
+            bucket_starts(visit_keys_.data(), visits, q_bits, strips, begin, end, visit_begin_.data());
+        });
     }
     stats_.strips = strips;
     stats_.visits = visits;
@@ -496,15 +508,13 @@ void pair_search::flush_candidates(part& p) const {
         return;
     }
     test_candidates(p, count);
-    const std::size_t had = p.found.size();
-    p.found.resize(had + count);
-    pair_index* out = p.found.data() + had;
+    pair_index* out = p.found.room(count);
     std::size_t kept = 0;
     for (std::size_t i = 0; i < count; ++i) {
         out[kept] = caller_pair(candidates[i]);
         kept += p.verdicts[i] != 0 ? 1u : 0u;
     }
-    p.found.resize(had + kept);
+    p.found.add(kept);
     p.candidate_count = 0;
 }
 
@@ -618,7 +628,9 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
                 if (emit != nullptr && (all || p.found.size() >= emit_block) && !p.found.empty()) {
                     const std::lock_guard<std::mutex> lock(emit_mutex);
                     if (!failed.load()) {
-                        (*emit)(p.found.data(), p.found.size());
+                        for (const pair_span<pair_index>& span : p.found.spans()) {
+                            (*emit)(span.data, span.size);
+                        }
                     }
                     p.found.clear();
                 }
@@ -689,9 +701,9 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
 
 void pair_search::sort_found() {
     const auto start = clock_type::now();
-    std::vector<const std::vector<pair_index>*> sources;
+    std::vector<pair_source<pair_index>> sources;
     for (std::size_t i = 0; i < used_parts_; ++i) {
-        sources.push_back(&parts_[i].found);
+        sources.push_back(parts_[i].found.spans());
     }
     const std::size_t parts = std::max<std::size_t>(1, sources.size());
     if (sort_scratch_.size() < parts) {
@@ -872,7 +884,7 @@ void pair_search::keep_candidates(std::size_t parts) {
         offsets[i + 1] = offsets[i] + parts_[i].captured.size();
     }
     kept_.resize(offsets[parts]);
-    std::vector<const std::vector<tagged_pair>*> sources;
+    std::vector<pair_source<tagged_pair>> sources;
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
         std::copy(p.captured.begin(), p.captured.end(), kept_.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
@@ -884,7 +896,7 @@ void pair_search::keep_candidates(std::size_t parts) {
         p.captured.clear();
     });
     for (std::size_t i = 0; i < parts; ++i) {
-        sources.push_back(&parts_[i].tagged);
+        sources.push_back({{parts_[i].tagged.data(), parts_[i].tagged.size()}});
     }
     if (tag_scratch_.size() < parts) {
         tag_scratch_.resize(parts);
@@ -1006,10 +1018,10 @@ std::vector<pair_index> pair_search::collect_once(const query_input& input) {
     // made: the peak is the larger of the two, not their sum.
     decltype(records_)().swap(records_);
     for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
-        std::vector<float>().swap(*v);
+        scratch_vector<float>().swap(*v);
     }
     for (auto* v : {&keys_, &order_, &key_by_id_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_}) {
-        std::vector<std::uint32_t>().swap(*v);
+        scratch_vector<std::uint32_t>().swap(*v);
     }
     radix_buffer().swap(packed_);
     radix_buffer().swap(spare_);

@@ -33,8 +33,10 @@
 // full query again, which builds new candidates.
 #pragma once
 
+#include "pair_blocks.hpp"
 #include "pair_sort.hpp"
 #include "radix_sort.hpp"
+#include "scratch_vector.hpp"
 #include "strip_grid.hpp"
 
 #include <obbsat/collide.hpp>
@@ -102,7 +104,7 @@ private:
         std::size_t candidate_count = 0;
         std::vector<std::uint8_t> verdicts;
         // Colliding pairs in the caller's indices.
-        std::vector<pair_index> found;
+        pair_blocks found;
         // Candidates kept instead of tested (a query that keeps them), and
         // the kept candidates' positions of a block under test.
         std::vector<pair_index> captured;
@@ -174,21 +176,23 @@ private:
     bool ordered_self_ = true;
 
     bounds_extent extent_{};
-    std::vector<std::uint32_t> key_by_id_;  ///< on the last grid, in the caller's order (repeat queries)
+    scratch_vector<std::uint32_t> key_by_id_;  ///< on the last grid, in the caller's order (repeat queries)
 
     // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
-    std::vector<std::uint32_t> keys_, order_, spare_keys_, spare_values_;
+    scratch_vector<std::uint32_t> keys_, order_;
+    std::vector<std::uint32_t> spare_keys_, spare_values_;
     radix_buffer packed_, spare_;
 
     // Per rectangle, in the query's order.
-    std::vector<record, cache_line_allocator<record>> records_;
-    std::vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
-    std::vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
-    std::vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store
+    scratch_records<record> records_;
+    scratch_vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
+    scratch_vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
+    scratch_vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store
 
     // Strips: own_begin_[s] is the first rectangle whose lowest strip is s;
     // visits sorted by (strip, q_lo), visit_begin_[s] the first visit of s.
-    std::vector<std::uint32_t> own_begin_, visit_keys_, visit_ids_, visit_begin_;
+    std::vector<std::uint32_t> own_begin_, visit_begin_;
+    scratch_vector<std::uint32_t> visit_keys_, visit_ids_;
 
     std::vector<part> parts_;
     std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer
@@ -212,7 +216,7 @@ private:
     struct signed_bounds {
         float v[4];
     };
-    std::vector<signed_bounds> now_;
+    scratch_vector<signed_bounds> now_;
     /// Entry r of a run of bounds as signed_bounds.
     static signed_bounds signed_bounds_of(const bounds_run& b, std::size_t r) {
         return signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};

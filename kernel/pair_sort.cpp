@@ -77,11 +77,13 @@ void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, std::vector<Pair
 }  // namespace
 
 template <class Pair>
-void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_t a_count, std::vector<Pair>& out,
+void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_count, std::vector<Pair>& out,
                 std::vector<pair_sort_scratch<Pair>>& scratch) {
     std::size_t n = 0;
-    for (const auto* source : sources) {
-        n += source->size();
+    for (const pair_source<Pair>& source : sources) {
+        for (const pair_span<Pair>& span : source) {
+            n += span.size;
+        }
     }
     out.resize(n);
     if (n == 0) {
@@ -102,8 +104,11 @@ void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_
     const std::size_t sources_count = sources.size();
     std::vector<std::vector<std::size_t>> next(sources_count, std::vector<std::size_t>(buckets, 0));
     run(sources_count, [&](std::size_t s) {
-        for (const Pair& p : *sources[s]) {
-            ++next[s][p.a >> high_shift];
+        std::vector<std::size_t>& count = next[s];
+        for (const pair_span<Pair>& span : sources[s]) {
+            for (std::size_t i = 0; i < span.size; ++i) {
+                ++count[span.data[i].a >> high_shift];
+            }
         }
     });
     std::vector<std::size_t> begin(buckets + 1, 0);
@@ -119,8 +124,12 @@ void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_
     begin[buckets] = sum;
     run(sources_count, [&](std::size_t s) {
         std::vector<std::size_t>& slot = next[s];
-        for (const Pair& p : *sources[s]) {
-            out[slot[p.a >> high_shift]++] = p;
+        Pair* const to = out.data();
+        for (const pair_span<Pair>& span : sources[s]) {
+            for (std::size_t i = 0; i < span.size; ++i) {
+                const Pair p = span.data[i];
+                to[slot[p.a >> high_shift]++] = p;
+            }
         }
     });
     // Pass 2: each bucket on its own, the buckets split between the threads.
@@ -133,9 +142,9 @@ void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_
     });
 }
 
-template void sort_pairs<pair_index>(const std::vector<const std::vector<pair_index>*>&, std::size_t,
+template void sort_pairs<pair_index>(const std::vector<pair_source<pair_index>>&, std::size_t,
                                      std::vector<pair_index>&, std::vector<pair_sort_scratch<pair_index>>&);
-template void sort_pairs<tagged_pair>(const std::vector<const std::vector<tagged_pair>*>&, std::size_t,
+template void sort_pairs<tagged_pair>(const std::vector<pair_source<tagged_pair>>&, std::size_t,
                                       std::vector<tagged_pair>&, std::vector<pair_sort_scratch<tagged_pair>>&);
 
 }  // namespace obbsat::detail

@@ -26,12 +26,23 @@ struct pair_sort_scratch {
     std::vector<std::uint32_t> counts;
 };
 
+/// `size` pairs at `data`.
+template <class Pair>
+struct pair_span {
+    const Pair* data;
+    std::size_t size;
+};
+
+/// The pairs one thread found: its spans, one after the other.
+template <class Pair>
+using pair_source = std::vector<pair_span<Pair>>;
+
 /// Every pair of every source, sorted by a then b, into `out`; every a must
 /// be < a_count. One thread of the shared pool per source scatters it; the
 /// buckets are then sorted by scratch.size() threads. Pair is pair_index or
 /// tagged_pair; equal (a, b) keep no particular order.
 template <class Pair>
-void sort_pairs(const std::vector<const std::vector<Pair>*>& sources, std::size_t a_count, std::vector<Pair>& out,
+void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_count, std::vector<Pair>& out,
                 std::vector<pair_sort_scratch<Pair>>& scratch);
 
 }  // namespace obbsat::detail

@@ -86,6 +86,23 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     });
 }
 
+void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::size_t buckets, std::size_t begin,
+                   std::size_t end, std::uint32_t* starts) {
+    // Index i starts the buckets after the one of i - 1, up to its own.
+    std::size_t next = begin == 0 ? 0 : (keys[begin - 1] >> shift) + 1;
+    for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t bucket = keys[i] >> shift;
+        for (; next <= bucket; ++next) {
+            starts[next] = static_cast<std::uint32_t>(i);
+        }
+    }
+    if (end == n) {
+        for (; next <= buckets; ++next) {
+            starts[next] = static_cast<std::uint32_t>(n);
+        }
+    }
+}
+
 void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned shift, std::size_t buckets,
                  std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values) {
     spare_keys.resize(n);

@@ -5,7 +5,7 @@
 // huge pages where the OS offers them. Internal to the library.
 #pragma once
 
-#include <obbsat/rect_records.hpp>
+#include "scratch_vector.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -14,7 +14,7 @@
 namespace obbsat::detail {
 
 /// Working memory of radix_sort, kept by the caller between calls.
-using radix_buffer = std::vector<std::uint64_t, cache_line_allocator<std::uint64_t>>;
+using radix_buffer = scratch_records<std::uint64_t>;
 
 /// Sorts keys[0, n) and values[0, n) together by key, stably; `key_bits` is
 /// the number of low bits that can be non-zero. `packed` and `spare` are
@@ -22,6 +22,15 @@ using radix_buffer = std::vector<std::uint64_t, cache_line_allocator<std::uint64
 /// pool; the result does not depend on how many.
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
                 radix_buffer& spare, std::size_t parts = 1);
+
+/// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
+/// (every bucket below `buckets`): starts[b] is the first i whose bucket is
+/// at least b, for b in [0, buckets]. A call writes the entries of the
+/// buckets that begin in [begin, end) (the last share, end == n, also those
+/// after the last key), so calls over shares that tile [0, n) write each
+/// entry once and may run at the same time.
+void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::size_t buckets, std::size_t begin,
+                   std::size_t end, std::uint32_t* starts);
 
 /// Sorts keys[0, n) and values[0, n) stably by key >> shift, which must be
 /// below `buckets`: one counting pass, through `spare_keys` and `spare_values`.

@@ -1,7 +1,8 @@
 // The scene queries' sorts against std::stable_sort: radix_sort on one
 // thread and split over two (the same result either way, equal keys in their
 // input order), bucket_sort, and repair_sort on nearly sorted input and past
-// its move budget; sort_pairs against std::sort by (a, b).
+// its move budget; bucket_starts against prefix counts; sort_pairs against
+// std::sort by (a, b).
 #include "pair_sort.hpp"
 #include "radix_sort.hpp"
 
@@ -84,6 +85,38 @@ TEST(bucket_sort, equals_a_stable_sort_by_bucket) {
     }
 }
 
+TEST(bucket_starts, equals_the_prefix_counts_of_the_buckets_over_any_split_into_shares) {
+    // Sorted keys with empty buckets at the start, inside and at the end
+    // (keys only in buckets 3 to 290 of 300, many skipped), split into 1 to
+    // 7 shares including empty ones.
+    const unsigned shift = 12;
+    const std::size_t buckets = 300;
+    for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{37}, std::size_t{5000}}) {
+        std::vector<std::uint32_t> keys, values;
+        random_input(n, 20, n + 11, keys, values);
+        for (std::uint32_t& k : keys) {
+            const std::uint32_t bucket = 3 + ((k >> shift) % 288) / 4 * 4;  // every fourth bucket of 3..290
+            k = (bucket << shift) | (k & ((1u << shift) - 1));
+        }
+        std::sort(keys.begin(), keys.end());
+        std::vector<std::uint32_t> want(buckets + 1, 0);
+        for (const std::uint32_t k : keys) {
+            ++want[(k >> shift) + 1];
+        }
+        for (std::size_t b = 0; b < buckets; ++b) {
+            want[b + 1] += want[b];
+        }
+        for (std::size_t shares = 1; shares <= 7; ++shares) {
+            std::vector<std::uint32_t> starts(buckets + 1, 0xdeadbeef);
+            for (std::size_t share = shares; share-- > 0;) {  // the order does not matter
+                obbsat::detail::bucket_starts(keys.data(), n, shift, buckets, n * share / shares,
+                                              n * (share + 1) / shares, starts.data());
+            }
+            EXPECT_EQ(starts, want) << n << " keys in " << shares << " shares";
+        }
+    }
+}
+
 /// Pairs over a_count first indices, split into `sources` lists: runs of one
 /// a from empty to long (up to 3 · 16 + 40 pairs), b drawn from few values so
 /// that equal b within a run are common; tags number the pairs.
@@ -112,10 +145,14 @@ TEST(sort_pairs, equals_std_sort_by_a_then_b_with_and_without_tags) {
     for (const std::size_t a_count : {std::size_t{1}, std::size_t{20}, std::size_t{3000}, std::size_t{300000}}) {
         for (const std::size_t sources : {std::size_t{1}, std::size_t{2}}) {
             const auto input = random_pairs(a_count, sources, a_count + sources);
-            std::vector<const std::vector<obbsat::detail::tagged_pair>*> lists;
+            // Each source in spans of up to 1000 pairs, as a thread hands them over.
+            std::vector<obbsat::detail::pair_source<obbsat::detail::tagged_pair>> lists;
             std::vector<obbsat::detail::tagged_pair> want;
             for (const auto& source : input) {
-                lists.push_back(&source);
+                lists.emplace_back();
+                for (std::size_t begin = 0; begin < source.size(); begin += 1000) {
+                    lists.back().push_back({source.data() + begin, std::min<std::size_t>(1000, source.size() - begin)});
+                }
                 want.insert(want.end(), source.begin(), source.end());
             }
             const auto by_pair = [](const auto& x, const auto& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); };
@@ -134,12 +171,12 @@ TEST(sort_pairs, equals_std_sort_by_a_then_b_with_and_without_tags) {
             }
             // The same pairs without tags.
             std::vector<std::vector<obbsat::pair_index>> plain(sources);
-            std::vector<const std::vector<obbsat::pair_index>*> plain_lists;
+            std::vector<obbsat::detail::pair_source<obbsat::pair_index>> plain_lists;
             for (std::size_t s = 0; s < sources; ++s) {
                 for (const auto& p : input[s]) {
                     plain[s].push_back({p.a, p.b});
                 }
-                plain_lists.push_back(&plain[s]);
+                plain_lists.push_back({{plain[s].data(), plain[s].size()}});
             }
             std::vector<obbsat::pair_index> plain_got;
             std::vector<obbsat::detail::pair_sort_scratch<obbsat::pair_index>> plain_scratch(sources);

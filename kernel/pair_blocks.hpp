@@ -1,0 +1,70 @@
+// The pairs one thread of a scene query finds, in blocks that never move.
+// A std::vector growing to millions of pairs copies them at each doubling
+// and touches about twice their memory; here each pair is written once.
+// Cleared, the blocks stay for the next query. Internal to the library.
+#pragma once
+
+#include "pair_sort.hpp"
+#include "scratch_vector.hpp"
+
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace obbsat::detail {
+
+class pair_blocks {
+public:
+    /// Pairs per block (512 KiB).
+    static constexpr std::size_t block_pairs = std::size_t{1} << 16;
+
+    /// Room for `count` <= block_pairs pairs after the last ones; add() then
+    /// says how many of them were written.
+    pair_index* room(std::size_t count) {
+        if (blocks_.empty() || used_[current_] + count > block_pairs) {
+            if (!blocks_.empty() && used_[current_] > 0) {
+                ++current_;
+            }
+            if (current_ == blocks_.size()) {
+                blocks_.emplace_back(block_pairs);
+                used_.push_back(0);
+            }
+        }
+        return blocks_[current_].data() + used_[current_];
+    }
+    /// The first `count` pairs of the last room() join the list.
+    void add(std::size_t count) {
+        used_[current_] += count;
+        size_ += count;
+    }
+
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    /// Forgets the pairs and keeps the blocks.
+    void clear() {
+        for (std::size_t b = 0; b <= current_ && b < used_.size(); ++b) {
+            used_[b] = 0;
+        }
+        current_ = 0;
+        size_ = 0;
+    }
+    /// The pairs in the order they were added, block by block.
+    pair_source<pair_index> spans() const {
+        pair_source<pair_index> out;
+        for (std::size_t b = 0; b < blocks_.size() && b <= current_; ++b) {
+            if (used_[b] > 0) {
+                out.push_back({blocks_[b].data(), used_[b]});
+            }
+        }
+        return out;
+    }
+
+private:
+    std::vector<scratch_vector<pair_index>> blocks_;  ///< each block_pairs long
+    std::vector<std::size_t> used_;                   ///< pairs in each block
+    std::size_t current_ = 0;                         ///< the block being filled; those after it are spare
+    std::size_t size_ = 0;
+};
+
+}  // namespace obbsat::detail

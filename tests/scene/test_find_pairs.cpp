@@ -580,6 +580,23 @@ TEST(pair_finder, kept_candidates_on_two_threads_and_across_stores) {
     EXPECT_GE(from_kept, 8u);
 }
 
+// More threads than two: the answer's shares between the first and the
+// last are written apart and copied into place.
+TEST(pair_finder, kept_candidates_on_three_and_four_threads) {
+    const auto start = seeded_scene(70000, obbsat::scene_sizes::uniform, 66, 0, 2.0);
+    for (const unsigned threads : {3u, 4u}) {
+        obbsat::pair_finder finder(options_for(method::exact, obbsat::backend::automatic, threads));
+        std::size_t from_kept = 0;
+        for (int f = 0; f < 5; ++f) {
+            const auto frame = drifted(start, f, 0.01f, 13);
+            EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact)))
+                << threads << " threads, frame " << f;
+            from_kept += finder.stats().reused_candidates ? 1u : 0u;
+        }
+        EXPECT_GE(from_kept, 3u) << threads << " threads";
+    }
+}
+
 // One huge box among small ones widens only itself: the kept pairs stay a
 // few per box instead of every small box meeting every other.
 TEST(pair_finder, a_huge_box_does_not_widen_the_others) {

@@ -487,14 +487,17 @@ void pair_search::flush_candidates(part& p) const {
     // first, across two the first store's rectangle first.
     const auto offset = static_cast<std::uint32_t>(a_count_);
     pair_index* const candidates = p.candidates.data();
+    // Which way round is as random as the caller's indices: a mask, not a
+    // branch that would mispredict on every other candidate.
     for (std::size_t i = 0; i < count; ++i) {
-        const std::uint32_t x = order_[candidates[i].a];
-        const std::uint32_t y = order_[candidates[i].b];
-        const bool swap = self_ ? x > y : x >= offset;
         const std::uint32_t first = candidates[i].a;
         const std::uint32_t second = candidates[i].b;
-        candidates[i].a = swap ? second : first;
-        candidates[i].b = swap ? first : second;
+        const std::uint32_t x = order_[first];
+        const std::uint32_t y = order_[second];
+        const bool swap = self_ ? x > y : x >= offset;
+        const std::uint32_t flip = (first ^ second) & (0u - static_cast<std::uint32_t>(swap));
+        candidates[i].a = first ^ flip;
+        candidates[i].b = second ^ flip;
     }
     if (keep_) {
         // Past its budget a part keeps nothing more: the call then answers

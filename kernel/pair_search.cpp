@@ -430,8 +430,9 @@ void pair_search::collect_visits(std::size_t parts) {
         first_visit[share + 1] += first_visit[share];
     }
     const std::size_t visits = first_visit[parts];
-    visit_keys_.resize(visits);
-    visit_ids_.resize(visits);
+    // One more entry after the last visit, for the sweep's merge to read.
+    visit_keys_.resize(visits + 1);
+    visit_ids_.resize(visits + 1);
     own_begin_.resize(strips + 1);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
@@ -447,6 +448,8 @@ void pair_search::collect_visits(std::size_t parts) {
         }
     });
     radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_, parts);
+    visit_keys_[visits] = 0;
+    visit_ids_[visits] = 0;
     visit_begin_.assign(strips + 1, 0);
     if (visits > 0) {
         run_parts(parts, [&](std::size_t share) {
@@ -551,16 +554,26 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
     const std::uint32_t* const visit_keys = visit_keys_.data();
     const std::uint32_t* const visit_ids = visit_ids_.data();
     const std::uint32_t q_mask = grid_.q_max;
+    // Which side comes next is as random as the scene, so the merge selects
+    // without branching: a side that has run out reads as the largest key,
+    // and reads stay in bounds (the last rectangle, the visit after the last).
+    constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+    const std::size_t last = n_ - 1;
     std::size_t o = own_begin;
     std::size_t v = visit_begin;
     for (std::size_t e = 0; e < m; ++e) {
-        const bool take_own = v == visit_end || (o < own_end && q_lo_[o] <= (visit_keys[v] & q_mask));
-        const std::size_t k = take_own ? o++ : visit_ids[v++];
+        const std::uint32_t own_q = o < own_end ? q_lo_[std::min(o, last)] : none;
+        const std::uint32_t visit_q = v < visit_end ? (visit_keys[v] & q_mask) : none;
+        const std::size_t take_own = own_q <= visit_q ? 1u : 0u;
+        const std::size_t own_mask = 0u - take_own;
+        const std::size_t k = (o & own_mask) | (visit_ids[v] & ~own_mask);
+        o += take_own;
+        v += 1u - take_own;
         q_lo[e] = static_cast<float>(q_lo_[k]);
         q_hi[e] = static_cast<float>(q_hi_[k]);
         ids[e] = static_cast<std::int32_t>(k);
-        starts[e] = take_own ? 1.0f : 0.0f;
-        store[e] = side_[k] != 0 ? 1.0f : 0.0f;
+        starts[e] = static_cast<float>(take_own);
+        store[e] = static_cast<float>(side_[k]);
         lo_x[e] = in_lo_x_[k];
         lo_y[e] = in_lo_y_[k];
         hi_x[e] = in_hi_x_[k];
@@ -740,7 +753,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             stats_.reused_candidates = true;
             stats_.kept_candidates = kept_.size();
             stats_.strips = grid_.strips;
-            stats_.visits = visit_keys_.size();
+            stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
             test_kept(parts, exact);
             answer_from_kept(parts);

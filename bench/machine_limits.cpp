@@ -2,7 +2,9 @@
 // ceilings of the roofline the benchmark rates are compared against:
 //   - float throughput of FMA, mul+add and add+max chains (AVX-512, AVX2);
 //   - read bandwidth of a streaming sum per working-set size;
-//   - throughput of independent random reads of 32-byte records.
+//   - throughput of independent random reads of 32-byte records;
+//   - the rate at which fresh memory can be put to use: mapped, each page
+//     written once (the OS finds and clears it), unmapped.
 // Each figure is the median of several timed trials after a calibration run,
 // on 1 and on 2 threads (2-thread figures are aggregates over both).
 //
@@ -16,6 +18,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,9 +27,12 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <sys/mman.h>
 
 namespace {
 
@@ -39,7 +45,7 @@ struct settings {
 };
 
 struct measurement {
-    std::string section;  ///< "float", "read" or "random_records"
+    std::string section;  ///< "float", "read", "random_records" or "fresh_memory"
     std::string isa;
     std::string what;     ///< operation, working set or record count, as text
     double size = 0.0;    ///< working-set bytes or record count; 0 for float
@@ -173,6 +179,39 @@ double random_record_rate(const settings& s, const kernel_set& k, std::size_t re
                            }
                            sink.store(total);
                        });
+}
+
+/// Bytes per second over all threads of fresh memory put to use: each
+/// thread maps `bytes`, writes one byte in each 4 KiB page, and unmaps them,
+/// over and over. `huge` asks for transparent huge pages on the block
+/// (2 MiB-aligned by mapping 2 MiB more and using the aligned part).
+double fresh_memory_rate(const settings& s, std::size_t bytes, bool huge, unsigned threads) {
+    constexpr std::size_t page = 4096;
+    constexpr std::size_t huge_page = std::size_t{2} << 20;
+    std::atomic<bool> failed{false};
+    const double rate = median_rate(s, threads, static_cast<double>(bytes), [&](unsigned, std::size_t blocks) {
+        for (std::size_t b = 0; b < blocks; ++b) {
+            const std::size_t mapped = bytes + huge_page;
+            void* block = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (block == MAP_FAILED) {
+                failed.store(true);
+                return;
+            }
+            const auto address = reinterpret_cast<std::uintptr_t>(block);
+            auto* first = reinterpret_cast<volatile char*>((address + huge_page - 1) / huge_page * huge_page);
+            if (huge) {
+                (void)madvise(const_cast<char*>(first), bytes, MADV_HUGEPAGE);
+            }
+            for (std::size_t at = 0; at < bytes; at += page) {
+                first[at] = 1;
+            }
+            munmap(block, mapped);
+        }
+    });
+    if (failed.load()) {
+        throw std::runtime_error("cannot map " + std::to_string(bytes) + " bytes");
+    }
+    return rate;
 }
 
 std::string cpu_model() {
@@ -356,6 +395,27 @@ int main(int argc, char** argv) {
             rows.push_back({"random_records", widest.isa, std::to_string(records),
                             static_cast<double>(records), threads, rate});
             std::printf(" %10.2f", 1e9 / rate);
+            std::fflush(stdout);
+        }
+        std::printf("\n");
+    }
+
+    std::printf("\nFresh memory (mapped, one write per 4 KiB page, unmapped), GB/s (aggregate), 64 MiB per thread\n");
+    std::printf("%-22s %10s %10s\n", "pages", "1 thread", "2 threads");
+    for (const bool huge : {false, true}) {
+        const char* what = huge ? "huge pages advised" : "4 KiB pages";
+        std::printf("%-22s", what);
+        for (const unsigned threads : thread_counts) {
+            const std::size_t bytes = std::size_t{64} << 20;
+            double rate = 0.0;
+            try {
+                rate = fresh_memory_rate(s, bytes, huge, threads);
+            } catch (const std::exception& e) {
+                std::cerr << "\nobbsat_machine_limits: " << e.what() << "\n";
+                return 1;
+            }
+            rows.push_back({"fresh_memory", "", what, static_cast<double>(bytes), threads, rate});
+            std::printf(" %10.2f", rate / 1e9);
             std::fflush(stdout);
         }
         std::printf("\n");

@@ -770,10 +770,15 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             margin_share_ = std::max(margin_share_ / 2, 1.0 / 256);
         }
     }
-    const bool same = same_scene_as_last();
-    margin_ = same ? static_cast<float>(margin_share_) : 0.0f;
     kept_ready_ = false;
     kept_calls_ = 0;
+    if (!same_scene_as_last()) {
+        // The first call on a scene knows no motion yet, and pairs kept from
+        // bounds not widened would serve no call after a move: it answers
+        // as a plain query, and the next call keeps the pairs of widened bounds.
+        return answer_plainly(input);
+    }
+    margin_ = static_cast<float>(margin_share_);
     keep_ = true;
     try {
         run(input, pair_chunk_sink{});
@@ -797,10 +802,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             std::vector<pair_index>().swap(parts_[i].captured);
         }
         margin_share_ = std::max(margin_share_ / 4, 1.0 / 256);
-        run(input, pair_chunk_sink{});
-        sort_found();
-        last_candidates_ = stats_.candidates;
-        return pairs_;
+        return answer_plainly(input);
     }
     measure_typical_extent(used_parts_);
     keep_candidates(used_parts_);
@@ -808,6 +810,15 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     test_kept(used_parts_, false);
     last_candidates_ = stats_.candidates;
     answer_from_kept(used_parts_);
+    return pairs_;
+}
+
+const std::vector<pair_index>& pair_search::answer_plainly(const query_input& input) {
+    // keep_ is false: the bounds themselves, not widened (see widen), so the
+    // method is asked of the same candidates as in find_pairs.
+    run(input, pair_chunk_sink{});
+    sort_found();
+    last_candidates_ = stats_.candidates;
     return pairs_;
 }
 

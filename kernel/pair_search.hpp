@@ -158,6 +158,8 @@ private:
     void keep_candidates(std::size_t parts);
     void test_kept(std::size_t parts, bool unfiltered);
     void answer_from_kept(std::size_t parts);
+    /// The answer of a query that keeps nothing, over bounds not widened.
+    const std::vector<pair_index>& answer_plainly(const query_input& input);
 
     collide_options options_;
     find_pairs_stats stats_;

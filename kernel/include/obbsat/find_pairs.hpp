@@ -124,9 +124,9 @@ namespace detail {
 class pair_search;
 }  // namespace detail
 
-/// A persistent query for simulations. Its full query widens every bounds by
-/// a margin and keeps the pairs whose widened bounds overlap, sorted in the
-/// caller's indices. A later call with the same number of rectangles checks
+/// A persistent query for simulations. Its first call on a scene answers as
+/// find_pairs does; later full queries widen every bounds by a margin and
+/// keep the pairs whose widened bounds overlap, sorted in the caller's indices. A later call with the same number of rectangles checks
 /// that each one's bounds still lie inside its widened bounds (exact float
 /// comparisons); if so, the kept pairs hold every pair whose bounds overlap
 /// now, and the call tests just those (no sweep, no sort). Otherwise it runs

@@ -221,6 +221,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         double y_high = -std::numeric_limits<double>::infinity();
         double height_sum = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
+        std::array<std::uint32_t, 256> exponents{};  ///< of the boxes' larger extents, before widening
     };
     std::vector<partial> partials(parts);
     // Rows the caller's memory holds are checked here, as they are read; a
@@ -233,11 +234,19 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         float height_sum = 0;
         double total = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
+        std::array<std::uint32_t, 256>& exponents = partials[share].exponents;
         // Heights are summed in float over runs and in double across them.
         bounds_run b;
+        std::uint32_t extent_exponent[bounds_run::size];
         for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             input_bounds(input, run_begin, run_end, b);
+            for (std::size_t r = 0; r < run_end - run_begin; ++r) {
+                const float extent = std::max(b.hi_x[r] - b.lo_x[r], b.hi_y[r] - b.lo_y[r]);
+                std::uint32_t bits;
+                std::memcpy(&bits, &extent, sizeof bits);
+                extent_exponent[r] = (bits >> 23) & 0xffu;
+            }
             widen(b, run_end - run_begin);
             for (std::size_t i = run_begin; i < run_end; ++i) {
                 // A row that fails its check has bounds of no meaning: it takes no part.
@@ -246,6 +255,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
                     continue;
                 }
                 const std::size_t r = i - run_begin;
+                ++exponents[extent_exponent[r]];
                 if (with_keys) {
                     key_by_id_[i] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
                 }
@@ -281,6 +291,21 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
     }
     extent_ = bounds_extent{all.x_low, all.x_high, all.y_low, all.y_high,
                             all.height_sum / static_cast<double>(n_)};
+    // The median of the boxes' larger extents, to the power of two below it:
+    // a histogram of float exponents, robust to a few huge or tiny boxes.
+    // Exponent 0 holds zero and subnormal extents, 255 infinite ones: no scale.
+    std::size_t seen = 0;
+    int median = 0;
+    for (int e = 0; e < 256; ++e) {
+        for (const partial& p : partials) {
+            seen += p.exponents[static_cast<std::size_t>(e)];
+        }
+        if (2 * seen > n_) {
+            median = e;
+            break;
+        }
+    }
+    measured_typical_extent_ = median > 0 && median < 255 ? std::ldexp(1.0f, median - 127) : 0.0f;
 }
 
 bool pair_search::same_scene_as_last() const {
@@ -804,7 +829,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         margin_share_ = std::max(margin_share_ / 4, 1.0 / 256);
         return answer_plainly(input);
     }
-    measure_typical_extent(used_parts_);
+    typical_extent_ = measured_typical_extent_;
     keep_candidates(used_parts_);
     kept_ready_ = true;
     test_kept(used_parts_, false);
@@ -819,6 +844,7 @@ const std::vector<pair_index>& pair_search::answer_plainly(const query_input& in
     run(input, pair_chunk_sink{});
     sort_found();
     last_candidates_ = stats_.candidates;
+    typical_extent_ = measured_typical_extent_;
     return pairs_;
 }
 
@@ -869,37 +895,6 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
         fits[share] = ok ? 1 : 0;
     });
     return std::find(fits.begin(), fits.end(), 0) == fits.end();
-}
-
-void pair_search::measure_typical_extent(std::size_t parts) {
-    // The median of the boxes' larger extents, to the power of two below it:
-    // a histogram of float exponents, robust to a few huge or tiny boxes.
-    std::vector<std::array<std::uint32_t, 256>> counts(parts);
-    run_parts(parts, [&](std::size_t share) {
-        std::array<std::uint32_t, 256>& c = counts[share];
-        c.fill(0);
-        const auto [begin, end] = share_of(n_, share, parts);
-        for (std::size_t k = begin; k < end; ++k) {
-            const float* v = now_[k].v;
-            const float extent = std::max(-v[2] - v[0], -v[3] - v[1]);
-            std::uint32_t bits;
-            std::memcpy(&bits, &extent, sizeof bits);
-            ++c[(bits >> 23) & 0xffu];
-        }
-    });
-    std::size_t seen = 0;
-    int median = 0;
-    for (int e = 0; e < 256; ++e) {
-        for (std::size_t share = 0; share < parts; ++share) {
-            seen += counts[share][static_cast<std::size_t>(e)];
-        }
-        if (2 * seen > n_) {
-            median = e;
-            break;
-        }
-    }
-    // Exponent 0 holds zero and subnormal extents, 255 infinite ones: no scale.
-    typical_extent_ = median > 0 && median < 255 ? std::ldexp(1.0f, median - 127) : 0.0f;
 }
 
 void pair_search::keep_candidates(std::size_t parts) {

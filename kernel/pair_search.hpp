@@ -154,7 +154,6 @@ private:
     /// Copies the rows into the kept order and checks that each one's bounds lie in its widened
     /// bounds; with `keep_bounds`, also stores the bounds in now_ for test_kept's filter.
     bool refresh_records(const query_input& input, std::size_t parts, bool keep_bounds);
-    void measure_typical_extent(std::size_t parts);
     void keep_candidates(std::size_t parts);
     void test_kept(std::size_t parts, bool unfiltered);
     void answer_from_kept(std::size_t parts);
@@ -210,6 +209,7 @@ private:
     bool kept_ready_ = false;
     float margin_ = 0;                ///< each box widened by margin_ times its larger extent or typical_extent_
     float typical_extent_ = 0;        ///< about the median of the boxes' larger extents, from the last full query
+    float measured_typical_extent_ = 0;  ///< the same of this query's boxes, measured with its extent
     double margin_share_ = 1.0 / 16;  ///< margin_ of the next full query that follows motion
     std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
     std::size_t last_candidates_ = 0;  ///< candidates of the last full query, for the budget of kept ones

@@ -603,6 +603,25 @@ TEST(pair_finder, kept_candidates_on_three_and_four_threads) {
     }
 }
 
+// The smallest boxes of a mixed scene are widened by a share of the scene's
+// typical extent, which the first call measures though it keeps nothing: a
+// scene going back and forth by more than a small box's own extent is
+// answered from kept pairs from the third call on.
+TEST(pair_finder, small_boxes_of_a_mixed_scene_are_widened_from_the_second_call) {
+    const auto start = seeded_scene(20000, obbsat::scene_sizes::mixed, 68, 0, 2.0);
+    const auto moved = drifted(start, 1, 0.02f * typical_size(start), 14);
+    obbsat::pair_finder finder(options_for(method::exact));
+    finder.find(start);
+    EXPECT_EQ(finder.stats().kept_candidates, 0u);
+    finder.find(moved);
+    EXPECT_GT(finder.stats().kept_candidates, 0u);
+    for (int f = 0; f < 4; ++f) {
+        const auto& frame = f % 2 == 0 ? start : moved;
+        EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact))) << f;
+        EXPECT_TRUE(finder.stats().reused_candidates) << f;
+    }
+}
+
 // One huge box among small ones widens only itself: the kept pairs stay a
 // few per box instead of every small box meeting every other.
 TEST(pair_finder, a_huge_box_does_not_widen_the_others) {

@@ -738,6 +738,9 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     if (options_.slow_path_pairs != nullptr) {
         *options_.slow_path_pairs = stats_.slow_path_pairs;
     }
+    // The next query widens by this one's typical extent; this one's widening
+    // used the last one's throughout.
+    typical_extent_ = measured_typical_extent_;
 }
 
 void pair_search::sort_found() {
@@ -829,7 +832,6 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         margin_share_ = std::max(margin_share_ / 4, 1.0 / 256);
         return answer_plainly(input);
     }
-    typical_extent_ = measured_typical_extent_;
     keep_candidates(used_parts_);
     kept_ready_ = true;
     test_kept(used_parts_, false);
@@ -844,7 +846,6 @@ const std::vector<pair_index>& pair_search::answer_plainly(const query_input& in
     run(input, pair_chunk_sink{});
     sort_found();
     last_candidates_ = stats_.candidates;
-    typical_extent_ = measured_typical_extent_;
     return pairs_;
 }
 

@@ -20,7 +20,8 @@
 //   5. Candidates go to the method's indexed kernel in blocks, over the
 //      reordered records; the colliding ones are mapped back.
 //
-// A persistent query (collect, for pair_finder) widens every bounds by a
+// A persistent query (collect, for pair_finder) answers its first call on a
+// scene as a plain query; later full queries widen every bounds by a
 // margin before step 2 and keeps the candidates of the widened bounds
 // instead of testing them. While each rectangle's bounds stay inside its
 // widened bounds (an exact float comparison), those candidates hold every
@@ -208,8 +209,8 @@ private:
     bool keep_ = false;
     bool kept_ready_ = false;
     float margin_ = 0;                ///< each box widened by margin_ times its larger extent or typical_extent_
-    float typical_extent_ = 0;        ///< about the median of the boxes' larger extents, from the last full query
-    float measured_typical_extent_ = 0;  ///< the same of this query's boxes, measured with its extent
+    float typical_extent_ = 0;        ///< about the median of the boxes' larger extents, from the last query
+    float measured_typical_extent_ = 0;  ///< the same of this query's boxes, measured with its extent, applied when it ends
     double margin_share_ = 1.0 / 16;  ///< margin_ of the next full query that follows motion
     std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
     std::size_t last_candidates_ = 0;  ///< candidates of the last full query, for the budget of kept ones

@@ -358,13 +358,11 @@ bool pair_search::repair_order(std::size_t parts) {
         }
     });
     bucket_sort(keys_.data(), order_.data(), n_, grid_.q_bits, grid_.strips, spare_keys_, spare_values_);
-    std::vector<std::size_t> strip_begin(grid_.strips + 1, 0);
-    for (std::size_t k = 0; k < n_; ++k) {
-        ++strip_begin[(keys_[k] >> grid_.q_bits) + 1];
-    }
-    for (std::size_t s = 0; s < grid_.strips; ++s) {
-        strip_begin[s + 1] += strip_begin[s];
-    }
+    std::vector<std::uint32_t> strip_begin(grid_.strips + 1);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        bucket_starts(keys_.data(), n_, grid_.q_bits, grid_.strips, begin, end, strip_begin.data());
+    });
     std::vector<unsigned char> repaired(parts, 1);
     run_parts(parts, [&](std::size_t share) {
         const std::size_t first = grid_.strips * share / parts;

@@ -10,6 +10,7 @@
 #include "conservative_lanes.hpp"
 #include "fused_multiply_add.hpp"
 #include "kernel_table.hpp"
+#include "largest_index_lanes.hpp"
 #include "method_catalogue.hpp"
 #include "pose_batch.hpp"
 #include "pose_corner_lanes.hpp"
@@ -89,7 +90,8 @@ constexpr kernel_table table_of(type_list<Rows...>) {
                         fused_multiply_add_lanes,
                         pose_corners_batch<isa_arch>,
                         strip_sweep_lanes<isa_arch>,
-                        bounds_batch<isa_arch>};
+                        bounds_batch<isa_arch>,
+                        largest_index_lanes<isa_arch>};
 }
 
 }  // namespace

@@ -83,12 +83,25 @@ void split_over_threads(std::size_t count, const collide_options& options, const
     }
 }
 
-void check_indices(std::size_t rect_count, const pair_index* pairs, std::size_t count) {
-    // One branch-free pass finds whether any index is out of range; only then
-    // is the first offender searched for, to name it.
+/// Throws invalid_input naming the first pair with an index >= rect_count.
+/// One pass of the backend's lanes, split like a batch, finds the largest
+/// index; only when it is out of range is the offender searched for.
+void check_indices(backend ran, std::size_t rect_count, const pair_index* pairs, std::size_t count,
+                   const collide_options& options) {
+    const detail::largest_index_fn largest_index = detail::kernels_for(ran).largest_index;
+    const std::size_t parts = parts_for(count, options.threads);
     std::uint32_t largest = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        largest = std::max(largest, std::max(pairs[i].a, pairs[i].b));
+    if (parts <= 1) {
+        largest = largest_index(pairs, count);
+    } else {
+        const std::size_t per_part = (count + parts - 1) / parts;
+        std::vector<std::uint32_t> part_largest(parts, 0);
+        detail::thread_pool::shared().run(parts, [&](std::size_t part) {
+            const std::size_t begin = std::min(count, part * per_part);
+            const std::size_t end = std::min(count, begin + per_part);
+            part_largest[part] = largest_index(pairs + begin, end - begin);
+        });
+        largest = *std::max_element(part_largest.begin(), part_largest.end());
     }
     if (count == 0 || largest < rect_count) {
         return;
@@ -154,7 +167,7 @@ void require_all_finite(const rect* rects, std::size_t count, const collide_opti
 backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
-    check_indices(rects.size(), pairs, count);
+    check_indices(ran, rects.size(), pairs, count, options);
     const detail::indexed_fn kernel = kernels_of(ran, options).indexed;
     const detail::soa_view view = detail::view_of(rects);
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
@@ -166,7 +179,7 @@ backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_
 backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
-    check_indices(rects.size(), pairs, count);
+    check_indices(ran, rects.size(), pairs, count, options);
     const detail::indexed_records_fn kernel = kernels_of(ran, options).indexed_records;
     const rect* records = rects.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
@@ -179,7 +192,7 @@ backend collide_pairs(const rect* rects, std::size_t rect_count, const pair_inde
                       std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
     require_all_finite(rects, rect_count, options);
-    check_indices(rect_count, pairs, count);
+    check_indices(ran, rect_count, pairs, count, options);
     const detail::indexed_records_fn kernel = kernels_of(ran, options).indexed_records;
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(rects, pairs + begin, end - begin, verdicts + begin);
@@ -269,7 +282,7 @@ backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::s
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
     const detail::pose_indexed_fn kernel = pose_kernels_of(ran, options).indexed;
-    check_indices(poses.size(), pairs, count);
+    check_indices(ran, poses.size(), pairs, count, options);
     const float* records = poses.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(records, pairs + begin, end - begin, verdicts + begin);
@@ -282,7 +295,7 @@ backend collide_pairs(const rect_pose* poses, std::size_t pose_count, const pair
     const backend ran = resolve_backend(options.use);
     const detail::pose_stream_fn kernel = pose_kernels_of(ran, options).stream;
     require_valid_poses(poses, pose_count);
-    check_indices(pose_count, pairs, count);
+    check_indices(ran, pose_count, pairs, count, options);
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         // Each pair's two poses gathered into records (cx, cy, hx, hy, c, s,
         // 0, 0), a block small enough for L1 at a time: the same floats the

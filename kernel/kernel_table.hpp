@@ -60,6 +60,10 @@ using pose_corners_fn = void (*)(const float* records, std::size_t count, rect* 
 using bounds_fn = void (*)(store_kind kind, const float* records, std::size_t count, float* lo_x, float* lo_y,
                            float* hi_x, float* hi_y);
 
+/// The largest of pairs[i].a and pairs[i].b over i < count, 0 when count is 0:
+/// the pass that checks a pair list against its store.
+using largest_index_fn = std::uint32_t (*)(const pair_index* pairs, std::size_t count);
+
 /// One method's entry points on the corner stores of one backend; all null
 /// when the method does not run on corners.
 struct method_kernels {
@@ -90,6 +94,7 @@ struct kernel_table {
     pose_corners_fn pose_corners;
     strip_sweep_fn strip_sweep;  ///< the scene queries' broadphase, one strip
     bounds_fn bounds;            ///< the scene queries' bounds (obbsat/ref/bounds.hpp)
+    largest_index_fn largest_index;
 
     /// The entry points of `m` on corners; the caller has checked is_method.
     const method_kernels& of(method m) const { return methods[static_cast<unsigned>(m)]; }

@@ -8,6 +8,7 @@
 #include <obbsat/ref/bounds.hpp>
 #include <obbsat/ref/pose_corners.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace obbsat::detail {
@@ -117,6 +118,14 @@ void bounds(store_kind kind, const float* records, std::size_t count, float* lo_
     }
 }
 
+std::uint32_t largest_index(const pair_index* pairs, std::size_t count) {
+    std::uint32_t largest = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        largest = std::max(largest, std::max(pairs[i].a, pairs[i].b));
+    }
+    return largest;
+}
+
 void fused_multiply_add(const float* x, const float* y, const float* z, std::size_t count, float* out) {
     for (std::size_t i = 0; i < count; ++i) {
         out[i] = std::fma(x[i], y[i], z[i]);
@@ -153,7 +162,7 @@ template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
     return kernel_table{
         {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners, strip_sweep,
-        bounds};
+        bounds, largest_index};
 }
 
 }  // namespace

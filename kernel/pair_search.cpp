@@ -152,6 +152,33 @@ void copy_row(const query_input& input, std::size_t id, float* out) {
 }
 
 /// How many of `count` verdicts (each 0 or 1) say colliding.
+/// [begin, end) of part `part` of `parts` over n items, every boundary but n
+/// on a multiple of 64: the parts then write disjoint words of a bit set.
+std::pair<std::size_t, std::size_t> word_share_of(std::size_t n, std::size_t part, std::size_t parts) {
+    const auto boundary = [&](std::size_t k) { return k == parts ? n : (n * k / parts) & ~std::size_t{63}; };
+    return {boundary(part), boundary(part + 1)};
+}
+
+/// Verdicts v[0, n), each 0 or 1, n <= 64, as one word: bit i is v[i].
+std::uint64_t verdict_word(const std::uint8_t* v, std::size_t n) {
+    std::uint64_t word = 0;
+#ifdef __SSE2__
+    if (n == 64) {
+        for (unsigned k = 0; k < 4; ++k) {
+            // A 0/1 byte shifted left by 7 is its own sign bit.
+            const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(v + 16 * k));
+            const auto mask = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_slli_epi16(bytes, 7)));
+            word |= static_cast<std::uint64_t>(mask) << (16 * k);
+        }
+        return word;
+    }
+#endif
+    for (std::size_t i = 0; i < n; ++i) {
+        word |= static_cast<std::uint64_t>(v[i]) << i;
+    }
+    return word;
+}
+
 std::size_t count_colliding(const std::uint8_t* verdicts, std::size_t count) {
     std::size_t sum = 0;
     for (std::size_t i = 0; i < count; ++i) {
@@ -938,7 +965,7 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
     if (parts_.size() < parts) {
         parts_.resize(parts);
     }
-    kept_verdicts_.resize(kept_.size());
+    kept_verdicts_.resize((kept_.size() + 63) / 64);
     const signed_bounds* const now = now_.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
@@ -951,34 +978,44 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         p.colliding = 0;
         p.slow_path = 0;
         p.kernel_seconds = 0;
-        const auto [begin, end] = share_of(kept_.size(), share, parts);
+        const auto [begin, end] = word_share_of(kept_.size(), share, parts);
         // Plain pointers: a byte store may alias anything, and the vectors'
         // own pointers would be reloaded on every candidate.
         const pair_index* const kept = kept_.data();
-        std::uint8_t* const verdicts = kept_verdicts_.data();
+        std::uint64_t* const verdict_words = kept_verdicts_.data();
         pair_index* const candidates = p.candidates.data();
         std::uint32_t* const slots = p.slots.data();
+        // One block's verdicts, in the kept order, before they become bits.
+        alignas(64) std::uint8_t verdicts[candidate_block];
+        static_assert(candidate_block % 64 == 0, "blocks start on a word of the kept verdicts");
         for (std::size_t first = begin; first < end; first += candidate_block) {
             const std::size_t last = std::min(end, first + candidate_block);
+            const auto keep_bits = [&] {
+                for (std::size_t w = 0; w * 64 < last - first; ++w) {
+                    verdict_words[first / 64 + w] = verdict_word(verdicts + 64 * w, std::min<std::size_t>(64, last - first - 64 * w));
+                }
+            };
             if (unfiltered) {
-                test_pairs(p, kept + first, last - first, verdicts + first);
-                p.colliding += count_colliding(verdicts + first, last - first);
+                test_pairs(p, kept + first, last - first, verdicts);
+                p.colliding += count_colliding(verdicts, last - first);
+                keep_bits();
                 continue;
             }
             std::size_t count = 0;
             for (std::size_t i = first; i < last; ++i) {
                 const unsigned overlap = signed_bounds_overlap(now[kept[i].a].v, now[kept[i].b].v);
                 candidates[count] = kept[i];
-                slots[count] = static_cast<std::uint32_t>(i);
+                slots[count] = static_cast<std::uint32_t>(i - first);
                 count += overlap;
             }
-            std::memset(verdicts + first, 0, last - first);
+            std::memset(verdicts, 0, last - first);
             test_candidates(p, count);
             const std::uint8_t* const tested = p.verdicts.data();
             for (std::size_t c = 0; c < count; ++c) {
                 verdicts[slots[c]] = tested[c];
             }
             p.colliding += count_colliding(tested, count);
+            keep_bits();
         }
     });
     for (std::size_t i = 0; i < parts; ++i) {
@@ -1007,16 +1044,17 @@ void pair_search::answer_from_kept(std::size_t parts) {
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
         pair_index* const out = pairs_.data() + begin;
-        const std::uint8_t* const verdicts = kept_verdicts_.data();
+        const std::uint64_t* const verdict_words = kept_verdicts_.data();
         const tagged_pair* const kept = kept_by_caller_.data();
         std::size_t found = 0;
         constexpr std::size_t ahead = 64;
         for (std::size_t j = begin; j < end; ++j) {
             if (j + ahead < end) {
-                __builtin_prefetch(verdicts + kept[j + ahead].tag);
+                __builtin_prefetch(verdict_words + kept[j + ahead].tag / 64);
             }
             out[found] = pair_index{kept[j].a, kept[j].b};
-            found += verdicts[kept[j].tag] != 0 ? 1u : 0u;
+            const std::uint32_t tag = kept[j].tag;
+            found += static_cast<std::size_t>((verdict_words[tag / 64] >> (tag % 64)) & 1u);
         }
         parts_[share].share_size = found;
     });

@@ -226,7 +226,7 @@ private:
     }
     std::vector<pair_index> kept_;             ///< in the query's order, as the kernel takes them
     std::vector<tagged_pair> kept_by_caller_;  ///< (a, b) in the caller's indices, sorted; tag: index into kept_
-    std::vector<std::uint8_t> kept_verdicts_;
+    std::vector<std::uint64_t> kept_verdicts_;  ///< bit i % 64 of word i / 64: the verdict on kept_[i]
     std::vector<pair_sort_scratch<tagged_pair>> tag_scratch_;
 };
 

@@ -1031,19 +1031,29 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
 
 void pair_search::answer_from_kept(std::size_t parts) {
     // The kept pairs are sorted in the caller's indices: the answer is the
-    // ones the method called colliding, read in that order. One share writes
-    // them in room for their count (and the one write past the last, below);
-    // more shares each write where their kept pairs begin, in room for every
-    // kept pair, and the shares after the first then move down to close the gaps.
+    // ones the method called colliding, read in that order. The first share
+    // writes into the answer, the others into their own buffers, each in room
+    // for as many pairs as can collide there (and the one write past the
+    // last, below); the others' pairs are then copied in after the first's.
+    // Room for every kept pair in the answer itself would be zeroed on every
+    // call where the answer grows back to it.
     const auto start = clock_type::now();
     std::size_t colliding = 0;
     for (std::size_t i = 0; i < parts; ++i) {
         colliding += parts_[i].colliding;
     }
-    pairs_.resize(parts == 1 ? colliding + 1 : kept_by_caller_.size());
+    const std::size_t kept_count = kept_by_caller_.size();
+    const auto room = [&](std::size_t share) {
+        const auto [begin, end] = share_of(kept_count, share, parts);
+        return std::min(colliding, end - begin) + 1;
+    };
+    pairs_.resize(room(0));
+    for (std::size_t share = 1; share < parts; ++share) {
+        parts_[share].answer.resize(room(share));
+    }
     run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
-        pair_index* const out = pairs_.data() + begin;
+        const auto [begin, end] = share_of(kept_count, share, parts);
+        pair_index* const out = share == 0 ? pairs_.data() : parts_[share].answer.data();
         const std::uint64_t* const verdict_words = kept_verdicts_.data();
         const tagged_pair* const kept = kept_by_caller_.data();
         std::size_t found = 0;
@@ -1058,15 +1068,19 @@ void pair_search::answer_from_kept(std::size_t parts) {
         }
         parts_[share].share_size = found;
     });
-    std::size_t size = parts_[0].share_size;
-    for (std::size_t share = 1; share < parts; ++share) {
-        const std::size_t from = share_of(kept_by_caller_.size(), share, parts).first;
-        if (from != size) {  // down, over what moved before (memmove: the ranges may overlap)
-            std::memmove(pairs_.data() + size, pairs_.data() + from, parts_[share].share_size * sizeof(pair_index));
-        }
-        size += parts_[share].share_size;
+    std::vector<std::size_t> offsets(parts + 1, 0);
+    for (std::size_t share = 0; share < parts; ++share) {
+        offsets[share + 1] = offsets[share] + parts_[share].share_size;
     }
-    pairs_.resize(size);
+    pairs_.resize(offsets[parts]);
+    if (parts > 1) {
+        run_parts(parts, [&](std::size_t share) {
+            if (share > 0) {
+                std::memcpy(pairs_.data() + offsets[share], parts_[share].answer.data(),
+                            parts_[share].share_size * sizeof(pair_index));
+            }
+        });
+    }
     stats_.pairs = pairs_.size();
     stats_.output_seconds += seconds_since(start);
 }

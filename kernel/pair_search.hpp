@@ -114,6 +114,7 @@ private:
         std::vector<tagged_pair> tagged;
         std::vector<std::uint32_t> slots;
         std::size_t share_size = 0;  ///< pairs of this share of the answer from kept candidates
+        scratch_vector<pair_index> answer;  ///< those pairs, for every share but the first
         std::size_t tested = 0;
         std::size_t colliding = 0;  ///< kept candidates the method called colliding
         std::size_t slow_path = 0;

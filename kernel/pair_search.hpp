@@ -111,7 +111,7 @@ private:
         std::vector<pair_index> captured;
         std::size_t capture_budget = 0;
         bool over_budget = false;
-        std::vector<tagged_pair> tagged;
+        scratch_vector<tagged_pair> tagged;  // written whole before it is read: never zeroed
         std::vector<std::uint32_t> slots;
         std::size_t share_size = 0;  ///< pairs of this share of the answer from kept candidates
         scratch_vector<pair_index> answer;  ///< those pairs, for every share but the first

@@ -196,6 +196,7 @@ private:
     // visits sorted by (strip, q_lo), visit_begin_[s] the first visit of s.
     std::vector<std::uint32_t> own_begin_, visit_begin_;
     scratch_vector<std::uint32_t> visit_keys_, visit_ids_;
+    scratch_vector<std::uint32_t> far_keys_, far_ids_;  ///< visits beyond the strip above a rectangle's lowest, before the merge
 
     std::vector<part> parts_;
     std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer

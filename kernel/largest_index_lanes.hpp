@@ -19,6 +19,9 @@ std::uint32_t largest_index_lanes(const pair_index* pairs, std::size_t count) {
     static_assert(sizeof(pair_index) == 2 * sizeof(std::uint32_t), "a pair is two packed 32-bit indices");
     using batch = xsimd::batch<std::uint32_t, Arch>;
     constexpr std::size_t width = batch::size;
+    if (count == 0) {
+        return 0;  // pairs may be null then
+    }
     const std::uint32_t* index = &pairs[0].a;
     const std::size_t words = 2 * count;
     // Two accumulators: the max of one vector does not wait on the last.

@@ -1,6 +1,7 @@
 #include "pair_search.hpp"
 
 #include "backend_registry.hpp"
+#include "fetch_ahead.hpp"
 #include "finite_check.hpp"
 #include "method_check.hpp"
 #include "pair_sort.hpp"
@@ -426,13 +427,13 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     const bounds_fn bounds = kernels_for(ran_).bounds;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
-        constexpr std::size_t ahead = 16;
+        constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
         for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
-                    __builtin_prefetch(record_at(input, order_[k + ahead]));
+                    fetch_into_l2(record_at(input, order_[k + ahead]));
                 }
                 const std::uint32_t id = order_[k];
                 copy_row(input, id, records_[k].v);
@@ -943,7 +944,7 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
     std::vector<unsigned char> fits(parts, 1);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
-        constexpr std::size_t ahead = 16;
+        constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
         bool ok = true;
         // Plain locals: the record stores may alias anything the loop reads.
@@ -954,7 +955,7 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
-                    __builtin_prefetch(record_at(in, order[k + ahead]));
+                    fetch_into_l2(record_at(in, order[k + ahead]));
                 }
                 const std::uint32_t id = order[k];
                 if (id < in.a_count ? check_a : check_b) {

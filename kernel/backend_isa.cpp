@@ -60,10 +60,11 @@ constexpr method_kernels kernels_of_row() {
                       "a method's lanes and its catalogue row agree on the slow path");
         return method_kernels{stream_batch<isa_arch, corners::template lanes>,
                               indexed_batch<isa_arch, corners::template lanes>,
-                              indexed_records_batch<isa_arch, corners::template lanes>,
-                              indexed_records_batch<isa_arch, corners::template lanes, false>};
+                              indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::into_l1>,
+                              indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::none>,
+                              indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::into_l2>};
     } else {
-        return method_kernels{nullptr, nullptr, nullptr, nullptr};
+        return method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
     }
 }
 
@@ -75,11 +76,12 @@ constexpr pose_method_kernels pose_kernels_of_row() {
         static_assert(poses::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
                       "a method's lanes and its catalogue row agree on the slow path");
         return pose_method_kernels{pose_stream_batch<isa_arch, poses::template lanes>,
-                                   pose_indexed_batch<isa_arch, poses::template lanes>,
+                                   pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l1>,
                                    pose_stream_soa_batch<isa_arch, poses::template lanes>,
-                                   pose_indexed_batch<isa_arch, poses::template lanes, false>};
+                                   pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::none>,
+                                   pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l2>};
     } else {
-        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr};
+        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
     }
 }
 

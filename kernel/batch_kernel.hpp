@@ -4,6 +4,7 @@
 // the caller's arrays is read or written.
 #pragma once
 
+#include "fetch_ahead.hpp"
 #include "kernel_table.hpp"
 #include "lanes.hpp"
 #include "record_transpose.hpp"
@@ -122,14 +123,10 @@ std::size_t indexed_batch(const soa_view& rects, const pair_index* pairs, std::s
     return settled;
 }
 
-/// How many pairs ahead the records of a pair are prefetched: far enough to
-/// hide a DRAM access behind the work on the pairs in between.
-constexpr std::size_t prefetch_distance = 16;
-
 /// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
-/// returns the lanes settled exactly. With Prefetch, the records of pairs
-/// ahead are fetched early (for random access through a pair list).
-template <class Arch, template <class> class Method, bool Prefetch = true>
+/// returns the lanes settled exactly. The records of pairs ahead are fetched
+/// as Fetch says (fetch_ahead.hpp).
+template <class Arch, template <class> class Method, pair_fetch Fetch>
 std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
@@ -138,11 +135,12 @@ std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, 
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
         const pair_index* p = pairs + i;
-        if constexpr (Prefetch) {
-            if (i + width + prefetch_distance <= count) {
-                for (std::size_t k = prefetch_distance; k < prefetch_distance + width; ++k) {
-                    __builtin_prefetch(records + p[k].a);
-                    __builtin_prefetch(records + p[k].b);
+        if constexpr (Fetch != pair_fetch::none) {
+            constexpr std::size_t ahead = pairs_ahead<Fetch>;
+            if (i + width + ahead <= count) {
+                for (std::size_t k = ahead; k < ahead + width; ++k) {
+                    fetch_record<Fetch>(records + p[k].a);
+                    fetch_record<Fetch>(records + p[k].b);
                 }
             }
         }

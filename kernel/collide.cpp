@@ -1,4 +1,5 @@
 #include "backend_registry.hpp"
+#include "fetch_ahead.hpp"
 #include "finite_check.hpp"
 #include "method_check.hpp"
 #include "pose_record.hpp"
@@ -124,6 +125,13 @@ const detail::method_kernels& kernels_of(backend ran, const collide_options& opt
     return detail::kernels_for(ran).of(options.test);
 }
 
+/// The entry for pair lists over `count` packed corner records: the one that
+/// fetches ahead into L2 when the records are read from DRAM.
+detail::indexed_records_fn records_kernel_of(backend ran, const collide_options& options, std::size_t count) {
+    const detail::method_kernels& kernels = kernels_of(ran, options);
+    return count * sizeof(rect) > detail::store_bytes_from_dram ? kernels.indexed_records_far : kernels.indexed_records;
+}
+
 /// The same on poses.
 const detail::pose_method_kernels& pose_kernels_of(backend ran, const collide_options& options) {
     detail::require_method_on(options, store_kind::poses);
@@ -180,7 +188,7 @@ backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::s
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
     check_indices(ran, rects.size(), pairs, count, options);
-    const detail::indexed_records_fn kernel = kernels_of(ran, options).indexed_records;
+    const detail::indexed_records_fn kernel = records_kernel_of(ran, options, rects.size());
     const rect* records = rects.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(records, pairs + begin, end - begin, verdicts + begin);
@@ -193,7 +201,7 @@ backend collide_pairs(const rect* rects, std::size_t rect_count, const pair_inde
     const backend ran = resolve_backend(options.use);
     require_all_finite(rects, rect_count, options);
     check_indices(ran, rect_count, pairs, count, options);
-    const detail::indexed_records_fn kernel = kernels_of(ran, options).indexed_records;
+    const detail::indexed_records_fn kernel = records_kernel_of(ran, options, rect_count);
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {
         return kernel(rects, pairs + begin, end - begin, verdicts + begin);
     });
@@ -281,7 +289,10 @@ std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
 backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
-    const detail::pose_indexed_fn kernel = pose_kernels_of(ran, options).indexed;
+    const detail::pose_method_kernels& kernels = pose_kernels_of(ran, options);
+    const detail::pose_indexed_fn kernel =
+        poses.size() * sizeof(float) * pose_records::record_floats > detail::store_bytes_from_dram ? kernels.indexed_far
+                                                                                                   : kernels.indexed;
     check_indices(ran, poses.size(), pairs, count, options);
     const float* records = poses.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {

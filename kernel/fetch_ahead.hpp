@@ -17,4 +17,31 @@ constexpr std::size_t random_rows_ahead = 64;
 /// Asks for the cache line holding `p` to be brought into L2.
 inline void fetch_into_l2(const void* p) { __builtin_prefetch(p, 0, 1); }
 
+/// How a batch over a pair list fetches the records of the pairs ahead.
+enum class pair_fetch {
+    none,      ///< not at all: the records of a sweep's pairs are neighbours, already on their way
+    into_l1,   ///< 16 pairs ahead into L1: a store the caches hold (one read from L3 is short)
+    into_l2,   ///< 128 pairs ahead into L2: a store read from DRAM
+};
+
+/// How many pairs ahead `Fetch` asks for the records.
+template <pair_fetch Fetch>
+constexpr std::size_t pairs_ahead = Fetch == pair_fetch::into_l2 ? 128 : 16;
+
+/// Asks for the record at `p` as `Fetch` does.
+template <pair_fetch Fetch>
+inline void fetch_record(const void* p) {
+    if constexpr (Fetch == pair_fetch::into_l1) {
+        __builtin_prefetch(p);
+    } else if constexpr (Fetch == pair_fetch::into_l2) {
+        fetch_into_l2(p);
+    }
+}
+
+/// A store of more bytes than this is read from DRAM at random: its pair
+/// lists are batched with pair_fetch::into_l2. Measured with local over
+/// sorted pair lists (AVX-512): 8 MiB of records 1.76 ns per pair into L1
+/// against 1.89 into L2, 16 MiB 2.61 against 2.05, 64 MiB 7.3 against 3.2.
+constexpr std::size_t store_bytes_from_dram = std::size_t{12} << 20;
+
 }  // namespace obbsat::detail

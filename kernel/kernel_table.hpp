@@ -74,6 +74,10 @@ struct method_kernels {
     /// the pairs before them (the scene queries'): the same verdicts, without
     /// fetching records ahead, which there only costs instructions.
     indexed_records_fn indexed_records_near;
+    /// indexed_records for a store read from DRAM (more than
+    /// store_bytes_from_dram): the same verdicts, the records of pairs further
+    /// ahead fetched into L2.
+    indexed_records_fn indexed_records_far;
 };
 
 /// One method's entry points on the pose store of one backend; all null when
@@ -85,6 +89,8 @@ struct pose_method_kernels {
     /// indexed for a list whose pairs' records lie near each other (see
     /// method_kernels::indexed_records_near).
     pose_indexed_fn indexed_near;
+    /// indexed for a store read from DRAM (see method_kernels::indexed_records_far).
+    pose_indexed_fn indexed_far;
 };
 
 struct kernel_table {

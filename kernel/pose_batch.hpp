@@ -29,9 +29,9 @@ OBBSAT_LANE_INLINE pose_lanes<Arch> load_poses(const float* records, const Index
 }
 
 /// verdicts[i] = Method(a[first(i)], b[second(i)]) for i < count; returns the
-/// lanes settled exactly. With Prefetch, the records of pairs ahead are
-/// fetched early (for random access through a pair list).
-template <class Arch, template <class> class Method, bool Prefetch, class First, class Second>
+/// lanes settled exactly. The records of pairs ahead are fetched as Fetch
+/// says (fetch_ahead.hpp).
+template <class Arch, template <class> class Method, pair_fetch Fetch, class First, class Second>
 std::size_t pose_batch(const float* a, const float* b, First first, Second second,
                        std::size_t count, std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
@@ -51,11 +51,12 @@ std::size_t pose_batch(const float* a, const float* b, First first, Second secon
     };
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
-        if constexpr (Prefetch) {
-            if (i + width + prefetch_distance <= count) {
-                for (std::size_t k = i + prefetch_distance; k < i + prefetch_distance + width; ++k) {
-                    __builtin_prefetch(a + pose_record_floats * first(k));
-                    __builtin_prefetch(b + pose_record_floats * second(k));
+        if constexpr (Fetch != pair_fetch::none) {
+            constexpr std::size_t ahead = pairs_ahead<Fetch>;
+            if (i + width + ahead <= count) {
+                for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
+                    fetch_record<Fetch>(a + pose_record_floats * first(k));
+                    fetch_record<Fetch>(b + pose_record_floats * second(k));
                 }
             }
         }
@@ -69,11 +70,11 @@ std::size_t pose_batch(const float* a, const float* b, First first, Second secon
 }
 
 /// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
-/// with Prefetch, the records of pairs ahead are fetched early.
-template <class Arch, template <class> class Method, bool Prefetch = true>
+/// the records of pairs ahead are fetched as Fetch says.
+template <class Arch, template <class> class Method, pair_fetch Fetch>
 std::size_t pose_indexed_batch(const float* records, const pair_index* pairs, std::size_t count,
                                std::uint8_t* verdicts) {
-    return pose_batch<Arch, Method, Prefetch>(
+    return pose_batch<Arch, Method, Fetch>(
         records, records, [pairs](std::size_t i) { return pairs[i].a; }, [pairs](std::size_t i) { return pairs[i].b; },
         count, verdicts);
 }
@@ -82,7 +83,7 @@ std::size_t pose_indexed_batch(const float* records, const pair_index* pairs, st
 template <class Arch, template <class> class Method>
 std::size_t pose_stream_batch(const float* a, const float* b, std::size_t count, std::uint8_t* verdicts) {
     auto same = [](std::size_t i) { return i; };
-    return pose_batch<Arch, Method, false>(a, b, same, same, count, verdicts);
+    return pose_batch<Arch, Method, pair_fetch::none>(a, b, same, same, count, verdicts);
 }
 
 /// The poses [first, first + width) of a view, one vector per field; the caller guarantees they exist.

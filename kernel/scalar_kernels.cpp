@@ -139,9 +139,10 @@ constexpr method_kernels kernels_of_row() {
         return method_kernels{stream_pairs<reference, Row::has_slow_path>,
                               indexed_pairs<reference, Row::has_slow_path>,
                               indexed_records<reference, Row::has_slow_path>,
+                              indexed_records<reference, Row::has_slow_path>,
                               indexed_records<reference, Row::has_slow_path>};
     } else {
-        return method_kernels{nullptr, nullptr, nullptr, nullptr};
+        return method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
     }
 }
 
@@ -152,9 +153,10 @@ constexpr pose_method_kernels pose_kernels_of_row() {
         return pose_method_kernels{pose_stream_pairs<reference, Row::has_slow_path>,
                                    pose_indexed_pairs<reference, Row::has_slow_path>,
                                    pose_stream_soa_pairs<reference, Row::has_slow_path>,
+                                   pose_indexed_pairs<reference, Row::has_slow_path>,
                                    pose_indexed_pairs<reference, Row::has_slow_path>};
     } else {
-        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr};
+        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
     }
 }
 

@@ -1,8 +1,10 @@
 // The kernels for pair lists whose records lie near each other (the scene
 // queries' indexed_records_near and indexed_near, which fetch no records
-// ahead) must give, on every backend and for every method on each store,
-// the scalar path's verdicts bit for bit and the same count of pairs left to
-// the slow path as the same backend's prefetching entry. Pairs from a scene
+// ahead) and for stores read from DRAM (indexed_records_far and indexed_far,
+// which fetch 128 pairs ahead into L2) must give, on every backend and for
+// every method on each store, the scalar path's verdicts bit for bit and the
+// same count of pairs left to the slow path as the same backend's entry that
+// fetches 16 pairs ahead into L1. Pairs from a scene
 // of touching and overlapping boxes, in sweep-like runs and at random, of
 // every length up to a few vectors past a whole block.
 #include "backend_cases.hpp"
@@ -78,24 +80,28 @@ TEST_P(near_kernels, equal_the_scalar_verdicts_and_the_prefetching_entry) {
             }
             for (const std::size_t count : lengths) {
                 ASSERT_LE(count, s.pairs.size());
-                std::vector<std::uint8_t> want(count), near(count), ahead(count);
-                std::size_t near_slow = 0, ahead_slow = 0;
+                std::vector<std::uint8_t> want(count), near(count), ahead(count), far(count);
+                std::size_t near_slow = 0, ahead_slow = 0, far_slow = 0;
                 if (kind == store_kind::corners) {
                     const auto& mine = backend.table->of(m);
                     scalar.of(m).indexed_records(s.corners.data(), s.pairs.data(), count, want.data());
                     near_slow = mine.indexed_records_near(s.corners.data(), s.pairs.data(), count, near.data());
                     ahead_slow = mine.indexed_records(s.corners.data(), s.pairs.data(), count, ahead.data());
+                    far_slow = mine.indexed_records_far(s.corners.data(), s.pairs.data(), count, far.data());
                 } else {
                     const auto& mine = backend.table->on_poses(m);
                     scalar.on_poses(m).indexed(s.poses.data(), s.pairs.data(), count, want.data());
                     near_slow = mine.indexed_near(s.poses.data(), s.pairs.data(), count, near.data());
                     ahead_slow = mine.indexed(s.poses.data(), s.pairs.data(), count, ahead.data());
+                    far_slow = mine.indexed_far(s.poses.data(), s.pairs.data(), count, far.data());
                 }
                 const std::string what = std::string(obbsat::method_name(m)) + " on " + obbsat::store_name(kind) +
                                          ", " + std::to_string(count) + " pairs";
                 EXPECT_EQ(near, want) << what;
                 EXPECT_EQ(ahead, want) << what;
+                EXPECT_EQ(far, want) << what;
                 EXPECT_EQ(near_slow, ahead_slow) << what;
+                EXPECT_EQ(far_slow, ahead_slow) << what;
                 ++checked;
             }
         }

@@ -138,6 +138,13 @@ const detail::pose_method_kernels& pose_kernels_of(backend ran, const collide_op
     return detail::kernels_for(ran).on_poses(options.test);
 }
 
+/// The entry for pair lists over `count` pose records, chosen as records_kernel_of chooses.
+detail::pose_indexed_fn pose_records_kernel_of(backend ran, const collide_options& options, std::size_t count) {
+    const detail::pose_method_kernels& kernels = pose_kernels_of(ran, options);
+    return count * sizeof(float) * pose_records::record_floats > detail::store_bytes_from_dram ? kernels.indexed_far
+                                                                                               : kernels.indexed;
+}
+
 /// True iff no coordinate of rects[begin, end) is a NaN or an infinity.
 bool all_finite(const rect* rects, std::size_t begin, std::size_t end) {
     constexpr std::size_t floats_per_rect = sizeof(rect) / sizeof(float);
@@ -289,10 +296,7 @@ std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
 backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = resolve_backend(options.use);
-    const detail::pose_method_kernels& kernels = pose_kernels_of(ran, options);
-    const detail::pose_indexed_fn kernel =
-        poses.size() * sizeof(float) * pose_records::record_floats > detail::store_bytes_from_dram ? kernels.indexed_far
-                                                                                                   : kernels.indexed;
+    const detail::pose_indexed_fn kernel = pose_records_kernel_of(ran, options, poses.size());
     check_indices(ran, poses.size(), pairs, count, options);
     const float* records = poses.data();
     split_over_threads(count, options, [&](std::size_t begin, std::size_t end) {

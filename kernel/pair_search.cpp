@@ -152,7 +152,6 @@ void copy_row(const query_input& input, std::size_t id, float* out) {
     }
 }
 
-/// How many of `count` verdicts (each 0 or 1) say colliding.
 /// [begin, end) of part `part` of `parts` over n items, every boundary but n
 /// on a multiple of 64: the parts then write disjoint words of a bit set.
 std::pair<std::size_t, std::size_t> word_share_of(std::size_t n, std::size_t part, std::size_t parts) {
@@ -180,6 +179,7 @@ std::uint64_t verdict_word(const std::uint8_t* v, std::size_t n) {
     return word;
 }
 
+/// How many of `count` verdicts (each 0 or 1) say colliding.
 std::size_t count_colliding(const std::uint8_t* verdicts, std::size_t count) {
     std::size_t sum = 0;
     for (std::size_t i = 0; i < count; ++i) {
@@ -1051,8 +1051,10 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         for (std::size_t first = begin; first < end; first += candidate_block) {
             const std::size_t last = std::min(end, first + candidate_block);
             const auto keep_bits = [&] {
-                for (std::size_t w = 0; w * 64 < last - first; ++w) {
-                    verdict_words[first / 64 + w] = verdict_word(verdicts + 64 * w, std::min<std::size_t>(64, last - first - 64 * w));
+                const std::size_t n = last - first;
+                for (std::size_t w = 0; 64 * w < n; ++w) {
+                    const std::size_t in_word = std::min<std::size_t>(64, n - 64 * w);
+                    verdict_words[first / 64 + w] = verdict_word(verdicts + 64 * w, in_word);
                 }
             };
             if (unfiltered) {

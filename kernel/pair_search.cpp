@@ -1,6 +1,7 @@
 #include "pair_search.hpp"
 
 #include "backend_registry.hpp"
+#include "bit_width.hpp"
 #include "fetch_ahead.hpp"
 #include "finite_check.hpp"
 #include "method_check.hpp"
@@ -150,6 +151,28 @@ void copy_row(const query_input& input, std::size_t id, float* out) {
     } else {
         widen_pose_row(out, row);
     }
+}
+
+/// Writes `count` 32-byte records from `from` to `to` (both 16-byte aligned)
+/// with non-temporal stores where the CPU has them: lines written whole are
+/// not read in first. finish_streams orders them before what follows.
+template <class Record>
+void stream_records(const Record* from, std::size_t count, Record* to) {
+    static_assert(sizeof(Record) == 32, "two 16-byte stores a record");
+#if defined(__SSE2__)
+    for (std::size_t k = 0; k < count; ++k) {
+        _mm_stream_ps(to[k].v, _mm_load_ps(from[k].v));
+        _mm_stream_ps(to[k].v + 4, _mm_load_ps(from[k].v + 4));
+    }
+#else
+    std::memcpy(to, from, count * sizeof(Record));
+#endif
+}
+
+void finish_streams() {
+#if defined(__SSE2__)
+    _mm_sfence();
+#endif
 }
 
 /// [begin, end) of part `part` of `parts` over n items, every boundary but n
@@ -942,6 +965,7 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
     const bool check_a = !input.a_checked;
     const bool check_b = !input.b_checked;
     std::vector<unsigned char> fits(parts, 1);
+    const bool stream = n_ * sizeof(record) > store_bytes_from_dram;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
         constexpr std::size_t ahead = random_rows_ahead;
@@ -951,8 +975,13 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
         const query_input in = input;
         const std::uint32_t* const order = order_.data();
         record* const records = records_.data();
+        // Records read from DRAM by the test are written past the cache: a
+        // run is staged here, its bounds computed from the stage, and then
+        // streamed out, so no old record is read in before it is overwritten.
+        alignas(64) record stage[bounds_run::size];
         for (std::size_t run_begin = begin; run_begin < end && ok; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+            record* const into = stream ? stage : records + run_begin;
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
                     fetch_into_l2(record_at(in, order[k + ahead]));
@@ -961,9 +990,12 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                 if (id < in.a_count ? check_a : check_b) {
                     ok &= valid_row(in.kind, record_at(in, id));
                 }
-                copy_row(in, id, records[k].v);
+                copy_row(in, id, into[k - run_begin].v);
             }
-            bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+            bounds(kind_, into[0].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+            if (stream) {
+                stream_records(stage, run_end - run_begin, records + run_begin);
+            }
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 const std::size_t r = k - run_begin;
                 const unsigned inside = static_cast<unsigned>(b.lo_x[r] >= in_lo_x_[k]) &
@@ -977,6 +1009,9 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                     now_[k] = signed_bounds_of(b, k - run_begin);
                 }
             }
+        }
+        if (stream) {
+            finish_streams();
         }
         fits[share] = ok ? 1 : 0;
     });
@@ -1014,7 +1049,29 @@ void pair_search::keep_candidates(std::size_t parts) {
         parts_[i].tagged.clear();
     }
     stats_.kept_candidates = kept_.size();
+    answer_parts_ = 0;
     stats_.output_seconds += seconds_since(start);
+}
+
+void pair_search::mark_answer_shares(std::size_t parts) {
+    if (answer_parts_ == parts) {
+        return;
+    }
+    const std::size_t words = (kept_.size() + 63) / 64;
+    answer_marks_.resize(words * (parts - 1));
+    run_parts(parts, [&](std::size_t share) {
+        if (share == 0) {
+            return;
+        }
+        std::uint64_t* const marks = answer_marks_.data() + (share - 1) * words;
+        std::fill(marks, marks + words, std::uint64_t{0});
+        const auto [begin, end] = share_of(kept_by_caller_.size(), share, parts);
+        const tagged_pair* const kept = kept_by_caller_.data();
+        for (std::size_t j = begin; j < end; ++j) {
+            marks[kept[j].tag / 64] |= std::uint64_t{1} << (kept[j].tag % 64);
+        }
+    });
+    answer_parts_ = parts;
 }
 
 void pair_search::test_kept(std::size_t parts, bool unfiltered) {
@@ -1026,9 +1083,12 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         parts_.resize(parts);
     }
     kept_verdicts_.resize((kept_.size() + 63) / 64);
+    mark_answer_shares(parts);
+    const std::size_t words = kept_verdicts_.size();
     const signed_bounds* const now = now_.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
+        p.colliding_in_share.assign(parts, 0);
         if (p.candidates.size() < candidate_block) {
             p.candidates.resize(candidate_block);
             p.verdicts.resize(candidate_block);
@@ -1043,6 +1103,8 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         // own pointers would be reloaded on every candidate.
         const pair_index* const kept = kept_.data();
         std::uint64_t* const verdict_words = kept_verdicts_.data();
+        const std::uint64_t* const marks = answer_marks_.data();
+        std::size_t* const in_share = p.colliding_in_share.data();
         pair_index* const candidates = p.candidates.data();
         std::uint32_t* const slots = p.slots.data();
         // One block's verdicts, in the kept order, before they become bits.
@@ -1054,7 +1116,12 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
                 const std::size_t n = last - first;
                 for (std::size_t w = 0; 64 * w < n; ++w) {
                     const std::size_t in_word = std::min<std::size_t>(64, n - 64 * w);
-                    verdict_words[first / 64 + w] = verdict_word(verdicts + 64 * w, in_word);
+                    const std::size_t word = first / 64 + w;
+                    const std::uint64_t bits = verdict_word(verdicts + 64 * w, in_word);
+                    verdict_words[word] = bits;
+                    for (std::size_t s = 1; s < parts; ++s) {
+                        in_share[s] += bits_set(bits & marks[(s - 1) * words + word]);
+                    }
                 }
             };
             if (unfiltered) {
@@ -1093,55 +1160,68 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
 
 void pair_search::answer_from_kept(std::size_t parts) {
     // The kept pairs are sorted in the caller's indices: the answer is the
-    // ones the method called colliding, read in that order. The first share
-    // writes into the answer, the others into their own buffers, each in room
-    // for as many pairs as can collide there (and the one write past the
-    // last, below); the others' pairs are then copied in after the first's.
-    // Room for every kept pair in the answer itself would be zeroed on every
-    // call where the answer grows back to it.
+    // ones the method called colliding, read in that order. The test counted
+    // the colliding pairs of each share (mark_answer_shares), so each share
+    // writes its pairs where they belong in the answer and stops at its last:
+    // no write past its place, no copy.
     const auto start = clock_type::now();
+    std::vector<std::size_t> offsets(parts + 1, 0);
     std::size_t colliding = 0;
     for (std::size_t i = 0; i < parts; ++i) {
         colliding += parts_[i].colliding;
+        for (std::size_t share = 1; share < parts; ++share) {
+            offsets[share + 1] += parts_[i].colliding_in_share[share];
+        }
     }
-    const std::size_t kept_count = kept_by_caller_.size();
-    const auto room = [&](std::size_t share) {
-        const auto [begin, end] = share_of(kept_count, share, parts);
-        return std::min(colliding, end - begin) + 1;
-    };
-    pairs_.resize(room(0));
+    std::size_t past_first = 0;
     for (std::size_t share = 1; share < parts; ++share) {
-        parts_[share].answer.resize(room(share));
+        past_first += offsets[share + 1];
     }
+    offsets[1] = colliding - past_first;
+    for (std::size_t share = 1; share < parts; ++share) {
+        offsets[share + 1] += offsets[share];
+    }
+    pairs_.resize(colliding);
+    std::vector<std::size_t> found_in(parts, 0);
+    const std::size_t kept_count = kept_by_caller_.size();
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(kept_count, share, parts);
-        pair_index* const out = share == 0 ? pairs_.data() : parts_[share].answer.data();
+        pair_index* const out = pairs_.data() + offsets[share];
+        const std::size_t wanted = offsets[share + 1] - offsets[share];
         const std::uint64_t* const verdict_words = kept_verdicts_.data();
         const tagged_pair* const kept = kept_by_caller_.data();
         std::size_t found = 0;
         constexpr std::size_t ahead = 64;
-        for (std::size_t j = begin; j < end; ++j) {
+        // Each kept pair is written where the next colliding one goes, and
+        // counted if it collides: no branch on the verdicts. A pair is
+        // written at most `step` places past the last counted one, so whole
+        // steps run unchecked while that stays inside the share.
+        const auto take = [&](std::size_t j) __attribute__((always_inline)) {
             if (j + ahead < end) {
                 __builtin_prefetch(verdict_words + kept[j + ahead].tag / 64);
             }
             out[found] = pair_index{kept[j].a, kept[j].b};
             const std::uint32_t tag = kept[j].tag;
             found += static_cast<std::size_t>((verdict_words[tag / 64] >> (tag % 64)) & 1u);
-        }
-        parts_[share].share_size = found;
-    });
-    std::vector<std::size_t> offsets(parts + 1, 0);
-    for (std::size_t share = 0; share < parts; ++share) {
-        offsets[share + 1] = offsets[share] + parts_[share].share_size;
-    }
-    pairs_.resize(offsets[parts]);
-    if (parts > 1) {
-        run_parts(parts, [&](std::size_t share) {
-            if (share > 0) {
-                std::memcpy(pairs_.data() + offsets[share], parts_[share].answer.data(),
-                            parts_[share].share_size * sizeof(pair_index));
+        };
+        constexpr std::size_t step = 64;
+        std::size_t j = begin;
+        for (; end - j >= step && wanted - found >= step; j += step) {
+            for (std::size_t k = j; k < j + step; ++k) {
+                take(k);
             }
-        });
+        }
+        for (; j < end && found < wanted; ++j) {
+            take(j);
+        }
+        found_in[share] = found;
+    });
+    for (std::size_t share = 0; share < parts; ++share) {
+        if (found_in[share] != offsets[share + 1] - offsets[share]) {
+            throw std::logic_error("obbsat: a share of the answer from kept candidates found " +
+                                   std::to_string(found_in[share]) + " colliding pairs where the test counted " +
+                                   std::to_string(offsets[share + 1] - offsets[share]));
+        }
     }
     stats_.pairs = pairs_.size();
     stats_.output_seconds += seconds_since(start);

@@ -113,10 +113,10 @@ private:
         bool over_budget = false;
         scratch_vector<tagged_pair> tagged;  // written whole before it is read: never zeroed
         std::vector<std::uint32_t> slots;
-        std::size_t share_size = 0;  ///< pairs of this share of the answer from kept candidates
-        scratch_vector<pair_index> answer;  ///< those pairs, for every share but the first
         std::size_t tested = 0;
         std::size_t colliding = 0;  ///< kept candidates the method called colliding
+        /// Of those, how many fall in each share of the answer past the first.
+        std::vector<std::size_t> colliding_in_share;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;
     };
@@ -157,6 +157,8 @@ private:
     /// bounds; with `keep_bounds`, also stores the bounds in now_ for test_kept's filter.
     bool refresh_records(const query_input& input, std::size_t parts, bool keep_bounds);
     void keep_candidates(std::size_t parts);
+    /// Marks, for an answer from kept candidates in `parts` shares, the share of each kept candidate.
+    void mark_answer_shares(std::size_t parts);
     void test_kept(std::size_t parts, bool unfiltered);
     void answer_from_kept(std::size_t parts);
     /// The answer of a query that keeps nothing, over bounds not widened.
@@ -229,6 +231,13 @@ private:
     std::vector<pair_index> kept_;             ///< in the query's order, as the kernel takes them
     std::vector<tagged_pair> kept_by_caller_;  ///< (a, b) in the caller's indices, sorted; tag: index into kept_
     std::vector<std::uint64_t> kept_verdicts_;  ///< bit i % 64 of word i / 64: the verdict on kept_[i]
+    /// For share s > 0 of an answer in answer_parts_ shares (share_of over
+    /// kept_by_caller_), words [(s - 1) W, s W) with W the words of
+    /// kept_verdicts_: bit i set iff kept_[i] is in share s. The test counts
+    /// each share's colliding pairs with them, so every share of the answer
+    /// is written where it belongs, with no copy.
+    std::vector<std::uint64_t> answer_marks_;
+    std::size_t answer_parts_ = 0;  ///< 0 while answer_marks_ marks nothing
     std::vector<pair_sort_scratch<tagged_pair>> tag_scratch_;
 };
 

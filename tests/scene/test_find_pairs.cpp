@@ -586,8 +586,8 @@ TEST(pair_finder, kept_candidates_on_two_threads_and_across_stores) {
     EXPECT_GE(from_kept, 8u);
 }
 
-// More threads than two: the answer's shares between the first and the
-// last are written apart and copied into place.
+// More threads than two: every share of the answer, the middle ones too, is
+// written in place from the counts the test made of it.
 TEST(pair_finder, kept_candidates_on_three_and_four_threads) {
     const auto start = seeded_scene(70000, obbsat::scene_sizes::uniform, 66, 0, 2.0);
     for (const unsigned threads : {3u, 4u}) {
@@ -600,6 +600,24 @@ TEST(pair_finder, kept_candidates_on_three_and_four_threads) {
             from_kept += finder.stats().reused_candidates ? 1u : 0u;
         }
         EXPECT_GE(from_kept, 3u) << threads << " threads";
+    }
+}
+
+// A scene whose records outgrow the caches (more than 12 MiB of 32-byte
+// records, store_bytes_from_dram): kept frames write the records past the
+// cache, and their answers on one and two threads are still a fresh query's.
+TEST(pair_finder, kept_candidates_of_a_scene_larger_than_the_caches) {
+    const auto start = seeded_scene(400000, obbsat::scene_sizes::uniform, 69, 0, 2.0);
+    for (const unsigned threads : {1u, 2u}) {
+        obbsat::pair_finder finder(options_for(method::exact, obbsat::backend::automatic, threads));
+        std::size_t from_kept = 0;
+        for (int f = 0; f < 4; ++f) {
+            const auto frame = drifted(start, f, 0.01f, 15);
+            EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact)))
+                << threads << " threads, frame " << f;
+            from_kept += finder.stats().reused_candidates ? 1u : 0u;
+        }
+        EXPECT_GE(from_kept, 2u) << threads << " threads";
     }
 }
 

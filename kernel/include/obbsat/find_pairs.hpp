@@ -140,7 +140,8 @@ class pair_search;
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding
-/// pairs per rectangle) and 16 per rectangle.
+/// pairs per rectangle), one bit more per kept pair for each thread past the
+/// first, and 16 per rectangle.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);

@@ -99,43 +99,70 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
     const unsigned a_bits = bits_for(a_count > 0 ? a_count - 1 : 0);
     const unsigned high_shift = a_bits > bucket_bits ? a_bits - bucket_bits : 0;
     const std::size_t buckets = (a_count > 0 ? (a_count - 1) >> high_shift : 0) + 1;
-    // Pass 1: each source scatters its pairs by the high bits of a, after
-    // the same bucket's pairs of the sources before it.
-    const std::size_t sources_count = sources.size();
-    std::vector<std::vector<std::size_t>> next(sources_count, std::vector<std::size_t>(buckets, 0));
-    run(sources_count, [&](std::size_t s) {
-        std::vector<std::size_t>& count = next[s];
-        for (const pair_span<Pair>& span : sources[s]) {
-            for (std::size_t i = 0; i < span.size; ++i) {
-                ++count[span.data[i].a >> high_shift];
+    // Pass 1: the pairs of all sources, taken one after the other, split
+    // into equal shares, one a thread (sources may differ in size: a mixed
+    // scene's strips do), each share scattered by the high bits of a after
+    // the same bucket's pairs of the shares before it.
+    std::vector<pair_span<Pair>> spans;
+    for (const pair_source<Pair>& source : sources) {
+        for (const pair_span<Pair>& span : source) {
+            if (span.size != 0) {
+                spans.push_back(span);
             }
         }
+    }
+    const std::size_t shares = std::max<std::size_t>(1, std::min(sources.size(), n / 4096));
+    // Calls f(pair) for pairs [n * share / shares, n * (share + 1) / shares) of the spans in turn.
+    const auto for_share = [&](std::size_t share, const auto& f) {
+        const std::size_t first = n * share / shares;
+        const std::size_t last = n * (share + 1) / shares;
+        std::size_t at = 0;  // index of the current span's first pair
+        for (const pair_span<Pair>& span : spans) {
+            const std::size_t from = std::max(first, at);
+            const std::size_t to = std::min(last, at + span.size);
+            for (std::size_t i = from; i < to; ++i) {
+                f(span.data[i - at]);
+            }
+            at += span.size;
+            if (at >= last) {
+                break;
+            }
+        }
+    };
+    std::vector<std::vector<std::size_t>> next(shares, std::vector<std::size_t>(buckets, 0));
+    run(shares, [&](std::size_t share) {
+        std::vector<std::size_t>& count = next[share];
+        for_share(share, [&](const Pair& p) { ++count[p.a >> high_shift]; });
     });
     std::vector<std::size_t> begin(buckets + 1, 0);
     std::size_t sum = 0;
     for (std::size_t k = 0; k < buckets; ++k) {
         begin[k] = sum;
-        for (std::size_t s = 0; s < sources_count; ++s) {
-            const std::size_t here = next[s][k];
-            next[s][k] = sum;
+        for (std::size_t share = 0; share < shares; ++share) {
+            const std::size_t here = next[share][k];
+            next[share][k] = sum;
             sum += here;
         }
     }
     begin[buckets] = sum;
-    run(sources_count, [&](std::size_t s) {
-        std::vector<std::size_t>& slot = next[s];
+    run(shares, [&](std::size_t share) {
+        std::vector<std::size_t>& slot = next[share];
         Pair* const to = out.data();
-        for (const pair_span<Pair>& span : sources[s]) {
-            for (std::size_t i = 0; i < span.size; ++i) {
-                const Pair p = span.data[i];
-                to[slot[p.a >> high_shift]++] = p;
-            }
-        }
+        for_share(share, [&](const Pair& p) { to[slot[p.a >> high_shift]++] = p; });
     });
-    // Pass 2: each bucket on its own, the buckets split between the threads.
+    // Pass 2: each bucket on its own, the buckets split between the threads
+    // by the pairs they hold: a is the smaller index of a pair, so low
+    // buckets hold more (the lower half of the indices about three quarters).
     const std::size_t parts = std::max<std::size_t>(1, std::min(scratch.size(), n / 65536));
+    std::vector<std::size_t> first_bucket(parts + 1, buckets);
+    for (std::size_t part = 0, k = 0; part < parts; ++part) {
+        while (k < buckets && begin[k] < n * part / parts) {
+            ++k;
+        }
+        first_bucket[part] = k;
+    }
     run(parts, [&](std::size_t part) {
-        for (std::size_t k = buckets * part / parts; k < buckets * (part + 1) / parts; ++k) {
+        for (std::size_t k = first_bucket[part]; k < first_bucket[part + 1]; ++k) {
             sort_bucket(out.data() + begin[k], begin[k + 1] - begin[k], high_shift, scratch[part].spare,
                         scratch[part].counts);
         }

@@ -119,18 +119,24 @@ TEST(bucket_starts, equals_the_prefix_counts_of_the_buckets_over_any_split_into_
 
 /// Pairs over a_count first indices, split into `sources` lists: runs of one
 /// a from empty to long (up to 3 · 16 + 40 pairs), b drawn from few values so
-/// that equal b within a run are common; tags number the pairs.
+/// that equal b within a run are common; tags number the pairs. Three or more
+/// sources are uneven, as a scene's are: the first lists hold most pairs, and
+/// the lower quarter of a holds runs three times as long.
 std::vector<std::vector<obbsat::detail::tagged_pair>> random_pairs(std::size_t a_count, std::size_t sources,
                                                                    std::uint64_t seed) {
     obbsat::seeded_random random(seed);
     std::vector<std::vector<obbsat::detail::tagged_pair>> out(sources);
+    const bool uneven = sources >= 3;
     std::uint32_t tag = 0;
     for (std::uint32_t a = 0; a < a_count; ++a) {
         const std::uint64_t draw = random.next();
-        const std::size_t run = (draw % 7 == 0) ? 17 + draw % 40 : draw % 17;
+        const std::size_t length = (draw % 7 == 0) ? 17 + draw % 40 : draw % 17;
+        const std::size_t run = uneven && a < a_count / 4 ? 3 * length : length;
         for (std::size_t k = 0; k < run; ++k) {
             const std::uint32_t b = static_cast<std::uint32_t>(random.next() % (run + 3)) * 1000u;
-            out[random.next() % sources].push_back({a, b, tag++});
+            const std::size_t first = random.next() % sources;
+            const std::size_t second = random.next() % sources;
+            out[uneven ? std::min(first, second) : first].push_back({a, b, tag++});
         }
     }
     for (auto& source : out) {  // sweep order: any order of a
@@ -143,7 +149,7 @@ std::vector<std::vector<obbsat::detail::tagged_pair>> random_pairs(std::size_t a
 
 TEST(sort_pairs, equals_std_sort_by_a_then_b_with_and_without_tags) {
     for (const std::size_t a_count : {std::size_t{1}, std::size_t{20}, std::size_t{3000}, std::size_t{300000}}) {
-        for (const std::size_t sources : {std::size_t{1}, std::size_t{2}}) {
+        for (const std::size_t sources : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
             const auto input = random_pairs(a_count, sources, a_count + sources);
             // Each source in spans of up to 1000 pairs, as a thread hands them over.
             std::vector<obbsat::detail::pair_source<obbsat::detail::tagged_pair>> lists;

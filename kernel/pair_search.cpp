@@ -44,10 +44,6 @@ constexpr double strip_factor = 2.0;
 constexpr std::size_t candidate_block = 2048;
 static_assert(candidate_block <= pair_blocks::block_pairs, "a block of candidates fits in a block of found pairs");
 
-/// Runs of strips per thread in a sweep on several threads, taken as they
-/// come: enough that the last run to finish is a small share of the sweep.
-constexpr std::size_t sweep_runs_per_thread = 32;
-
 /// A query that widens its bounds keeps at most this many times the
 /// candidates of the last query, plus one per rectangle; a scene whose
 /// widened bounds would give more is answered as a plain query.
@@ -640,9 +636,9 @@ void pair_search::flush_candidates(part& p) const {
         candidates[i].b = second ^ flip;
     }
     if (keep_) {
-        // Past the budget of all the parts together nothing more is kept:
-        // the call then answers as a plain query (collect).
-        if (p.captured_total->fetch_add(count) + count <= p.capture_budget) {
+        // Past its budget a part keeps nothing more: the call then answers
+        // as a plain query (collect).
+        if (p.captured.size() + count <= p.capture_budget) {
             p.captured.insert(p.captured.end(), candidates, candidates + count);
         } else {
             p.over_budget = true;
@@ -741,31 +737,21 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
 }
 
 void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
-    // The strips cut into runs of about the same number of entries, many
-    // more runs than threads, each thread taking the next run left: the
-    // work of an entry varies (a large box meets many), and runs taken as
-    // they come keep both threads busy to the end where fixed halves did not.
+    // Strips split so that each part has about the same number of entries.
     const std::uint32_t strips = grid_.strips;
     const std::size_t entries = n_ + stats_.visits;
-    const std::size_t runs = parts == 1 ? 1 : parts * sweep_runs_per_thread;
-    std::vector<std::uint32_t> run_begin(runs + 1, strips);
-    std::uint32_t s = 0;
-    for (std::size_t r = 0; r < runs; ++r) {
-        run_begin[r] = s;
-        const std::size_t target = entries * (r + 1) / runs;
-        while (s < strips && (r + 1 == runs || own_begin_[s] + visit_begin_[s] < target)) {
-            ++s;
-        }
-    }
-    std::atomic<std::size_t> next_run{0};
-    std::atomic<std::size_t> captured{0};
-    const std::size_t capture_budget = margin_ > 0.0f ? kept_budget_factor * last_candidates_ + n_
-                                                      : std::numeric_limits<std::size_t>::max();
     if (parts_.size() < parts) {
         parts_.resize(parts);
     }
+    std::uint32_t s = 0;
     for (std::size_t i = 0; i < parts; ++i) {
         part& p = parts_[i];
+        p.first_strip = s;
+        const std::size_t target = entries * (i + 1) / parts;
+        while (s < strips && (i + 1 == parts || own_begin_[s] + visit_begin_[s] < target)) {
+            ++s;
+        }
+        p.end_strip = s;
         if (p.candidates.size() < candidate_block) {
             p.candidates.resize(candidate_block);
             p.verdicts.resize(candidate_block);
@@ -774,8 +760,9 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         p.found.clear();
         p.captured.clear();
         p.over_budget = false;
-        p.captured_total = &captured;
-        p.capture_budget = capture_budget;
+        p.capture_budget = margin_ > 0.0f
+                               ? (kept_budget_factor * last_candidates_ + n_) / parts + candidate_block
+                               : std::numeric_limits<std::size_t>::max();
         p.tested = 0;
         p.slow_path = 0;
         p.kernel_seconds = 0;
@@ -797,11 +784,9 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
                     p.found.clear();
                 }
             };
-            for (std::size_t r = next_run.fetch_add(1); r < runs && !failed.load(); r = next_run.fetch_add(1)) {
-                for (std::uint32_t strip = run_begin[r]; strip < run_begin[r + 1]; ++strip) {
-                    sweep_strip(strip, p);
-                    hand_over(false);
-                }
+            for (std::uint32_t strip = p.first_strip; strip < p.end_strip && !failed.load(); ++strip) {
+                sweep_strip(strip, p);
+                hand_over(false);
             }
             flush_candidates(p);
             hand_over(true);

@@ -48,7 +48,6 @@
 #include <obbsat/ref/bounds.hpp>
 
 #include <cstddef>
-#include <atomic>
 #include <cstdint>
 #include <exception>
 #include <functional>
@@ -96,6 +95,8 @@ private:
     };
     /// One thread's share of the sweep and its working memory.
     struct part {
+        std::uint32_t first_strip = 0;
+        std::uint32_t end_strip = 0;
         // One strip's entries, merged by quantized lo_x (see strip_view.hpp).
         std::vector<std::int32_t> id;
         std::vector<float> q_lo, q_hi, starts, store, lo_x, lo_y, hi_x, hi_y;
@@ -108,8 +109,7 @@ private:
         // Candidates kept instead of tested (a query that keeps them), and
         // the kept candidates' positions of a block under test.
         std::vector<pair_index> captured;
-        std::atomic<std::size_t>* captured_total = nullptr;  ///< every part's, this sweep
-        std::size_t capture_budget = 0;  ///< of every part together
+        std::size_t capture_budget = 0;
         bool over_budget = false;
         scratch_vector<tagged_pair> tagged;  // written whole before it is read: never zeroed
         std::vector<std::uint32_t> slots;

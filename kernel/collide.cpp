@@ -125,11 +125,23 @@ const detail::method_kernels& kernels_of(backend ran, const collide_options& opt
     return detail::kernels_for(ran).of(options.test);
 }
 
-/// The entry for pair lists over `count` packed corner records: the one that
-/// fetches ahead into L2 when the records are read from DRAM.
+/// Of the entries `near` (fetching nothing ahead), `fetching` (16 pairs ahead
+/// into L1) and `far` (128 ahead into L2), the one for a pair list over a
+/// store of `bytes` of records (fetch_ahead.hpp).
+template <class Fn>
+Fn entry_for_store(std::size_t bytes, Fn near, Fn fetching, Fn far) {
+    if (bytes <= detail::store_bytes_in_l2) {
+        return near;
+    }
+    return bytes > detail::store_bytes_from_dram ? far : fetching;
+}
+
+/// The entry for pair lists over `count` packed corner records, fetching
+/// their records ahead as the store's size asks.
 detail::indexed_records_fn records_kernel_of(backend ran, const collide_options& options, std::size_t count) {
     const detail::method_kernels& kernels = kernels_of(ran, options);
-    return count * sizeof(rect) > detail::store_bytes_from_dram ? kernels.indexed_records_far : kernels.indexed_records;
+    return entry_for_store(count * sizeof(rect), kernels.indexed_records_near, kernels.indexed_records,
+                           kernels.indexed_records_far);
 }
 
 /// The same on poses.
@@ -141,8 +153,8 @@ const detail::pose_method_kernels& pose_kernels_of(backend ran, const collide_op
 /// The entry for pair lists over `count` pose records, chosen as records_kernel_of chooses.
 detail::pose_indexed_fn pose_records_kernel_of(backend ran, const collide_options& options, std::size_t count) {
     const detail::pose_method_kernels& kernels = pose_kernels_of(ran, options);
-    return count * sizeof(float) * pose_records::record_floats > detail::store_bytes_from_dram ? kernels.indexed_far
-                                                                                               : kernels.indexed;
+    return entry_for_store(count * sizeof(float) * pose_records::record_floats, kernels.indexed_near,
+                           kernels.indexed, kernels.indexed_far);
 }
 
 /// True iff no coordinate of rects[begin, end) is a NaN or an infinity.

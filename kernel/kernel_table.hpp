@@ -71,8 +71,9 @@ struct method_kernels {
     indexed_fn indexed;
     indexed_records_fn indexed_records;
     /// indexed_records for a list whose pairs' records lie near the records of
-    /// the pairs before them (the scene queries'): the same verdicts, without
-    /// fetching records ahead, which there only costs instructions.
+    /// the pairs before them (the scene queries'), or over a store that fits
+    /// in L2 (store_bytes_in_l2): the same verdicts, without fetching records
+    /// ahead, which there only costs instructions.
     indexed_records_fn indexed_records_near;
     /// indexed_records for a store read from DRAM (more than
     /// store_bytes_from_dram): the same verdicts, the records of pairs further

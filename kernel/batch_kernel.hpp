@@ -130,6 +130,8 @@ template <class Arch, template <class> class Method, pair_fetch Fetch>
 std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
+    // A list that fetches nothing ahead reads records the caches hold.
+    constexpr bool in_cache = Fetch == pair_fetch::none;
     std::size_t settled = 0;
     auto rects_of = [&](std::size_t pair) { return std::make_pair(records[pairs[pair].a], records[pairs[pair].b]); };
     std::size_t i = 0;
@@ -145,8 +147,8 @@ std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, 
             }
         }
         const lane_verdicts v = Method<Arch>::collide(
-            record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].a; }),
-            record_transpose<Arch>::load([&](std::size_t lane) { return records + p[lane].b; }));
+            record_transpose<Arch>::template load<in_cache>([&](std::size_t lane) { return records + p[lane].a; }),
+            record_transpose<Arch>::template load<in_cache>([&](std::size_t lane) { return records + p[lane].b; }));
         settled += finish_vector<width, Method, Arch>(v, verdicts + i, width,
                                                       [&](std::size_t lane) { return rects_of(i + lane); });
     }
@@ -155,8 +157,8 @@ std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, 
         const std::size_t valid = count - i;
         auto pair_at = [&](std::size_t lane) { return pairs[i + (lane < valid ? lane : valid - 1)]; };
         const lane_verdicts v = Method<Arch>::collide(
-            record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).a; }),
-            record_transpose<Arch>::load([&](std::size_t lane) { return records + pair_at(lane).b; }));
+            record_transpose<Arch>::template load<in_cache>([&](std::size_t lane) { return records + pair_at(lane).a; }),
+            record_transpose<Arch>::template load<in_cache>([&](std::size_t lane) { return records + pair_at(lane).b; }));
         settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
                                                       [&](std::size_t lane) { return rects_of(i + lane); });
     }

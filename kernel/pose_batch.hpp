@@ -20,10 +20,10 @@
 namespace obbsat::detail {
 namespace {
 
-/// The poses of records[index(lane)] for every lane.
-template <class Arch, class Index>
+/// The poses of records[index(lane)] for every lane; InCache as in record_transpose::assemble.
+template <class Arch, bool InCache = false, class Index>
 OBBSAT_LANE_INLINE pose_lanes<Arch> load_poses(const float* records, const Index& index) {
-    return poses_of<Arch>(record_transpose<Arch>::load([&](std::size_t lane) {
+    return poses_of<Arch>(record_transpose<Arch>::template load<InCache>([&](std::size_t lane) {
         return reinterpret_cast<const rect*>(records + pose_record_floats * index(lane));
     }));
 }
@@ -35,6 +35,8 @@ template <class Arch, template <class> class Method, pair_fetch Fetch, class Fir
 std::size_t pose_batch(const float* a, const float* b, First first, Second second,
                        std::size_t count, std::uint8_t* verdicts) {
     constexpr std::size_t width = lanes<Arch>::size;
+    // A list that fetches nothing ahead reads records the caches hold.
+    constexpr bool in_cache = Fetch == pair_fetch::none;
     std::size_t settled = 0;
     auto poses_of_pair = [&](std::size_t i) { return std::make_pair(pose_record_at(a, first(i)), pose_record_at(b, second(i))); };
     // One vector of pairs, pair_of(lane) giving each lane's pair. Inlined
@@ -44,8 +46,8 @@ std::size_t pose_batch(const float* a, const float* b, First first, Second secon
     // anything), 1.9-2.0 against 1.65 ns per pair for local at 256K pairs.
     auto run = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
         const lane_verdicts v =
-            Method<Arch>::collide(load_poses<Arch>(a, [&](std::size_t lane) { return first(pair_of(lane)); }),
-                                  load_poses<Arch>(b, [&](std::size_t lane) { return second(pair_of(lane)); }));
+            Method<Arch>::collide(load_poses<Arch, in_cache>(a, [&](std::size_t lane) { return first(pair_of(lane)); }),
+                                  load_poses<Arch, in_cache>(b, [&](std::size_t lane) { return second(pair_of(lane)); }));
         settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
                                                       [&](std::size_t lane) { return poses_of_pair(i + lane); });
     };

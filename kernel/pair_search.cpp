@@ -1185,7 +1185,10 @@ void pair_search::answer_from_kept(std::size_t parts) {
     std::vector<std::size_t> found_in(parts, 0);
     const std::size_t kept_count = kept_by_caller_.size();
     run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(kept_count, share, parts);
+        // Named apart, not bound: the step below captures them.
+        const std::pair<std::size_t, std::size_t> range = share_of(kept_count, share, parts);
+        const std::size_t begin = range.first;
+        const std::size_t end = range.second;
         pair_index* const out = pairs_.data() + offsets[share];
         const std::size_t wanted = offsets[share + 1] - offsets[share];
         const std::uint64_t* const verdict_words = kept_verdicts_.data();

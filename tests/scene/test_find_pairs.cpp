@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -586,39 +587,39 @@ TEST(pair_finder, kept_candidates_on_two_threads_and_across_stores) {
     EXPECT_GE(from_kept, 8u);
 }
 
+/// Runs `frames` frames of `start` drifting (0.01 a frame, seed `drift_seed`)
+/// through one pair_finder per thread count, each frame's answer checked
+/// against a fresh query; at least `from_kept` frames must be answered from
+/// kept candidates.
+void expect_kept_frames_equal_fresh_queries(const std::vector<rect_pose>& start,
+                                            std::initializer_list<unsigned> thread_counts, int frames,
+                                            std::uint64_t drift_seed, std::size_t from_kept) {
+    for (const unsigned threads : thread_counts) {
+        obbsat::pair_finder finder(options_for(method::exact, obbsat::backend::automatic, threads));
+        std::size_t kept = 0;
+        for (int f = 0; f < frames; ++f) {
+            const auto frame = drifted(start, f, 0.01f, drift_seed);
+            EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact)))
+                << threads << " threads, frame " << f;
+            kept += finder.stats().reused_candidates ? 1u : 0u;
+        }
+        EXPECT_GE(kept, from_kept) << threads << " threads";
+    }
+}
+
 // More threads than two: every share of the answer, the middle ones too, is
 // written in place from the counts the test made of it.
 TEST(pair_finder, kept_candidates_on_three_and_four_threads) {
-    const auto start = seeded_scene(70000, obbsat::scene_sizes::uniform, 66, 0, 2.0);
-    for (const unsigned threads : {3u, 4u}) {
-        obbsat::pair_finder finder(options_for(method::exact, obbsat::backend::automatic, threads));
-        std::size_t from_kept = 0;
-        for (int f = 0; f < 5; ++f) {
-            const auto frame = drifted(start, f, 0.01f, 13);
-            EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact)))
-                << threads << " threads, frame " << f;
-            from_kept += finder.stats().reused_candidates ? 1u : 0u;
-        }
-        EXPECT_GE(from_kept, 3u) << threads << " threads";
-    }
+    expect_kept_frames_equal_fresh_queries(seeded_scene(70000, obbsat::scene_sizes::uniform, 66, 0, 2.0), {3u, 4u}, 5,
+                                           13, 3);
 }
 
 // A scene whose records outgrow the caches (more than 12 MiB of 32-byte
 // records, store_bytes_from_dram): kept frames write the records past the
 // cache, and their answers on one and two threads are still a fresh query's.
 TEST(pair_finder, kept_candidates_of_a_scene_larger_than_the_caches) {
-    const auto start = seeded_scene(400000, obbsat::scene_sizes::uniform, 69, 0, 2.0);
-    for (const unsigned threads : {1u, 2u}) {
-        obbsat::pair_finder finder(options_for(method::exact, obbsat::backend::automatic, threads));
-        std::size_t from_kept = 0;
-        for (int f = 0; f < 4; ++f) {
-            const auto frame = drifted(start, f, 0.01f, 15);
-            EXPECT_SAME_PAIRS(finder.find(frame), obbsat::find_pairs(frame, options_for(method::exact)))
-                << threads << " threads, frame " << f;
-            from_kept += finder.stats().reused_candidates ? 1u : 0u;
-        }
-        EXPECT_GE(from_kept, 2u) << threads << " threads";
-    }
+    expect_kept_frames_equal_fresh_queries(seeded_scene(400000, obbsat::scene_sizes::uniform, 69, 0, 2.0), {1u, 2u}, 4,
+                                           15, 2);
 }
 
 // The smallest boxes of a mixed scene are widened by a share of the scene's

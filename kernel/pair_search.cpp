@@ -29,6 +29,7 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -1057,7 +1058,7 @@ void pair_search::mark_answer_shares(std::size_t parts) {
     if (answer_parts_ == parts) {
         return;
     }
-    const std::size_t words = (kept_.size() + 63) / 64;
+    const std::size_t words = kept_verdicts_.size();  // test_kept sized it for kept_
     answer_marks_.resize(words * (parts - 1));
     run_parts(parts, [&](std::size_t share) {
         if (share == 0) {
@@ -1165,22 +1166,19 @@ void pair_search::answer_from_kept(std::size_t parts) {
     // writes its pairs where they belong in the answer and stops at its last:
     // no write past its place, no copy.
     const auto start = clock_type::now();
-    std::vector<std::size_t> offsets(parts + 1, 0);
+    // Colliding pairs of each share: the later ones counted by the test, the
+    // first one what is left of all.
+    std::vector<std::size_t> in_share(parts, 0);
     std::size_t colliding = 0;
     for (std::size_t i = 0; i < parts; ++i) {
         colliding += parts_[i].colliding;
         for (std::size_t share = 1; share < parts; ++share) {
-            offsets[share + 1] += parts_[i].colliding_in_share[share];
+            in_share[share] += parts_[i].colliding_in_share[share];
         }
     }
-    std::size_t past_first = 0;
-    for (std::size_t share = 1; share < parts; ++share) {
-        past_first += offsets[share + 1];
-    }
-    offsets[1] = colliding - past_first;
-    for (std::size_t share = 1; share < parts; ++share) {
-        offsets[share + 1] += offsets[share];
-    }
+    in_share[0] = colliding - std::accumulate(in_share.begin() + 1, in_share.end(), std::size_t{0});
+    std::vector<std::size_t> offsets(parts + 1, 0);
+    std::partial_sum(in_share.begin(), in_share.end(), offsets.begin() + 1);
     pairs_.resize(colliding);
     std::vector<std::size_t> found_in(parts, 0);
     const std::size_t kept_count = kept_by_caller_.size();

@@ -1,31 +1,22 @@
 #include "finite_check.hpp"
+#include "huge_pages.hpp"
 
 #include <obbsat/rect_records.hpp>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace obbsat {
 
 namespace {
 
-constexpr std::size_t huge_page = std::size_t{2} << 20;
-constexpr std::size_t huge_threshold = 2 * huge_page;
-
-std::size_t alignment_for(std::size_t bytes) { return bytes >= huge_threshold ? huge_page : 64; }
+std::size_t alignment_for(std::size_t bytes) {
+    return bytes >= detail::huge_page_threshold ? detail::huge_page_bytes : 64;
+}
 
 }  // namespace
 
 void* allocate_record_memory(std::size_t bytes) {
     const std::size_t alignment = alignment_for(bytes);
     void* block = ::operator new(bytes, std::align_val_t{alignment});
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (alignment == huge_page) {
-        // Advice only: where the OS has no huge pages, nothing changes.
-        (void)madvise(block, bytes / huge_page * huge_page, MADV_HUGEPAGE);
-    }
-#endif
+    detail::advise_huge_pages(block, bytes);
     return block;
 }
 

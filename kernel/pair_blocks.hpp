@@ -1,7 +1,11 @@
 // The pairs one thread of a scene query finds, in blocks that never move.
 // A std::vector growing to millions of pairs copies them at each doubling
 // and touches about twice their memory; here each pair is written once.
-// Cleared, the blocks stay for the next query. Internal to the library.
+// Blocks grow from 512 KiB to 4 MiB, the size from which record memory
+// takes huge pages: a scene of millions of pairs then takes a page fault per
+// 2 MiB of them, not per 4 KiB, and the OS serves page faults one at a time
+// however many threads take them. Cleared, the blocks stay for the next
+// query. Internal to the library.
 #pragma once
 
 #include "pair_sort.hpp"
@@ -16,18 +20,20 @@ namespace obbsat::detail {
 
 class pair_blocks {
 public:
-    /// Pairs per block (512 KiB).
+    /// Pairs of the first block (512 KiB), the most one room() may ask for.
     static constexpr std::size_t block_pairs = std::size_t{1} << 16;
+    /// Pairs of block `b`: block_pairs, doubled at each block up to 4 MiB.
+    static constexpr std::size_t pairs_of_block(std::size_t b) { return block_pairs << (b < 3 ? b : 3); }
 
     /// Room for `count` <= block_pairs pairs after the last ones; add() then
     /// says how many of them were written.
     pair_index* room(std::size_t count) {
-        if (blocks_.empty() || used_[current_] + count > block_pairs) {
+        if (blocks_.empty() || used_[current_] + count > blocks_[current_].size()) {
             if (!blocks_.empty() && used_[current_] > 0) {
                 ++current_;
             }
             if (current_ == blocks_.size()) {
-                blocks_.emplace_back(block_pairs);
+                blocks_.emplace_back(pairs_of_block(blocks_.size()));
                 used_.push_back(0);
             }
         }
@@ -61,7 +67,7 @@ public:
     }
 
 private:
-    std::vector<scratch_vector<pair_index>> blocks_;  ///< each block_pairs long
+    std::vector<scratch_records<pair_index>> blocks_;  ///< block b pairs_of_block(b) long
     std::vector<std::size_t> used_;                   ///< pairs in each block
     std::size_t current_ = 0;                         ///< the block being filled; those after it are spare
     std::size_t size_ = 0;

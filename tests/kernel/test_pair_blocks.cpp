@@ -1,5 +1,5 @@
 // pair_blocks against a plain vector of the same pairs: appends that cross
-// blocks, rooms only partly used, and reuse after clear().
+// blocks, rooms only partly used, reuse after clear(), and blocks that grow.
 #include "pair_blocks.hpp"
 
 #include <gtest/gtest.h>
@@ -35,8 +35,9 @@ TEST(pair_blocks, holds_what_was_added_in_order_across_blocks_and_after_clear) {
     for (int round = 0; round < 2; ++round) {  // the second round reuses the blocks
         std::vector<obbsat::pair_index> want;
         std::uint32_t next = static_cast<std::uint32_t>(round) * 1000000u;
-        // Rooms of 2048 with 0 to 2048 of them used: about 3.5 blocks.
-        for (std::size_t step = 0; step < 230; ++step) {
+        // Rooms of 2048 with 0 to 2048 of them used: about 1.6M pairs, five
+        // blocks and a part of a sixth.
+        for (std::size_t step = 0; step < 1600; ++step) {
             const std::size_t room = 2048;
             const std::size_t used = (step * 977) % (room + 1);
             obbsat::pair_index* out = blocks.room(room);
@@ -51,7 +52,7 @@ TEST(pair_blocks, holds_what_was_added_in_order_across_blocks_and_after_clear) {
         }
         ASSERT_GT(want.size(), 3 * pair_blocks::block_pairs);
         EXPECT_EQ(blocks.size(), want.size());
-        EXPECT_GE(blocks.spans().size(), 4u);
+        EXPECT_GE(blocks.spans().size(), 6u);
         expect_same(flattened(blocks), want);
         blocks.clear();
         EXPECT_TRUE(blocks.empty());
@@ -70,4 +71,34 @@ TEST(pair_blocks, holds_what_was_added_in_order_across_blocks_and_after_clear) {
     EXPECT_EQ(spans[0].size, pair_blocks::block_pairs);
     EXPECT_EQ(spans[1].size, 1u);
     EXPECT_EQ(spans[1].data[0].a, 5u);
+}
+
+TEST(pair_blocks, grow_from_the_first_block_to_four_mebibytes) {
+    using obbsat::detail::pair_blocks;
+    EXPECT_EQ(pair_blocks::pairs_of_block(0), pair_blocks::block_pairs);
+    EXPECT_EQ(pair_blocks::pairs_of_block(1), 2 * pair_blocks::block_pairs);
+    EXPECT_EQ(pair_blocks::pairs_of_block(3) * sizeof(obbsat::pair_index), std::size_t{4} << 20);
+    EXPECT_EQ(pair_blocks::pairs_of_block(9), pair_blocks::pairs_of_block(3));
+    // Rooms of 4096, all used, fill each block to the last pair.
+    pair_blocks blocks;
+    std::uint32_t next = 0;
+    std::size_t total = 0;
+    for (std::size_t b = 0; b < 6; ++b) {
+        total += pair_blocks::pairs_of_block(b);
+    }
+    while (blocks.size() < total) {
+        obbsat::pair_index* out = blocks.room(4096);
+        for (std::size_t i = 0; i < 4096; ++i) {
+            out[i] = {next++, 3};
+        }
+        blocks.add(4096);
+    }
+    const auto spans = blocks.spans();
+    ASSERT_EQ(spans.size(), 6u);
+    std::uint32_t expected = 0;
+    for (std::size_t b = 0; b < spans.size(); ++b) {
+        EXPECT_EQ(spans[b].size, pair_blocks::pairs_of_block(b)) << "block " << b;
+        EXPECT_EQ(spans[b].data[0].a, expected) << "block " << b;
+        expected += static_cast<std::uint32_t>(spans[b].size);
+    }
 }

@@ -514,21 +514,26 @@ void pair_search::collect_visits(std::size_t parts) {
         first_far[share + 1] += first_far[share];
     }
     const std::size_t far_count = first_far[parts];
-    const std::size_t visits = far_count + first_near[parts];
-    // One more entry after the last visit, for the sweep's merge to read. The
-    // near visits are written after room for the far ones, which the merge
-    // fills from the front without overtaking a near visit it has not read.
+    const std::size_t near_count = first_near[parts];
+    const std::size_t visits = far_count + near_count;
+    // One more entry after the last visit, for the sweep's merge to read.
+    // With no far visits the near ones are the visits; otherwise they go to
+    // arrays of their own, from which the merge reads while it writes.
     visit_keys_.resize(visits + 1);
     visit_ids_.resize(visits + 1);
     far_keys_.resize(far_count);
     far_ids_.resize(far_count);
+    if (far_count > 0) {
+        near_keys_.resize(near_count);
+        near_ids_.resize(near_count);
+    }
+    std::uint32_t* const near_keys = far_count > 0 ? near_keys_.data() : visit_keys_.data();
+    std::uint32_t* const near_ids = far_count > 0 ? near_ids_.data() : visit_ids_.data();
     own_begin_.resize(strips + 1);
     std::vector<unsigned char> near_sorted(parts, 1);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
         bucket_starts(keys_.data(), n_, q_bits, strips, begin, end, own_begin_.data());
-        std::uint32_t* const near_keys = visit_keys_.data() + far_count;
-        std::uint32_t* const near_ids = visit_ids_.data() + far_count;
         std::size_t v = first_near[share];
         std::size_t f = first_far[share];
         std::uint32_t last_key = 0;
@@ -559,27 +564,21 @@ void pair_search::collect_visits(std::size_t parts) {
     // they ever did not, every visit is sorted, which gives the same order.
     bool merge = std::find(near_sorted.begin(), near_sorted.end(), 0) == near_sorted.end();
     for (std::size_t share = 1; share < parts && merge; ++share) {
-        const std::size_t at = far_count + first_near[share];
-        merge = at == far_count || at == visits || visit_keys_[at - 1] <= visit_keys_[at];
+        const std::size_t at = first_near[share];
+        merge = at == 0 || at == near_count || near_keys[at - 1] <= near_keys[at];
     }
     if (merge) {
-        radix_sort(far_keys_.data(), far_ids_.data(), far_count, grid_.key_bits(), packed_, spare_, parts);
-        std::size_t near = far_count;
-        std::size_t out = 0;
-        for (std::size_t f = 0; f < far_count; ++f, ++out) {
-            while (near < visits && (visit_keys_[near] < far_keys_[f] ||
-                                     (visit_keys_[near] == far_keys_[f] && visit_ids_[near] < far_ids_[f]))) {
-                visit_keys_[out] = visit_keys_[near];
-                visit_ids_[out] = visit_ids_[near];
-                ++near;
-                ++out;
-            }
-            visit_keys_[out] = far_keys_[f];
-            visit_ids_[out] = far_ids_[f];
+        if (far_count > 0) {
+            radix_sort(far_keys_.data(), far_ids_.data(), far_count, grid_.key_bits(), packed_, spare_, parts);
+            merge_visits(parts);
         }
     } else {
-        std::copy(far_keys_.begin(), far_keys_.end(), visit_keys_.begin());
-        std::copy(far_ids_.begin(), far_ids_.end(), visit_ids_.begin());
+        if (far_count > 0) {
+            std::copy(far_keys_.begin(), far_keys_.end(), visit_keys_.begin());
+            std::copy(far_ids_.begin(), far_ids_.end(), visit_ids_.begin());
+            std::copy(near_keys_.begin(), near_keys_.end(), visit_keys_.begin() + static_cast<std::ptrdiff_t>(far_count));
+            std::copy(near_ids_.begin(), near_ids_.end(), visit_ids_.begin() + static_cast<std::ptrdiff_t>(far_count));
+        }
         radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_, parts);
     }
     visit_keys_[visits] = 0;
@@ -593,6 +592,53 @@ void pair_search::collect_visits(std::size_t parts) {
     }
     stats_.strips = strips;
     stats_.visits = visits;
+}
+
+void pair_search::merge_visits(std::size_t parts) {
+    // Both lists are sorted by key, ties by rectangle. Share s takes the
+    // visits whose keys lie from the s-th split key up to the next: each
+    // share's place in the output is the visits of both lists before its
+    // first key, so the shares write apart and at the same time.
+    const std::size_t near_count = near_keys_.size();
+    const std::size_t far_count = far_keys_.size();
+    const std::uint32_t* const nk = near_keys_.data();
+    const std::uint32_t* const ni = near_ids_.data();
+    const std::uint32_t* const fk = far_keys_.data();
+    const std::uint32_t* const fi = far_ids_.data();
+    const std::size_t shares = std::max<std::size_t>(1, std::min(parts, (near_count + far_count) / min_boxes_per_part));
+    // near_at[s], far_at[s]: the first visit of share s in each list.
+    std::vector<std::size_t> near_at(shares + 1), far_at(shares + 1);
+    near_at[0] = far_at[0] = 0;
+    near_at[shares] = near_count;
+    far_at[shares] = far_count;
+    const bool split_near = near_count >= far_count;
+    for (std::size_t s = 1; s < shares; ++s) {
+        const std::uint32_t split = split_near ? nk[near_count * s / shares] : fk[far_count * s / shares];
+        near_at[s] = static_cast<std::size_t>(std::lower_bound(nk, nk + near_count, split) - nk);
+        far_at[s] = static_cast<std::size_t>(std::lower_bound(fk, fk + far_count, split) - fk);
+    }
+    std::uint32_t* const out_keys = visit_keys_.data();
+    std::uint32_t* const out_ids = visit_ids_.data();
+    run_parts(shares, [&](std::size_t share) {
+        std::size_t a = near_at[share];
+        std::size_t f = far_at[share];
+        const std::size_t a_end = near_at[share + 1];
+        const std::size_t f_end = far_at[share + 1];
+        std::size_t out = a + f;
+        while (a < a_end && f < f_end) {
+            const bool near_first = nk[a] < fk[f] || (nk[a] == fk[f] && ni[a] < fi[f]);
+            out_keys[out] = near_first ? nk[a] : fk[f];
+            out_ids[out] = near_first ? ni[a] : fi[f];
+            a += near_first ? 1 : 0;
+            f += near_first ? 0 : 1;
+            ++out;
+        }
+        std::copy(nk + a, nk + a_end, out_keys + out);
+        std::copy(ni + a, ni + a_end, out_ids + out);
+        out += a_end - a;
+        std::copy(fk + f, fk + f_end, out_keys + out);
+        std::copy(fi + f, fi + f_end, out_ids + out);
+    });
 }
 
 void pair_search::test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const {
@@ -1236,7 +1282,8 @@ std::vector<pair_index> pair_search::collect_once(const query_input& input) {
     for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
         scratch_vector<float>().swap(*v);
     }
-    for (auto* v : {&keys_, &order_, &key_by_id_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_}) {
+    for (auto* v : {&keys_, &order_, &key_by_id_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_, &far_keys_,
+                    &far_ids_, &near_keys_, &near_ids_}) {
         scratch_vector<std::uint32_t>().swap(*v);
     }
     radix_buffer().swap(packed_);

@@ -138,6 +138,8 @@ private:
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
     void collect_visits(std::size_t parts);
+    /// Merges the sorted near and far visits into the visits, in shares.
+    void merge_visits(std::size_t parts);
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
@@ -199,6 +201,7 @@ private:
     std::vector<std::uint32_t> own_begin_, visit_begin_;
     scratch_vector<std::uint32_t> visit_keys_, visit_ids_;
     scratch_vector<std::uint32_t> far_keys_, far_ids_;  ///< visits beyond the strip above a rectangle's lowest, before the merge
+    scratch_vector<std::uint32_t> near_keys_, near_ids_;  ///< visits to the strip above, before the merge (when there are far ones)
 
     std::vector<part> parts_;
     std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer

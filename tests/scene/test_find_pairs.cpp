@@ -271,6 +271,21 @@ TEST(find_pairs, every_backend_and_thread_count_gives_the_same_pairs) {
     }
 }
 
+// A mixed scene with visits enough to merge its near and far visits in
+// shares (16384 visits a share): on two to four threads, the pairs of one.
+TEST(find_pairs, visits_merged_in_shares_give_the_pairs_of_one_thread) {
+    const auto poses = seeded_scene(200000, obbsat::scene_sizes::mixed, 23, 0, 2.0);
+    const obbsat::pose_records store(poses);
+    obbsat::pair_finder one(options_for(method::exact, obbsat::backend::automatic, 1));
+    const std::vector<obbsat::pair_index> baseline = one.find(store);
+    ASSERT_GT(one.stats().visits, 4u * 16384u);
+    for (const unsigned threads : {2u, 3u, 4u}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        EXPECT_SAME_PAIRS(obbsat::find_pairs(store, options_for(method::exact, obbsat::backend::automatic, threads)),
+                          baseline);
+    }
+}
+
 TEST(find_pairs, streaming_gives_each_pair_once) {
     const auto poses = seeded_scene(40000, obbsat::scene_sizes::uniform, 31, 0, 2.0);
     const obbsat::pose_records store(poses);

@@ -27,7 +27,7 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     if (spare.size() < n) {
         spare.resize(n);
     }
-    parts = std::max<std::size_t>(1, std::min(parts, n / 65536));
+    parts = std::max<std::size_t>(1, std::min(parts, n / 32768));
     std::uint64_t* from = packed.data();
     std::uint64_t* to = spare.data();
     const auto run = [parts](const std::function<void(std::size_t)>& task) {

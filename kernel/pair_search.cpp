@@ -399,21 +399,77 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
 
 bool pair_search::repair_order(std::size_t parts) {
     // The last order with this query's keys: nearly sorted when the
-    // rectangles moved a little. A rectangle that changed strips would
-    // travel a whole strip in an insertion sort, so one stable pass by strip
-    // comes first; then each strip is repaired on its own, the strips split
-    // between the threads.
+    // rectangles moved a little, but for those that changed strips, each of
+    // which an insertion sort would carry across about half its new strip.
+    // So the rectangles that stayed in their strips keep the last order and
+    // are repaired there, strip by strip, the strips split between the
+    // threads; those that changed strips are sorted apart; the two are then
+    // merged. keys_ still holds the last query's keys, in its order.
+    const unsigned q_bits = grid_.q_bits;
+    changed_strip_.resize(n_);
+    std::vector<std::size_t> changed_before(parts + 1, 0);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
+        std::size_t changed = 0;
         for (std::size_t k = begin; k < end; ++k) {
-            keys_[k] = key_by_id_[order_[k]];
+            const std::uint32_t key = key_by_id_[order_[k]];
+            const bool moved = (key >> q_bits) != (keys_[k] >> q_bits);
+            changed_strip_[k] = moved ? 1 : 0;
+            changed += moved ? 1 : 0;
+            keys_[k] = key;
         }
+        changed_before[share + 1] = changed;
     });
-    bucket_sort(keys_.data(), order_.data(), n_, grid_.q_bits, grid_.strips, spare_keys_, spare_values_);
+    std::partial_sum(changed_before.begin(), changed_before.end(), changed_before.begin());
+    const std::size_t changed = changed_before[parts];
+    const std::size_t stayed = n_ - changed;
+    stay_keys_.resize(stayed);
+    stay_ids_.resize(stayed);
+    moved_keys_.resize(changed);
+    moved_ids_.resize(changed);
+    // The rectangles that stayed are in the order of their strips already,
+    // as each share checks (and the shares' ends against each other): the
+    // strips are found by position below.
+    std::vector<std::uint32_t> first_strip(parts, 0), last_strip(parts, 0);
+    std::vector<std::size_t> stayed_in_share(parts, 0);
+    std::vector<unsigned char> in_strip_order(parts, 1);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        std::size_t m = changed_before[share];
+        std::size_t s = begin - m;
+        const std::size_t share_first = s;
+        std::uint32_t last = 0;
+        unsigned ordered = 1;
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t key = keys_[k];
+            if (changed_strip_[k] != 0) {
+                moved_keys_[m] = key;
+                moved_ids_[m] = order_[k];
+                ++m;
+            } else {
+                ordered &= (key >> q_bits) >= last ? 1u : 0u;
+                last = key >> q_bits;
+                stay_keys_[s] = key;
+                stay_ids_[s] = order_[k];
+                ++s;
+            }
+        }
+        stayed_in_share[share] = s - share_first;
+        first_strip[share] = s > share_first ? stay_keys_[share_first] >> q_bits : 0;
+        last_strip[share] = last;
+        in_strip_order[share] = static_cast<unsigned char>(ordered);
+    });
+    std::uint32_t last_so_far = 0;
+    for (std::size_t share = 0; share < parts; ++share) {
+        if (in_strip_order[share] == 0 || (stayed_in_share[share] > 0 && first_strip[share] < last_so_far)) {
+            return false;
+        }
+        last_so_far = stayed_in_share[share] > 0 ? last_strip[share] : last_so_far;
+    }
     std::vector<std::uint32_t> strip_begin(grid_.strips + 1);
     run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
-        bucket_starts(keys_.data(), n_, grid_.q_bits, grid_.strips, begin, end, strip_begin.data());
+        const auto [begin, end] = share_of(stayed, share, parts);
+        bucket_starts(stay_keys_.data(), stayed, q_bits, grid_.strips, begin, end, strip_begin.data());
     });
     std::vector<unsigned char> repaired(parts, 1);
     run_parts(parts, [&](std::size_t share) {
@@ -426,13 +482,19 @@ bool pair_search::repair_order(std::size_t parts) {
             const std::size_t b = strip_begin[s];
             const std::size_t count = strip_begin[s + 1] - b;
             std::size_t moved = 0;
-            if (!repair_sort(keys_.data() + b, order_.data() + b, count, budget, &moved)) {
+            if (!repair_sort(stay_keys_.data() + b, stay_ids_.data() + b, count, budget, &moved)) {
                 repaired[share] = 0;
             }
             budget -= std::min(budget, moved);
         }
     });
-    return std::find(repaired.begin(), repaired.end(), 0) == repaired.end();
+    if (std::find(repaired.begin(), repaired.end(), 0) != repaired.end()) {
+        return false;
+    }
+    radix_sort(moved_keys_.data(), moved_ids_.data(), changed, grid_.key_bits(), packed_, spare_, parts);
+    merge_by_key(stay_keys_.data(), stay_ids_.data(), stayed, moved_keys_.data(), moved_ids_.data(), changed,
+                 keys_.data(), order_.data(), parts);
+    return true;
 }
 
 void pair_search::copy_records(const query_input& input, std::size_t parts) {
@@ -570,7 +632,8 @@ void pair_search::collect_visits(std::size_t parts) {
     if (merge) {
         if (far_count > 0) {
             radix_sort(far_keys_.data(), far_ids_.data(), far_count, grid_.key_bits(), packed_, spare_, parts);
-            merge_visits(parts);
+            merge_by_key(near_keys_.data(), near_ids_.data(), near_count, far_keys_.data(), far_ids_.data(), far_count,
+                         visit_keys_.data(), visit_ids_.data(), parts);
         }
     } else {
         if (far_count > 0) {
@@ -592,53 +655,6 @@ void pair_search::collect_visits(std::size_t parts) {
     }
     stats_.strips = strips;
     stats_.visits = visits;
-}
-
-void pair_search::merge_visits(std::size_t parts) {
-    // Both lists are sorted by key, ties by rectangle. Share s takes the
-    // visits whose keys lie from the s-th split key up to the next: each
-    // share's place in the output is the visits of both lists before its
-    // first key, so the shares write apart and at the same time.
-    const std::size_t near_count = near_keys_.size();
-    const std::size_t far_count = far_keys_.size();
-    const std::uint32_t* const nk = near_keys_.data();
-    const std::uint32_t* const ni = near_ids_.data();
-    const std::uint32_t* const fk = far_keys_.data();
-    const std::uint32_t* const fi = far_ids_.data();
-    const std::size_t shares = std::max<std::size_t>(1, std::min(parts, (near_count + far_count) / min_boxes_per_part));
-    // near_at[s], far_at[s]: the first visit of share s in each list.
-    std::vector<std::size_t> near_at(shares + 1), far_at(shares + 1);
-    near_at[0] = far_at[0] = 0;
-    near_at[shares] = near_count;
-    far_at[shares] = far_count;
-    const bool split_near = near_count >= far_count;
-    for (std::size_t s = 1; s < shares; ++s) {
-        const std::uint32_t split = split_near ? nk[near_count * s / shares] : fk[far_count * s / shares];
-        near_at[s] = static_cast<std::size_t>(std::lower_bound(nk, nk + near_count, split) - nk);
-        far_at[s] = static_cast<std::size_t>(std::lower_bound(fk, fk + far_count, split) - fk);
-    }
-    std::uint32_t* const out_keys = visit_keys_.data();
-    std::uint32_t* const out_ids = visit_ids_.data();
-    run_parts(shares, [&](std::size_t share) {
-        std::size_t a = near_at[share];
-        std::size_t f = far_at[share];
-        const std::size_t a_end = near_at[share + 1];
-        const std::size_t f_end = far_at[share + 1];
-        std::size_t out = a + f;
-        while (a < a_end && f < f_end) {
-            const bool near_first = nk[a] < fk[f] || (nk[a] == fk[f] && ni[a] < fi[f]);
-            out_keys[out] = near_first ? nk[a] : fk[f];
-            out_ids[out] = near_first ? ni[a] : fi[f];
-            a += near_first ? 1 : 0;
-            f += near_first ? 0 : 1;
-            ++out;
-        }
-        std::copy(nk + a, nk + a_end, out_keys + out);
-        std::copy(ni + a, ni + a_end, out_ids + out);
-        out += a_end - a;
-        std::copy(fk + f, fk + f_end, out_keys + out);
-        std::copy(fi + f, fi + f_end, out_ids + out);
-    });
 }
 
 void pair_search::test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const {
@@ -683,9 +699,10 @@ void pair_search::flush_candidates(part& p) const {
         candidates[i].b = second ^ flip;
     }
     if (keep_) {
-        // Past its budget a part keeps nothing more: the call then answers
-        // as a plain query (collect).
-        if (p.captured.size() + count <= p.capture_budget) {
+        // Past the budget of all parts a part keeps nothing more: the call
+        // then answers as a plain query (collect). Whether any part sees the
+        // budget passed depends only on the sum of the parts' candidates.
+        if (captured_all_.fetch_add(count, std::memory_order_relaxed) + count <= capture_budget_) {
             p.captured.insert(p.captured.end(), candidates, candidates + count);
         } else {
             p.over_budget = true;
@@ -807,13 +824,13 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         p.found.clear();
         p.captured.clear();
         p.over_budget = false;
-        p.capture_budget = margin_ > 0.0f
-                               ? (kept_budget_factor * last_candidates_ + n_) / parts + candidate_block
-                               : std::numeric_limits<std::size_t>::max();
         p.tested = 0;
         p.slow_path = 0;
         p.kernel_seconds = 0;
     }
+    capture_budget_ = margin_ > 0.0f ? kept_budget_factor * last_candidates_ + n_ + parts * candidate_block
+                                     : std::numeric_limits<std::size_t>::max();
+    captured_all_.store(0, std::memory_order_relaxed);
     std::mutex emit_mutex;
     std::vector<std::exception_ptr> failures(parts);
     std::atomic<bool> failed{false};

@@ -47,6 +47,7 @@
 #include <obbsat/rect_records.hpp>
 #include <obbsat/ref/bounds.hpp>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -109,7 +110,6 @@ private:
         // Candidates kept instead of tested (a query that keeps them), and
         // the kept candidates' positions of a block under test.
         std::vector<pair_index> captured;
-        std::size_t capture_budget = 0;
         bool over_budget = false;
         scratch_vector<tagged_pair> tagged;  // written whole before it is read: never zeroed
         std::vector<std::uint32_t> slots;
@@ -138,8 +138,6 @@ private:
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
     void collect_visits(std::size_t parts);
-    /// Merges the sorted near and far visits into the visits, in shares.
-    void merge_visits(std::size_t parts);
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
     void sweep_strip(std::uint32_t strip, part& p) const;
     void flush_candidates(part& p) const;
@@ -187,7 +185,10 @@ private:
 
     // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
     scratch_vector<std::uint32_t> keys_, order_;
-    std::vector<std::uint32_t> spare_keys_, spare_values_;
+    // A repair of the last order (repair_order): which rectangles changed
+    // strips, in the last order; those that stayed and those that moved.
+    scratch_vector<std::uint8_t> changed_strip_;
+    scratch_vector<std::uint32_t> stay_keys_, stay_ids_, moved_keys_, moved_ids_;
     radix_buffer packed_, spare_;
 
     // Per rectangle, in the query's order.
@@ -204,6 +205,10 @@ private:
     scratch_vector<std::uint32_t> near_keys_, near_ids_;  ///< visits to the strip above, before the merge (when there are far ones)
 
     std::vector<part> parts_;
+    // The pairs a query that keeps its candidates may keep, counted over all
+    // parts, so that whether it keeps them does not depend on the threads.
+    std::size_t capture_budget_ = 0;
+    mutable std::atomic<std::size_t> captured_all_{0};
     std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;

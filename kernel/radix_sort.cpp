@@ -103,24 +103,49 @@ void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std
     }
 }
 
-void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned shift, std::size_t buckets,
-                 std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values) {
-    spare_keys.resize(n);
-    spare_values.resize(n);
-    std::vector<std::size_t> next(buckets + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        ++next[(keys[i] >> shift) + 1];
+void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, std::size_t a_n,
+                  const std::uint32_t* b_keys, const std::uint32_t* b_values, std::size_t b_n,
+                  std::uint32_t* out_keys, std::uint32_t* out_values, std::size_t parts) {
+    // Share s takes the entries of both runs whose keys lie from its split
+    // key up to the next one, and writes them after the entries of both runs
+    // before its split key: the shares write apart and at the same time.
+    // The split keys are taken from the longer run, at equal steps.
+    constexpr std::size_t least_share = 16384;
+    const std::size_t shares = std::max<std::size_t>(1, std::min(parts, (a_n + b_n) / least_share));
+    std::vector<std::size_t> a_at(shares + 1), b_at(shares + 1);
+    a_at[0] = b_at[0] = 0;
+    a_at[shares] = a_n;
+    b_at[shares] = b_n;
+    for (std::size_t s = 1; s < shares; ++s) {
+        const std::uint32_t split = a_n >= b_n ? a_keys[a_n * s / shares] : b_keys[b_n * s / shares];
+        a_at[s] = static_cast<std::size_t>(std::lower_bound(a_keys, a_keys + a_n, split) - a_keys);
+        b_at[s] = static_cast<std::size_t>(std::lower_bound(b_keys, b_keys + b_n, split) - b_keys);
     }
-    for (std::size_t b = 0; b < buckets; ++b) {
-        next[b + 1] += next[b];
+    const auto merge_share = [&](std::size_t share) {
+        std::size_t i = a_at[share];
+        std::size_t j = b_at[share];
+        const std::size_t i_end = a_at[share + 1];
+        const std::size_t j_end = b_at[share + 1];
+        std::size_t out = i + j;
+        while (i < i_end && j < j_end) {
+            const bool from_a = a_keys[i] < b_keys[j] || (a_keys[i] == b_keys[j] && a_values[i] <= b_values[j]);
+            out_keys[out] = from_a ? a_keys[i] : b_keys[j];
+            out_values[out] = from_a ? a_values[i] : b_values[j];
+            i += from_a ? 1 : 0;
+            j += from_a ? 0 : 1;
+            ++out;
+        }
+        std::copy(a_keys + i, a_keys + i_end, out_keys + out);
+        std::copy(a_values + i, a_values + i_end, out_values + out);
+        out += i_end - i;
+        std::copy(b_keys + j, b_keys + j_end, out_keys + out);
+        std::copy(b_values + j, b_values + j_end, out_values + out);
+    };
+    if (shares == 1) {
+        merge_share(0);
+    } else {
+        thread_pool::shared().run(shares, merge_share);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t slot = next[keys[i] >> shift]++;
-        spare_keys[slot] = keys[i];
-        spare_values[slot] = values[i];
-    }
-    std::copy(spare_keys.begin(), spare_keys.begin() + static_cast<std::ptrdiff_t>(n), keys);
-    std::copy(spare_values.begin(), spare_values.begin() + static_cast<std::ptrdiff_t>(n), values);
 }
 
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,

@@ -32,10 +32,16 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
 void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::size_t buckets, std::size_t begin,
                    std::size_t end, std::uint32_t* starts);
 
-/// Sorts keys[0, n) and values[0, n) stably by key >> shift, which must be
-/// below `buckets`: one counting pass, through `spare_keys` and `spare_values`.
-void bucket_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned shift, std::size_t buckets,
-                 std::vector<std::uint32_t>& spare_keys, std::vector<std::uint32_t>& spare_values);
+/// Merges a_keys/a_values[0, a_n) and b_keys/b_values[0, b_n), each sorted
+/// by key, into out_keys/out_values[0, a_n + b_n), sorted by key; of two
+/// equal keys, a's comes first if its value is at most b's, so two runs
+/// sorted by (key, value) merge sorted by (key, value). The output overlaps
+/// neither run. Shares split by key run on up to `parts` threads of the
+/// shared pool (at least 16384 entries each); the result does not depend on
+/// how many.
+void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, std::size_t a_n,
+                  const std::uint32_t* b_keys, const std::uint32_t* b_values, std::size_t b_n,
+                  std::uint32_t* out_keys, std::uint32_t* out_values, std::size_t parts);
 
 /// Sorts keys[0, n) and values[0, n) by key, stably, when they are nearly
 /// sorted already: an insertion sort (binary search, then one block move)

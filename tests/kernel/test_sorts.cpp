@@ -1,8 +1,8 @@
 // The scene queries' sorts against std::stable_sort: radix_sort on one
 // thread and split over two (the same result either way, equal keys in their
-// input order), bucket_sort, and repair_sort on nearly sorted input and past
-// its move budget; bucket_starts against prefix counts; sort_pairs against
-// std::sort by (a, b).
+// input order), merge_by_key against std::merge in shares split by key, and
+// repair_sort on nearly sorted input and past its move budget; bucket_starts
+// against prefix counts; sort_pairs against std::sort by (a, b).
 #include "pair_sort.hpp"
 #include "radix_sort.hpp"
 
@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -69,19 +70,41 @@ TEST(radix_sort, equals_a_stable_sort_on_one_thread_and_two) {
     }
 }
 
-TEST(bucket_sort, equals_a_stable_sort_by_bucket) {
-    for (const std::size_t n : {std::size_t{0}, std::size_t{5000}, std::size_t{400000}}) {
-        const unsigned shift = 12;
-        const std::size_t buckets = 300;
+TEST(merge_by_key, equals_a_merge_by_key_then_value_on_one_to_four_threads) {
+    // Two runs sorted by (key, value), with keys shared between them and
+    // long runs of one key (few key bits), one run empty or both of very
+    // different lengths; values unique, so the merge has one answer.
+    struct sizes {
+        std::size_t a, b;
+        unsigned key_bits;
+    };
+    for (const sizes z : {sizes{0, 0, 8}, sizes{0, 5000, 8}, sizes{70000, 0, 12}, sizes{100000, 30000, 6},
+                          sizes{20000, 150000, 16}, sizes{90000, 90000, 2}}) {
         std::vector<std::uint32_t> keys, values;
-        random_input(n, 20, n + 7, keys, values);
-        for (std::uint32_t& k : keys) {
-            k = (k % (static_cast<std::uint32_t>(buckets) << shift));  // every key >> shift below buckets
+        random_input(z.a + z.b, z.key_bits, z.a + 3 * z.b + z.key_bits, keys, values);
+        keyed a(z.a), b(z.b);
+        for (std::size_t i = 0; i < z.a + z.b; ++i) {
+            (i < z.a ? a[i] : b[i - z.a]) = {keys[i], values[i]};
         }
-        const keyed want = stably_sorted(keys, values, shift);
-        std::vector<std::uint32_t> spare_keys, spare_values;
-        obbsat::detail::bucket_sort(keys.data(), values.data(), n, shift, buckets, spare_keys, spare_values);
-        EXPECT_EQ(zipped(keys, values), want) << n << " keys";
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        keyed want;
+        std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(want));
+        std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
+        for (const auto& [k, v] : a) {
+            a_keys.push_back(k);
+            a_values.push_back(v);
+        }
+        for (const auto& [k, v] : b) {
+            b_keys.push_back(k);
+            b_values.push_back(v);
+        }
+        for (const std::size_t parts : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
+            std::vector<std::uint32_t> out_keys(z.a + z.b, 7), out_values(z.a + z.b, 7);
+            obbsat::detail::merge_by_key(a_keys.data(), a_values.data(), z.a, b_keys.data(), b_values.data(), z.b,
+                                         out_keys.data(), out_values.data(), parts);
+            EXPECT_EQ(zipped(out_keys, out_values), want) << z.a << " + " << z.b << ", " << parts << " parts";
+        }
     }
 }
 

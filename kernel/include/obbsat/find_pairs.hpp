@@ -141,7 +141,9 @@ class pair_search;
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding
 /// pairs per rectangle), one bit more per kept pair for each thread past the
-/// first, and 16 per rectangle.
+/// first, 29 per rectangle (its bounds, its key, and the repair of the
+/// order), and 8 more per rectangle that changed strips since the last full
+/// query.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);

@@ -431,7 +431,6 @@ bool pair_search::repair_order(std::size_t parts) {
     // as each share checks (and the shares' ends against each other): the
     // strips are found by position below.
     std::vector<std::uint32_t> first_strip(parts, 0), last_strip(parts, 0);
-    std::vector<std::size_t> stayed_in_share(parts, 0);
     std::vector<unsigned char> in_strip_order(parts, 1);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
@@ -454,17 +453,18 @@ bool pair_search::repair_order(std::size_t parts) {
                 ++s;
             }
         }
-        stayed_in_share[share] = s - share_first;
         first_strip[share] = s > share_first ? stay_keys_[share_first] >> q_bits : 0;
         last_strip[share] = last;
         in_strip_order[share] = static_cast<unsigned char>(ordered);
     });
     std::uint32_t last_so_far = 0;
     for (std::size_t share = 0; share < parts; ++share) {
-        if (in_strip_order[share] == 0 || (stayed_in_share[share] > 0 && first_strip[share] < last_so_far)) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        const bool stayers = end - begin > changed_before[share + 1] - changed_before[share];
+        if (in_strip_order[share] == 0 || (stayers && first_strip[share] < last_so_far)) {
             return false;
         }
-        last_so_far = stayed_in_share[share] > 0 ? last_strip[share] : last_so_far;
+        last_so_far = stayers ? last_strip[share] : last_so_far;
     }
     std::vector<std::uint32_t> strip_begin(grid_.strips + 1);
     run_parts(parts, [&](std::size_t share) {

@@ -141,11 +141,7 @@ void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, st
         std::copy(b_keys + j, b_keys + j_end, out_keys + out);
         std::copy(b_values + j, b_values + j_end, out_values + out);
     };
-    if (shares == 1) {
-        merge_share(0);
-    } else {
-        thread_pool::shared().run(shares, merge_share);
-    }
+    thread_pool::shared().run(shares, merge_share);  // on this thread alone for one share
 }
 
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,

@@ -1,13 +1,13 @@
 # obbsat_add_isa_kernel(<target> <backend> <flags>...)
 #
-# Compiles kernel/backend_isa.cpp once more as an object library for one
+# Compiles kernel/lanes/backend_isa.cpp once more as an object library for one
 # instruction set: the same kernel source, instantiated for the xsimd
-# architecture that kernel/backend_catalogue.hpp gives <backend>, and compiled
+# architecture that kernel/dispatch/backend_catalogue.hpp gives <backend>, and compiled
 # with that ISA's flags only. Nothing in such an object may run before
 # the dispatcher (compiled at the baseline ISA) has checked the CPU.
 function(obbsat_add_isa_kernel target backend)
   set(flags ${ARGN})
-  add_library(${target} OBJECT ${PROJECT_SOURCE_DIR}/kernel/backend_isa.cpp)
+  add_library(${target} OBJECT ${PROJECT_SOURCE_DIR}/kernel/lanes/backend_isa.cpp)
   target_compile_definitions(${target} PRIVATE OBBSAT_ISA_NAME=${backend})
   target_compile_options(${target} PRIVATE ${flags})
   target_link_libraries(${target} PRIVATE obbsat_ref obbsat_oracle)

@@ -3,7 +3,7 @@
 // when this CPU runs it (a test skips the others, never calls them).
 #pragma once
 
-#include "backend_registry.hpp"
+#include "dispatch/backend_registry.hpp"
 
 #include <obbsat/backend.hpp>
 

@@ -1,6 +1,6 @@
 // pair_blocks against a plain vector of the same pairs: appends that cross
 // blocks, rooms only partly used, reuse after clear(), and blocks that grow.
-#include "pair_blocks.hpp"
+#include "scene/pair_blocks.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // input order), merge_by_key against std::merge in shares split by key, and
 // repair_sort on nearly sorted input and past its move budget; bucket_starts
 // against prefix counts; sort_pairs against std::sort by (a, b).
-#include "pair_sort.hpp"
-#include "radix_sort.hpp"
+#include "sort/pair_sort.hpp"
+#include "sort/radix_sort.hpp"
 
 #include <obbsat/collide.hpp>
 #include <obbsat/scene.hpp>

@@ -1,0 +1,99 @@
+#include "scene/pair_search.hpp"
+
+#include <obbsat/error.hpp>
+#include <obbsat/find_pairs.hpp>
+
+#include <string>
+
+namespace obbsat {
+
+static_assert(sizeof(rect_pose) == 6 * sizeof(float), "a rect_pose row is cx, cy, hx, hy, c, s");
+static_assert(sizeof(rect) == 8 * sizeof(float), "a rect row is eight coordinates");
+
+box_view::box_view(const pose_records& poses)
+    : floats_(poses.data()), count_(poses.size()), stride_(pose_records::record_floats), kind_(store_kind::poses),
+      checked_(true) {}
+
+box_view::box_view(const rect_records& rects)
+    : floats_(rects.empty() ? nullptr : &rects.data()->ul.x), count_(rects.size()), stride_(8),
+      kind_(store_kind::corners), checked_(true) {}
+
+box_view::box_view(const rect_pose* poses, std::size_t count)
+    : floats_(count == 0 ? nullptr : &poses->center.x), count_(count), stride_(6), kind_(store_kind::poses),
+      checked_(false) {}
+
+box_view::box_view(const rect* rects, std::size_t count)
+    : floats_(count == 0 ? nullptr : &rects->ul.x), count_(count), stride_(8), kind_(store_kind::corners),
+      checked_(false) {}
+
+box_view::box_view(const std::vector<rect_pose>& poses) : box_view(poses.data(), poses.size()) {}
+
+box_view::box_view(const std::vector<rect>& rects) : box_view(rects.data(), rects.size()) {}
+
+namespace {
+
+/// The query over `a`, and `b` when it is not nullptr. An empty set's
+/// pointer may be nullptr, but the second set's must not be: nullptr there
+/// means "a query within the first set".
+detail::query_input input_of(const box_view& a, const box_view* b) {
+    static const float none[8] = {};
+    detail::query_input in;
+    in.kind = a.kind();
+    in.a = a.floats() != nullptr ? a.floats() : none;
+    in.a_count = a.size();
+    in.a_stride = a.stride();
+    in.a_checked = a.checked();
+    if (b != nullptr) {
+        if (b->kind() != a.kind()) {
+            throw invalid_input(std::string("a scene query compares one kind of rectangle: a holds ") +
+                                (a.kind() == store_kind::poses ? "poses" : "corners") + ", b holds " +
+                                (b->kind() == store_kind::poses ? "poses" : "corners"));
+        }
+        in.b = b->floats() != nullptr ? b->floats() : none;
+        in.b_count = b->size();
+        in.b_stride = b->stride();
+        in.b_checked = b->checked();
+    }
+    return in;
+}
+
+}  // namespace
+
+std::vector<pair_index> find_pairs(box_view boxes, const collide_options& options) {
+    detail::pair_search search(options);
+    return search.collect_once(input_of(boxes, nullptr));
+}
+
+std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options) {
+    detail::pair_search search(options);
+    return search.collect_once(input_of(a, &b));
+}
+
+void find_pairs_each(box_view boxes, const collide_options& options, const pair_chunk_sink& sink) {
+    detail::pair_search search(options);
+    search.run(input_of(boxes, nullptr), sink);
+}
+
+void find_pairs_each(box_view a, box_view b, const collide_options& options, const pair_chunk_sink& sink) {
+    detail::pair_search search(options);
+    search.run(input_of(a, &b), sink);
+}
+
+pair_finder::pair_finder(const collide_options& options)
+    : search_(std::make_unique<detail::pair_search>(options)) {}
+
+pair_finder::~pair_finder() = default;
+pair_finder::pair_finder(pair_finder&&) noexcept = default;
+pair_finder& pair_finder::operator=(pair_finder&&) noexcept = default;
+
+const std::vector<pair_index>& pair_finder::find(box_view boxes) {
+    return search_->collect(input_of(boxes, nullptr));
+}
+
+const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
+    return search_->collect(input_of(a, &b));
+}
+
+const find_pairs_stats& pair_finder::stats() const { return search_->stats(); }
+
+}  // namespace obbsat

@@ -1,0 +1,54 @@
+// Sorting (key, value) pairs of 32-bit integers by key, stably: a least
+// significant digit radix sort over the pairs packed into 64-bit words, 8 bits
+// per pass (256 write streams, few enough for the TLB and the store buffers),
+// skipping passes whose digit is the same for every key, in memory backed by
+// huge pages where the OS offers them. Internal to the library.
+#pragma once
+
+#include "support/scratch_vector.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace obbsat::detail {
+
+/// Working memory of radix_sort, kept by the caller between calls.
+using radix_buffer = scratch_records<std::uint64_t>;
+
+/// Sorts keys[0, n) and values[0, n) together by key, stably; `key_bits` is
+/// the number of low bits that can be non-zero. `packed` and `spare` are
+/// grown to n. Each pass is split over up to `parts` threads of the shared
+/// pool; the result does not depend on how many.
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
+                radix_buffer& spare, std::size_t parts = 1);
+
+/// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
+/// (every bucket below `buckets`): starts[b] is the first i whose bucket is
+/// at least b, for b in [0, buckets]. A call writes the entries of the
+/// buckets that begin in [begin, end) (the last share, end == n, also those
+/// after the last key), so calls over shares that tile [0, n) write each
+/// entry once and may run at the same time.
+void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::size_t buckets, std::size_t begin,
+                   std::size_t end, std::uint32_t* starts);
+
+/// Merges a_keys/a_values[0, a_n) and b_keys/b_values[0, b_n), each sorted
+/// by key, into out_keys/out_values[0, a_n + b_n), sorted by key; of two
+/// equal keys, a's comes first if its value is at most b's, so two runs
+/// sorted by (key, value) merge sorted by (key, value). The output overlaps
+/// neither run. Shares split by key run on up to `parts` threads of the
+/// shared pool (at least 16384 entries each); the result does not depend on
+/// how many.
+void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, std::size_t a_n,
+                  const std::uint32_t* b_keys, const std::uint32_t* b_values, std::size_t b_n,
+                  std::uint32_t* out_keys, std::uint32_t* out_values, std::size_t parts);
+
+/// Sorts keys[0, n) and values[0, n) by key, stably, when they are nearly
+/// sorted already: an insertion sort (binary search, then one block move)
+/// that gives up (returning false, with the arrays still a permutation of the
+/// input) once it would move more than `move_budget` elements.
+/// `moved`, when given, receives the elements moved.
+bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,
+                 std::size_t* moved = nullptr);
+
+}  // namespace obbsat::detail

@@ -1,7 +1,7 @@
 // The built obbsat program, run through the shell as a user runs it: exit
 // statuses, exact error messages, --out left untouched on error, and verdict
 // files identical for every backend this CPU runs.
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 #include "program_runner.hpp"
 #include "test_support/shared_cases.hpp"
 

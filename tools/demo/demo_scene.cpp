@@ -1,6 +1,6 @@
-#include "demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 
-#include "demo_scene_box2d.hpp"
+#include "demo/demo_scene_box2d.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/digest.hpp>

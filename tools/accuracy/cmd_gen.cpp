@@ -11,11 +11,11 @@
 // files in DIR left alone). Any error before that removes the temporary
 // directory and leaves DIR as it was. A scene is one file, written through
 // io::output_target: all or nothing at --out, else on standard output.
-#include "accuracy_commands.hpp"
-#include "atomic_output.hpp"
-#include "cli_args.hpp"
-#include "output_target.hpp"
-#include "temporary_files.hpp"
+#include "accuracy/accuracy_commands.hpp"
+#include "cli/cli_args.hpp"
+#include "io/atomic_output.hpp"
+#include "io/output_target.hpp"
+#include "io/temporary_files.hpp"
 
 #include <obbsat/oracle/classify_pairs.hpp>
 #include <obbsat/pose_scene.hpp>

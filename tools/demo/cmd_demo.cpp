@@ -3,11 +3,11 @@
 // anything. The scene's rectangles are timed in both corner stores and, for
 // the methods on poses, in a pose store built from the same corners, so that
 // a method on poses is read beside the corner test it stands in for.
-#include "accuracy_brief.hpp"
-#include "cli_args.hpp"
-#include "commands.hpp"
-#include "demo_box2d.hpp"
-#include "demo_scene.hpp"
+#include "accuracy/accuracy_brief.hpp"
+#include "cli/cli_args.hpp"
+#include "cli/commands.hpp"
+#include "demo/demo_box2d.hpp"
+#include "demo/demo_scene.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>

@@ -6,25 +6,20 @@
 #include "accuracy/accuracy_brief.hpp"
 #include "cli/cli_args.hpp"
 #include "cli/commands.hpp"
-#include "demo/demo_box2d.hpp"
+#include "demo/demo_comparisons.hpp"
+#include "demo/demo_rows.hpp"
 #include "demo/demo_scene.hpp"
 
 #include <obbsat/backend.hpp>
-#include <obbsat/collide.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/method.hpp>
-#include <obbsat/pose.hpp>
-#include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect_records.hpp>
-#include <obbsat/ref/pose_corners.hpp>
 #include <obbsat/scene.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cinttypes>
 #include <cstring>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,12 +27,6 @@
 namespace obbsat::cli {
 
 namespace {
-
-using clock = std::chrono::steady_clock;
-
-double seconds_since(clock::time_point start) {
-    return std::chrono::duration<double>(clock::now() - start).count();
-}
 
 struct demo_settings {
     std::size_t rects = 100000;
@@ -49,43 +38,6 @@ struct demo_settings {
     std::size_t scene_boxes = 0;  // the scene query's section: 0 leaves it out; by default 10 x rects
     // The article's test on corners, and beside it the same test on poses.
     std::vector<method> methods{method::sat4, method::local};
-};
-
-// One row of the table: a way to compute the scene's verdicts.
-struct demo_entry {
-    std::string runner;  // a backend's name, or whatever else computes the verdicts
-    std::string store;   // how the rectangles are laid out in memory: soa, records or poses
-    unsigned threads;
-    std::function<void(std::uint8_t* verdicts)> run;
-};
-
-// The rows of one method on one kind of store, and the verdicts they must all
-// reproduce: on corners the method on the scalar backend over soa at 1
-// thread, on poses the method's scalar reference on poses called pair by pair.
-struct demo_group {
-    method test;
-    store_kind kind;
-    const char* reference_name;  // for the message when a row differs
-    std::function<void(std::uint8_t* verdicts)> reference;
-    std::vector<demo_entry> entries;  // the first is what 'speedup' compares against
-};
-
-// The scene, with its rectangles in every store the library takes for pair
-// lists: arrays per coordinate, packed corner records (one cache line each),
-// and packed poses (half a cache line each), built from the same corners.
-struct demo_scene {
-    scene world;
-    rect_records records;
-    pose_records poses;
-};
-
-// A row as measured, for the comparisons printed under the table.
-struct measured_row {
-    method test;
-    std::string runner;
-    std::string store;
-    unsigned threads;
-    double seconds;  // the median
 };
 
 const std::vector<option_spec>& demo_option_specs() {
@@ -157,120 +109,6 @@ rect_records records_of(const rect_soa& rects) {
     return rect_records(plain);
 }
 
-// The backends this CPU runs: scalar first, then narrowest to widest.
-std::vector<backend> runnable_backends() {
-    std::vector<backend> runnable{backend::scalar};
-    const std::vector<backend> compiled = compiled_backends();  // best first
-    for (auto b = compiled.rbegin(); b != compiled.rend(); ++b) {
-        if (*b != backend::scalar && cpu_supports(*b)) {
-            runnable.push_back(*b);
-        }
-    }
-    return runnable;
-}
-
-// The corner test a method on poses is read beside: local is the article's
-// test taken into A's frame, so it stands beside sat4; conservative and exact
-// run on both kinds of store, so each stands beside itself.
-method corner_counterpart(method m) { return m == method::local ? method::sat4 : m; }
-
-// The method and store groups to time, in table order: by the declaration
-// order of each method's corner counterpart, corners before poses.
-std::vector<std::pair<method, store_kind>> group_order(const std::vector<method>& methods) {
-    const std::vector<method> order = all_methods();
-    const auto rank = [&order](method m) {
-        return std::find(order.begin(), order.end(), corner_counterpart(m)) - order.begin();
-    };
-    std::vector<std::pair<method, store_kind>> groups;
-    for (const method m : methods) {
-        for (const store_kind kind : {store_kind::corners, store_kind::poses}) {
-            if (runs_on(m, kind)) {
-                groups.emplace_back(m, kind);
-            }
-        }
-    }
-    std::stable_sort(groups.begin(), groups.end(), [&rank](const auto& x, const auto& y) {
-        return rank(x.first) < rank(y.first) ||
-               (rank(x.first) == rank(y.first) && x.second == store_kind::corners &&
-                y.second == store_kind::poses);
-    });
-    return groups;
-}
-
-collide_options options_for(method test, backend b, unsigned threads) {
-    collide_options options;
-    options.test = test;
-    options.use = b;
-    options.threads = threads;
-    return options;
-}
-
-// Every group the demo times, each method's rows on corners first.
-std::vector<demo_group> demo_groups(const demo_scene& demo, const std::vector<method>& methods) {
-    std::vector<demo_group> groups;
-    const std::vector<pair_index>& pairs = demo.world.pairs;
-    for (const auto& [test, kind] : group_order(methods)) {
-        demo_group group{test, kind, "", nullptr, {}};
-        if (kind == store_kind::corners) {
-            group.reference_name = "the scalar reference (the scalar backend over soa at 1 thread)";
-            const collide_options reference = options_for(test, backend::scalar, 1);
-            group.reference = [&demo, &pairs, reference](std::uint8_t* verdicts) {
-                collide_pairs(demo.world.rects, pairs.data(), pairs.size(), verdicts, reference);
-            };
-            for (const char* store : {"soa", "records"}) {
-                const bool soa = std::strcmp(store, "soa") == 0;
-                for (const backend b : runnable_backends()) {
-                    for (const unsigned threads : {1u, 2u}) {
-                        const collide_options options = options_for(test, b, threads);
-                        auto run = [&demo, &pairs, soa, options](std::uint8_t* verdicts) {
-                            if (soa) {
-                                collide_pairs(demo.world.rects, pairs.data(), pairs.size(), verdicts,
-                                              options);
-                            } else {
-                                collide_pairs(demo.records, pairs.data(), pairs.size(), verdicts,
-                                              options);
-                            }
-                        };
-                        group.entries.push_back(demo_entry{backend_name(b), store, threads, run});
-                    }
-                }
-            }
-        } else {
-            group.reference_name = "the scalar reference on poses (obbsat::pose_method_reference)";
-            const pose_reference_fn reference = pose_method_reference(test);
-            group.reference = [&demo, &pairs, reference](std::uint8_t* verdicts) {
-                for (std::size_t i = 0; i < pairs.size(); ++i) {
-                    verdicts[i] = reference(demo.poses[pairs[i].a], demo.poses[pairs[i].b]) ? 1 : 0;
-                }
-            };
-            for (const backend b : runnable_backends()) {
-                for (const unsigned threads : {1u, 2u}) {
-                    const collide_options options = options_for(test, b, threads);
-                    auto run = [&demo, &pairs, options](std::uint8_t* verdicts) {
-                        collide_pairs(demo.poses, pairs.data(), pairs.size(), verdicts, options);
-                    };
-                    group.entries.push_back(demo_entry{backend_name(b), "poses", threads, run});
-                }
-            }
-        }
-        // ---- More rows for this method go here. --------------------------
-        // A peer implementation (another library's test on the same scene) is
-        // one more demo_entry with its own `runner` name and a `run` that
-        // writes one 0/1 byte per pair of demo.world.pairs; it is then checked
-        // against the group's reference and timed like every backend. Only add
-        // rows that really run: every figure in the table is measured here.
-        // -------------------------------------------------------------------
-        groups.push_back(std::move(group));
-    }
-    return groups;
-}
-
-double median_of(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
-
 // The first pair where `got` differs from `want`, or count if none does.
 std::size_t first_difference(const std::vector<std::uint8_t>& want,
                              const std::vector<std::uint8_t>& got) {
@@ -289,144 +127,6 @@ void print_mismatch(const demo_group& group, const demo_entry& entry, const scen
                  method_name(group.test), entry.runner.c_str(), entry.store.c_str(), entry.threads,
                  group.reference_name, at, p.a, p.b, static_cast<unsigned>(got[at]),
                  static_cast<unsigned>(want[at]));
-}
-
-const measured_row* find_row(const std::vector<measured_row>& rows, method test, const char* store,
-                             const char* runner, unsigned threads) {
-    for (const measured_row& row : rows) {
-        if (row.test == test && row.store == store && row.runner == runner && row.threads == threads) {
-            return &row;
-        }
-    }
-    return nullptr;
-}
-
-// Each method on poses against the corner test it stands in for, both over
-// packed records of the same rectangles on the best backend at 1 thread.
-void print_pose_ratios(const std::vector<measured_row>& rows, double pairs) {
-    const char* best = backend_name(best_supported_backend());
-    bool first = true;
-    for (const measured_row& row : rows) {
-        if (row.store != "poses" || row.runner != best || row.threads != 1) {
-            continue;
-        }
-        const method counterpart = corner_counterpart(row.test);
-        const measured_row* corners = find_row(rows, counterpart, "records", best, 1);
-        if (corners == nullptr) {
-            continue;
-        }
-        if (first) {
-            std::printf("poses against corners (%s, 1 thread, the same pairs):\n", best);
-            first = false;
-        }
-        std::printf("  %s on poses: %.1f Mpairs/s, %.2fx %s on records (%.1f Mpairs/s)\n",
-                    method_name(row.test), pairs / row.seconds / 1e6, corners->seconds / row.seconds,
-                    method_name(counterpart), pairs / corners->seconds / 1e6);
-    }
-}
-
-// Box2D's narrow phase on the same pairs, and the speedup of the best sat4
-// rows over it; `sat4_seconds` holds the best backend's records rows at 1
-// and 2 threads (0 where not timed).
-void print_box2d_comparison(const scene& world, unsigned reps, const std::vector<std::uint8_t>& sat4,
-                            const double sat4_seconds[2]) {
-    if (sat4.empty()) {
-        return;
-    }
-    const std::optional<peer_timing> box2d = time_box2d(world.rects, world.pairs, reps, sat4);
-    if (!box2d) {
-        std::printf("Box2D: not found when this program was built (Debian: libbox2d-dev); no peer comparison\n");
-        return;
-    }
-    const double pairs = static_cast<double>(world.pairs.size());
-    std::printf("Box2D 2.4 b2CollidePolygons, 1 thread: %.1f Mpairs/s (%.2f ns/pair), same verdict as sat4 "
-                "on %.2f%% of pairs\n",
-                pairs / box2d->median_seconds / 1e6, box2d->median_seconds / pairs * 1e9,
-                100.0 * box2d->agreement);
-    for (unsigned t = 0; t < 2; ++t) {
-        if (sat4_seconds[t] > 0.0) {
-            std::printf("  sat4 %s records, %u thread%s: %.1fx Box2D\n", backend_name(best_supported_backend()),
-                        t + 1, t == 0 ? "" : "s", box2d->median_seconds / sat4_seconds[t]);
-        }
-    }
-}
-
-// The median time of `reps` runs of `run` after one warm-up, or nothing when
-// `check`, called after every run, returns false; `prepare` runs before each
-// run, untimed.
-template <class Prepare, class Run, class Check>
-std::optional<double> timed_median(unsigned reps, Prepare prepare, Run run, Check check) {
-    std::vector<double> times;
-    for (unsigned rep = 0; rep <= reps; ++rep) {
-        prepare();
-        const clock::time_point start = clock::now();
-        run();
-        const double elapsed = seconds_since(start);
-        if (!check()) {
-            return std::nullopt;
-        }
-        if (rep > 0) {  // rep 0 is the warm-up
-            times.push_back(elapsed);
-        }
-    }
-    return median_of(times);
-}
-
-// Getting a scene's poses into corners for a corner method: the SIMD
-// conversion of rotation-vector poses (convert_to_corners into the caller's
-// buffer, every backend, each run checked byte for byte against
-// ref::corners_of) against corners built from angles (rect_records::from_poses:
-// cos and sin in double per box, into a new checked store). Returns false
-// after a message when a conversion differs from the reference.
-bool print_conversions(const demo_scene& demo, unsigned reps) {
-    const pose_records& poses = demo.poses;
-    const std::size_t count = poses.size();
-    std::vector<rect> want(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        want[i] = ref::corners_of(poses[i]);
-    }
-    std::vector<pose> angles(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        angles[i] = pose_of(demo.records[i]);
-    }
-    const double boxes = static_cast<double>(count);
-    const std::optional<double> from_angles = timed_median(
-        reps, [] {}, [&angles] { rect_records built = rect_records::from_poses(angles); (void)built; },
-        [] { return true; });
-    std::printf("\nposes to corners, %zu boxes, median of %u runs after one warm-up:\n", count, reps);
-    std::printf("  %-16s  %-24s  %-8s  %8s  %9s\n", "pose", "conversion", "backend", "ns/box", "speedup");
-    std::printf("  %-16s  %-24s  %-8s  %8.2f  %8.2fx\n", "angle", "rect_records::from_poses", "-",
-                *from_angles / boxes * 1e9, 1.0);
-    // Filled with NaN bytes before each run, so that a corner a run did not
-    // write cannot pass for the reference's.
-    std::vector<rect> got(count);
-    const auto poison = [&got] { std::memset(static_cast<void*>(got.data()), 0xff, got.size() * sizeof(rect)); };
-    for (const backend b : runnable_backends()) {
-        std::size_t differs = count;
-        const std::optional<double> seconds = timed_median(
-            reps, poison, [&] { convert_to_corners(poses, got.data(), b); },
-            [&] {
-                for (std::size_t i = 0; i < count; ++i) {
-                    if (std::memcmp(&got[i], &want[i], sizeof(rect)) != 0) {
-                        differs = i;
-                        return false;
-                    }
-                }
-                return true;
-            });
-        if (!seconds) {
-            std::fprintf(stderr,
-                         "obbsat: demo: convert_to_corners on %s gives other corners than ref::corners_of "
-                         "for pose %zu\n",
-                         backend_name(b), differs);
-            return false;
-        }
-        std::printf("  %-16s  %-24s  %-8s  %8.2f  %8.2fx\n", "rotation vector", "convert_to_corners",
-                    backend_name(b), *seconds / boxes * 1e9, *from_angles / *seconds);
-    }
-    std::printf("every convert_to_corners run gave the corners of ref::corners_of, byte for byte; speedup\n"
-                "against corners built from angles (cos and sin in double per box, into a new checked store)\n\n");
-    return true;
 }
 
 }  // namespace
@@ -466,7 +166,7 @@ void print_demo_help(std::FILE* out) {
 int run_demo(const arguments& args) {
     const demo_settings settings = settings_from(parse_options(args, demo_option_specs()));
 
-    const clock::time_point build_start = clock::now();
+    const demo_clock::time_point build_start = demo_clock::now();
     demo_scene demo;
     demo.world = make_scene(
         scene_spec_for(settings.density, settings.rects, settings.pairs, settings.seed));

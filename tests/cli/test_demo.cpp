@@ -166,4 +166,80 @@ TEST(demo, method_names_one_method_on_the_stores_it_runs_on) {
     expect_rows(demo_rows(sat4.out), expected_demo_rows("sat4", {"soa", "records"}));
 }
 
+// ---------------------------------------------------------------------------
+// The scene query section: --scene-boxes N, from 0 to 4294967295, 0 leaving
+// it out; a scene of one box has no pairs, but its section still runs.
+
+run_result demo_with_scene_boxes(const scratch& s, const std::string& boxes) {
+    return s.run("demo --rects 2000 --pairs 10000 --reps 1 --method sat4 --scene-boxes " + boxes);
+}
+
+const std::string scene_section = "\nscene query: ";
+const std::string scene_rows_agree = "every row gave the same pairs as the cold query at 1 thread";
+
+TEST(demo, scene_boxes_0_leaves_the_scene_query_out) {
+    const scratch s;
+    const run_result r = demo_with_scene_boxes(s, "0");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("rows agree with the scalar reference"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(scene_section), std::string::npos) << r.out;
+}
+
+TEST(demo, scene_boxes_1_runs_the_scene_query_on_one_box_and_says_it_has_no_pairs) {
+    const scratch s;
+    const run_result r = demo_with_scene_boxes(s, "1");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find(scene_section + "1 poses to every colliding pair"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("a scene of one box has no pairs"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(scene_rows_agree), std::string::npos) << r.out;
+    // Every row of the section (uniform and mixed, 1 and 2 threads, cold and
+    // frame) found no pairs: 0.00 pairs per box.
+    std::size_t rows = 0;
+    for (const std::string& line : obbsat::cli_test::lines_of(r.out)) {
+        std::istringstream fields(line);
+        std::string sizes, query;
+        unsigned threads = 0;
+        if (fields >> sizes >> threads >> query && (sizes == "uniform" || sizes == "mixed")) {
+            ++rows;
+            EXPECT_NE(line.find("     0.00  "), std::string::npos) << line;
+        }
+    }
+    EXPECT_EQ(rows, 8u) << r.out;
+}
+
+TEST(demo, scene_boxes_2_runs_the_scene_query) {
+    const scratch s;
+    const run_result r = demo_with_scene_boxes(s, "2");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find(scene_section + "2 poses to every colliding pair"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(scene_rows_agree), std::string::npos) << r.out;
+}
+
+TEST(demo, scene_boxes_outside_its_range_is_a_usage_error_naming_the_range) {
+    const scratch s;
+    for (const char* boxes : {"-1", "4294967296", "many"}) {
+        const run_result r = demo_with_scene_boxes(s, boxes);
+        EXPECT_EQ(r.status, 2) << boxes;
+        EXPECT_EQ(r.err, "obbsat: demo: --scene-boxes: expected a whole number from 0 to 4294967295, got '" +
+                             std::string(boxes) + "' (see 'obbsat demo --help')\n")
+            << boxes;
+        EXPECT_EQ(r.out, "") << boxes;
+    }
+}
+
+TEST(demo, help_states_the_scene_boxes_range) {
+    const scratch s;
+    const run_result r = s.run("demo --help");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("[--scene-boxes N]"), std::string::npos) << r.out;
+    std::string option_line;
+    for (const std::string& line : obbsat::cli_test::lines_of(r.out)) {
+        if (line.find("  --scene-boxes N  ") == 0) {
+            option_line = line;
+        }
+    }
+    EXPECT_NE(option_line.find("0 to 4294967295"), std::string::npos) << r.out;
+    EXPECT_NE(option_line.find("0 leaves it out"), std::string::npos) << r.out;
+}
+
 }  // namespace

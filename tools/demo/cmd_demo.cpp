@@ -35,7 +35,7 @@ struct demo_settings {
     scene_density density = scene_density::typical;
     const char* density_name = "typical";
     unsigned reps = 7;
-    std::size_t scene_boxes = 0;  // the scene query's section: 0 leaves it out; by default 10 x rects
+    std::size_t scene_boxes = 0;  // the scene query's section, any size: 0 leaves it out; by default 10 x rects
     // The article's test on corners, and beside it the same test on poses.
     std::vector<method> methods{method::sat4, method::local};
 };
@@ -47,7 +47,8 @@ const std::vector<option_spec>& demo_option_specs() {
         {"seed", "S", "scene seed (default: 1)"},
         {"density", "D", "sparse, typical or dense: about 5%, 30% or 80% collide (default: typical)"},
         {"reps", "K", "timed repetitions per row, after one warm-up; the median counts (default: 7)"},
-        {"scene-boxes", "N", "boxes in the scene query's section, 0 to leave it out (default: 10 x rects, 1000000)"},
+        {"scene-boxes", "N",
+         "boxes in the scene query's section, 0 to 4294967295; 0 leaves it out (default: 10 x rects, 1000000)"},
         {"method", "NAME", "a collision test, or 'all' for every one this build offers (default: sat4 and local)"},
         {"help", "", "show this help"},
     };
@@ -134,7 +135,7 @@ void print_mismatch(const demo_group& group, const demo_entry& entry, const scen
 void print_demo_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat demo [--rects N] [--pairs N] [--seed S] [--density D] [--reps K]\n"
-                 "                   [--method NAME|all]\n"
+                 "                   [--method NAME|all] [--scene-boxes N]\n"
                  "\n"
                  "Builds a seeded broadphase-like scene and runs method sat4 and, beside it,\n"
                  "method local on the same rectangles as poses (or the --method given, on every\n"
@@ -257,7 +258,7 @@ int run_demo(const arguments& args) {
     }
     print_box2d_comparison(world, settings.reps, sat4_verdicts, best_sat4_seconds);
     accuracy::print_accuracy_brief(stdout, timed);
-    if (settings.scene_boxes >= 2) {
+    if (settings.scene_boxes > 0) {  // one box is a scene too: it has no pairs
         scene_demo_settings scene;
         scene.boxes = settings.scene_boxes;
         scene.seed = settings.seed;

@@ -1,6 +1,6 @@
 // All-or-nothing output: the target changes only on commit, and no temporary
 // file outlives the writer.
-#include "atomic_output.hpp"
+#include "io/atomic_output.hpp"
 
 #include <gtest/gtest.h>
 

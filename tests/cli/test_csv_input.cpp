@@ -1,6 +1,6 @@
 // The CLI's readers: what they accept, and for every rejected line the file,
 // line number and reason of the error.
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 
 #include <obbsat/pose.hpp>
 #include <obbsat/pose_records.hpp>

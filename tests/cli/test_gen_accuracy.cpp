@@ -5,7 +5,7 @@
 // library's references give, for the methods on corners and on poses, and its
 // SVG is well-formed with one point per method and store; demo prints the
 // short form.
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 #include "program_runner.hpp"
 
 #include <obbsat/method.hpp>

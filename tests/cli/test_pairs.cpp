@@ -3,7 +3,7 @@
 // exact oracle for exact), cross queries, --out against standard output,
 // errors with file and line and nothing written, refused combinations, and a
 // generated scene read back.
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 #include "program_runner.hpp"
 
 #include <obbsat/backend.hpp>

@@ -4,7 +4,7 @@
 // status 2 with one "obbsat: ..." line naming the file (and line), --out
 // untouched; every accepted extreme input gives each method's reference
 // verdicts.
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 #include "program_runner.hpp"
 
 #include <obbsat/backend.hpp>

@@ -14,7 +14,7 @@
 // read as a pose file too.
 #include "fuzz_bytes.hpp"
 
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>

@@ -1,7 +1,7 @@
-#include "accuracy_svg.hpp"
+#include "draw/accuracy_svg.hpp"
 
-#include "accuracy_text.hpp"
-#include "svg_writer.hpp"
+#include "accuracy/accuracy_text.hpp"
+#include "draw/svg_writer.hpp"
 
 #include <algorithm>
 #include <cinttypes>

@@ -10,7 +10,7 @@
 // checked by a program as well as by eye.
 #pragma once
 
-#include "accuracy_report.hpp"
+#include "accuracy/accuracy_report.hpp"
 
 #include <string>
 

@@ -5,12 +5,12 @@
 // The verdicts drawn are the library's own (collide_pairs on the chosen
 // backend); the panel replays the method's steps to find the separating axis
 // and stops with an internal error if the replay disagrees with the library.
-#include "atomic_output.hpp"
-#include "cli_args.hpp"
-#include "commands.hpp"
-#include "csv_input.hpp"
-#include "svg_pair_panel.hpp"
-#include "svg_writer.hpp"
+#include "cli/cli_args.hpp"
+#include "cli/commands.hpp"
+#include "draw/svg_pair_panel.hpp"
+#include "draw/svg_writer.hpp"
+#include "io/atomic_output.hpp"
+#include "io/csv_input.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>

@@ -1,4 +1,4 @@
-#include "svg_pair_axes.hpp"
+#include "draw/svg_pair_axes.hpp"
 
 #include <obbsat/oracle/orientation.hpp>
 #include <obbsat/ref/sat4.hpp>

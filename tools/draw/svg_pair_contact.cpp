@@ -1,4 +1,4 @@
-#include "svg_pair_contact.hpp"
+#include "draw/svg_pair_contact.hpp"
 
 #include <obbsat/oracle/orientation.hpp>
 

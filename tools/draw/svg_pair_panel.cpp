@@ -1,9 +1,9 @@
-#include "svg_pair_panel.hpp"
+#include "draw/svg_pair_panel.hpp"
 
-#include "svg_pair_axes.hpp"
-#include "svg_pair_contact.hpp"
-#include "svg_pose_axes.hpp"
-#include "svg_window.hpp"
+#include "draw/svg_pair_axes.hpp"
+#include "draw/svg_pair_contact.hpp"
+#include "draw/svg_pose_axes.hpp"
+#include "draw/svg_window.hpp"
 
 #include <obbsat/oracle/quad_region.hpp>
 

@@ -20,7 +20,7 @@
 // <g class="separating-axis">, the inset is <g class="inset">.
 #pragma once
 
-#include "svg_writer.hpp"
+#include "draw/svg_writer.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>

@@ -1,4 +1,4 @@
-#include "svg_pose_axes.hpp"
+#include "draw/svg_pose_axes.hpp"
 
 #include <obbsat/oracle/pose_contact.hpp>
 #include <obbsat/ref/local.hpp>

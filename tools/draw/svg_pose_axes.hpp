@@ -18,7 +18,7 @@
 // its terms in double (oracle::slack_signs, oracle::terms_of_axes).
 #pragma once
 
-#include "svg_pair_axes.hpp"
+#include "draw/svg_pair_axes.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/rect_pose.hpp>

@@ -1,4 +1,4 @@
-#include "svg_window.hpp"
+#include "draw/svg_window.hpp"
 
 #include <algorithm>
 #include <utility>

@@ -11,7 +11,7 @@
 // The window's SVG clip path makes the final, exact cut.
 #pragma once
 
-#include "svg_pair_contact.hpp"
+#include "draw/svg_pair_contact.hpp"
 
 #include <obbsat/rect.hpp>
 

@@ -1,4 +1,4 @@
-#include "svg_writer.hpp"
+#include "draw/svg_writer.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -6,7 +6,7 @@
 // full disk, a closed pipe) throws output_error either way.
 #pragma once
 
-#include "atomic_output.hpp"
+#include "io/atomic_output.hpp"
 
 #include <cstddef>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "demo_box2d.hpp"
+#include "demo/demo_box2d.hpp"
 
 #include <obbsat/pose.hpp>
 

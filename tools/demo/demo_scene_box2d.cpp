@@ -1,4 +1,4 @@
-#include "demo_scene_box2d.hpp"
+#include "demo/demo_scene_box2d.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "accuracy_report.hpp"
+#include "accuracy/accuracy_report.hpp"
 
 #include <obbsat/collide.hpp>
 #include <obbsat/oracle/classify_pairs.hpp>

@@ -1,12 +1,12 @@
 // obbsat: decide which pairs of rotated rectangles collide, from the command
 // line. This file picks the subcommand and turns every failure into a message
 // on stderr and an exit status.
-#include "accuracy_commands.hpp"
-#include "atomic_output.hpp"
-#include "cli_args.hpp"
-#include "commands.hpp"
-#include "csv_input.hpp"
-#include "temporary_files.hpp"
+#include "accuracy/accuracy_commands.hpp"
+#include "cli/cli_args.hpp"
+#include "cli/commands.hpp"
+#include "io/atomic_output.hpp"
+#include "io/csv_input.hpp"
+#include "io/temporary_files.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/error.hpp>

@@ -1,4 +1,4 @@
-#include "accuracy_text.hpp"
+#include "accuracy/accuracy_text.hpp"
 
 #include <cinttypes>
 

@@ -1,6 +1,6 @@
 // obbsat backends: what this build and this CPU offer, and what 'auto' picks.
-#include "cli_args.hpp"
-#include "commands.hpp"
+#include "cli/cli_args.hpp"
+#include "cli/commands.hpp"
 
 #include <obbsat/backend.hpp>
 

@@ -1,7 +1,7 @@
-#include "accuracy_brief.hpp"
+#include "accuracy/accuracy_brief.hpp"
 
-#include "accuracy_report.hpp"
-#include "accuracy_text.hpp"
+#include "accuracy/accuracy_report.hpp"
+#include "accuracy/accuracy_text.hpp"
 
 #include <cinttypes>
 

@@ -1,4 +1,4 @@
-#include "atomic_output.hpp"
+#include "io/atomic_output.hpp"
 
 #include <cerrno>
 #include <cstdlib>

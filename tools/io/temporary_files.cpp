@@ -1,6 +1,6 @@
-#include "temporary_files.hpp"
+#include "io/temporary_files.hpp"
 
-#include "atomic_output.hpp"
+#include "io/atomic_output.hpp"
 
 #include <atomic>
 #include <climits>

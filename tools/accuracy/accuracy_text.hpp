@@ -3,7 +3,7 @@
 // store (its store's families as rows), and a summary per method and store.
 #pragma once
 
-#include "accuracy_report.hpp"
+#include "accuracy/accuracy_report.hpp"
 
 #include <cstdio>
 #include <string>

@@ -1,4 +1,4 @@
-#include "accuracy_json.hpp"
+#include "accuracy/accuracy_json.hpp"
 
 #include <cinttypes>
 #include <cmath>

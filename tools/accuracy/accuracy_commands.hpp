@@ -3,7 +3,7 @@
 // how subcommands report errors).
 #pragma once
 
-#include "commands.hpp"
+#include "cli/commands.hpp"
 
 #include <cstdio>
 

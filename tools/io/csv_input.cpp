@@ -1,4 +1,4 @@
-#include "csv_input.hpp"
+#include "io/csv_input.hpp"
 
 #include <obbsat/pose.hpp>
 #include <obbsat/rect_soa.hpp>

@@ -3,13 +3,13 @@
 // families), scored against the exact oracle, next to every method's speed;
 // tables on stdout, and on request the figures as JSON and a speed-against-
 // error plot as SVG.
-#include "accuracy_commands.hpp"
-#include "accuracy_json.hpp"
-#include "accuracy_report.hpp"
+#include "accuracy/accuracy_commands.hpp"
+#include "accuracy/accuracy_json.hpp"
+#include "accuracy/accuracy_report.hpp"
+#include "accuracy/accuracy_text.hpp"
+#include "cli/cli_args.hpp"
 #include "draw/accuracy_svg.hpp"
-#include "accuracy_text.hpp"
-#include "atomic_output.hpp"
-#include "cli_args.hpp"
+#include "io/atomic_output.hpp"
 
 #include <obbsat/suites/family.hpp>
 #include <obbsat/suites/pose_family.hpp>

@@ -14,7 +14,7 @@
 // replace and renaming over it would remove the device.
 #pragma once
 
-#include "temporary_files.hpp"
+#include "io/temporary_files.hpp"
 
 #include <cstddef>
 #include <cstdio>

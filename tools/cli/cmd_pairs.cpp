@@ -6,10 +6,10 @@
 // so an input error leaves standard output empty as well as --out untouched.
 // Memory is the records, the query's own working set while it runs, and the
 // pair list, which must be whole to be sorted (see pair_rows).
-#include "cli_args.hpp"
-#include "commands.hpp"
-#include "csv_input.hpp"
-#include "output_target.hpp"
+#include "cli/cli_args.hpp"
+#include "cli/commands.hpp"
+#include "io/csv_input.hpp"
+#include "io/output_target.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/error.hpp>

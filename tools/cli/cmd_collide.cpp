@@ -8,10 +8,10 @@
 // the end, so a bad line anywhere leaves the target as it was. On standard
 // output, verdicts of chunks before a bad line have already been written when
 // the error is found; the exit status says to discard them.
-#include "cli_args.hpp"
-#include "commands.hpp"
-#include "csv_input.hpp"
-#include "output_target.hpp"
+#include "cli/cli_args.hpp"
+#include "cli/commands.hpp"
+#include "io/csv_input.hpp"
+#include "io/output_target.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>

@@ -21,7 +21,7 @@
 // "store", "label" nor "pose_store".
 #pragma once
 
-#include "accuracy_report.hpp"
+#include "accuracy/accuracy_report.hpp"
 
 #include <string>
 

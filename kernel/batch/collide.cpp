@@ -9,6 +9,7 @@
 #include <obbsat/error.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <thread>
@@ -189,10 +190,24 @@ void require_all_finite(const rect* rects, std::size_t count, const collide_opti
     }
 }
 
+/// Throws invalid_input when the caller's verdict buffer (`count` bytes) and
+/// another of the caller's buffers (`bytes` long, named `what`) share memory:
+/// verdicts written by one part would overwrite what another has yet to read.
+void require_verdicts_apart(const std::uint8_t* verdicts, std::size_t count, const void* other,
+                            std::size_t bytes, const char* what) {
+    const auto v = reinterpret_cast<std::uintptr_t>(verdicts);
+    const auto o = reinterpret_cast<std::uintptr_t>(other);
+    if (count != 0 && bytes != 0 && v < o + bytes && o < v + count) {
+        throw invalid_input(std::string("verdicts and ") + what + " share memory: the verdict buffer must not overlap " +
+                            what);
+    }
+}
+
 }  // namespace
 
 backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
+    require_verdicts_apart(verdicts, count, pairs, count * sizeof(pair_index), "pairs");
     const backend ran = resolve_backend(options.use);
     check_indices(ran, rects.size(), pairs, count, options);
     const detail::indexed_fn kernel = kernels_of(ran, options).indexed;
@@ -205,6 +220,7 @@ backend collide_pairs(const rect_soa& rects, const pair_index* pairs, std::size_
 
 backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
+    require_verdicts_apart(verdicts, count, pairs, count * sizeof(pair_index), "pairs");
     const backend ran = resolve_backend(options.use);
     check_indices(ran, rects.size(), pairs, count, options);
     const detail::indexed_records_fn kernel = records_kernel_of(ran, options, rects.size());
@@ -217,6 +233,8 @@ backend collide_pairs(const rect_records& rects, const pair_index* pairs, std::s
 
 backend collide_pairs(const rect* rects, std::size_t rect_count, const pair_index* pairs,
                       std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+    require_verdicts_apart(verdicts, count, pairs, count * sizeof(pair_index), "pairs");
+    require_verdicts_apart(verdicts, count, rects, rect_count * sizeof(rect), "rects");
     const backend ran = resolve_backend(options.use);
     require_all_finite(rects, rect_count, options);
     check_indices(ran, rect_count, pairs, count, options);
@@ -307,6 +325,7 @@ std::vector<std::uint8_t> collide_stream(const rect_soa& a, const rect_soa& b,
 
 backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
+    require_verdicts_apart(verdicts, count, pairs, count * sizeof(pair_index), "pairs");
     const backend ran = resolve_backend(options.use);
     const detail::pose_indexed_fn kernel = pose_records_kernel_of(ran, options, poses.size());
     check_indices(ran, poses.size(), pairs, count, options);
@@ -319,6 +338,8 @@ backend collide_pairs(const pose_records& poses, const pair_index* pairs, std::s
 
 backend collide_pairs(const rect_pose* poses, std::size_t pose_count, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
+    require_verdicts_apart(verdicts, count, pairs, count * sizeof(pair_index), "pairs");
+    require_verdicts_apart(verdicts, count, poses, pose_count * sizeof(rect_pose), "poses");
     const backend ran = resolve_backend(options.use);
     const detail::pose_stream_fn kernel = pose_kernels_of(ran, options).stream;
     require_valid_poses(poses, pose_count);

@@ -62,10 +62,45 @@ __all__ = [
 
 _MAX_INDEX = 2**32 - 1
 
+# The most cores a call may ask for: the library counts them in an unsigned int.
+_MAX_THREADS = 2**32 - 1
+
 # The method of the pair-list calls when none is given: the article's test on
 # each form (as the command-line program's ``collide --rects`` and ``collide
 # --poses``). Scene queries default to exact instead.
 _DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
+_SCENE_METHOD = "exact"
+_DEFAULT_BACKEND = "auto"
+
+
+def _backend(backend):
+    """The backend to ask for: ``"auto"`` for ``None``."""
+    return _DEFAULT_BACKEND if backend is None else backend
+
+
+def _threads(threads):
+    """``threads`` as an int, refused (``ValueError``) outside 0 .. 2**32 - 1."""
+    value = int(threads)
+    if not 0 <= value <= _MAX_THREADS:
+        raise ValueError(f"threads must be >= 0 and <= {_MAX_THREADS} (0 means every core), not {value}")
+    return value
+
+
+def _refuse_store(value, call, what, expected):
+    """``TypeError`` naming the call, the argument and what it expected when a
+    store (:class:`RectRecords`, :class:`PoseRecords`) is passed where it does not go."""
+    if isinstance(value, (RectRecords, PoseRecords)):
+        raise TypeError(f"{call}: {what} must be {expected}, got {type(value).__name__}")
+
+
+def _require_apart(out, **inputs):
+    """``ValueError`` naming both when ``out`` shares memory with one of the
+    arrays the call reads: the results would overwrite them."""
+    if not isinstance(out, _np.ndarray):
+        return
+    for name, value in inputs.items():
+        if isinstance(value, _np.ndarray) and _np.shares_memory(out, value):
+            raise ValueError(f"out and {name} share memory: out must not overlap {name}")
 
 
 def methods(poses=False):
@@ -97,11 +132,12 @@ def resolved_backend(backend="auto"):
     """The backend a request runs on here: for ``"auto"``, the environment
     variable ``OBBSAT_BACKEND`` if set, else the best this CPU runs.
     Raises ``UnsupportedBackendError`` for one this CPU cannot run.
+    ``None`` is ``"auto"``.
 
     >>> obbsat.resolved_backend("scalar")
     'scalar'
     """
-    return _core.resolved_backend(backend)
+    return _core.resolved_backend(_backend(backend))
 
 
 def _form(rects, what):
@@ -225,6 +261,9 @@ def _verdicts(out, count):
     return out
 
 
+_PAIRS_EXPECTED = "an (M, 2) integer array"
+
+
 def _store(rects, method):
     """``(rects, call, method)``: the rectangles as the library reads them, the
     ``_core`` call for their store, and the method (the store's default for
@@ -261,12 +300,15 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
         One of :func:`methods` for the form of ``rects`` (``methods()`` on
         corners, ``methods(poses=True)`` on poses). ``None``: ``"sat4"`` on
         corners, ``"local"`` on poses.
-    backend : str
-        ``"auto"`` or one of :func:`backends`; verdicts never depend on it.
+    backend : str, optional
+        ``"auto"`` (also for ``None``) or one of :func:`backends`; verdicts
+        never depend on it.
     threads : int
-        Cores to split the batch over; 0 means all. The GIL is released.
+        Cores to split the batch over, 0 .. 2**32 - 1; 0 means all. The GIL
+        is released.
     out : ndarray of bool or uint8, shape (M,), optional
-        Where to write the verdicts (C-contiguous, writable).
+        Where to write the verdicts (C-contiguous, writable), sharing no
+        memory with ``rects`` or ``pairs``.
 
     Returns
     -------
@@ -283,10 +325,11 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
         field, e.g. ``pose 3: half extent hy is -1, negative``), a shape is
         wrong, a method unknown or not one that runs on the form of
         ``rects``, a backend unknown, or the backend cannot run here
-        (``UnsupportedBackendError``).
+        (``UnsupportedBackendError``), ``threads`` is outside 0 .. 2**32 - 1,
+        or ``out`` shares memory with ``rects`` or ``pairs``.
     TypeError
-        A dtype is not numeric (rects), not integer (pairs), or ``out`` is not
-        a writable C-contiguous bool/uint8 array.
+        A dtype is not numeric (rects), not integer (pairs), ``pairs`` is a
+        store, or ``out`` is not a writable C-contiguous bool/uint8 array.
 
     Nothing is written to ``out`` when an error is raised.
 
@@ -308,10 +351,13 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
     ...
     ValueError: method sat4 does not run on poses (pose_records take conservative, exact, local)
     """
+    _refuse_store(pairs, "collide", "pairs", _PAIRS_EXPECTED)
+    _require_apart(out, rects=rects, pairs=pairs)
+    threads = _threads(threads)
     rects, call, method = _store(rects, method)
     pairs = _pairs(pairs, len(rects))
     verdicts = _verdicts(out, len(pairs))
-    call(rects, pairs, verdicts, method, backend, int(threads))
+    call(rects, pairs, verdicts, method, _backend(backend), threads)
     return verdicts
 
 
@@ -330,6 +376,7 @@ def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1):
     >>> obbsat.colliding_pairs(poses, [[0, 1], [1, 1]], method="conservative")
     array([[1, 1]])
     """
+    _refuse_store(pairs, "colliding_pairs", "pairs", _PAIRS_EXPECTED)
     if not isinstance(pairs, _np.ndarray):
         pairs = _np.asarray(pairs)
     if pairs.size == 0 and pairs.ndim < 2:
@@ -348,7 +395,8 @@ def collide_stream(a, b, method=None, backend="auto", threads=1, out=None):
     is what the streaming kernels read; the copy checks every coordinate (or
     pose). Other arguments, the default method, the result and the errors
     are as in :func:`collide`; a length mismatch, or corners against poses,
-    is a ``ValueError``.
+    is a ``ValueError``; a :func:`records` store, a ``TypeError`` (a stream
+    reads arrays).
 
     >>> a = np.array([[0, 1, 2, 1, 2, 0, 0, 0]] * 2, dtype=np.float32)
     >>> b = np.array([[1, 2, 3, 2, 3, .5, 1, .5], [5, 6, 6, 6, 6, 5, 5, 5]], dtype=np.float32)
@@ -358,6 +406,11 @@ def collide_stream(a, b, method=None, backend="auto", threads=1, out=None):
     ...                       np.array([[1.5, 1, 0.5, 0.5, 0.6, 0.8], [3, 0, 1, 1, 0, 1]], dtype=np.float32))
     array([ True, False])
     """
+    for what, batch in (("a", a), ("b", b)):
+        _refuse_store(batch, "collide_stream", what,
+                      "an array of corners, (N, 8) or (N, 4, 2), or of poses, (N, 6), not a store")
+    _require_apart(out, a=a, b=b)
+    threads = _threads(threads)
     form_a, a = _form(a, "a")
     form_b, b = _form(b, "b")
     if form_a != form_b:
@@ -367,7 +420,7 @@ def collide_stream(a, b, method=None, backend="auto", threads=1, out=None):
         method = _DEFAULT_METHOD[form_a]
     verdicts = _verdicts(out, len(a))
     decide = _core.collide_pose_stream if form_a == "poses" else _core.collide_stream
-    decide(a, b, verdicts, method, backend, int(threads))
+    decide(a, b, verdicts, method, _backend(backend), threads)
     return verdicts
 
 
@@ -398,10 +451,12 @@ def corners_of_poses(poses, backend="auto"):
             [15.,  3.],
             [ 9., -5.]]], dtype=float32)
     """
+    backend = _backend(backend)
     if isinstance(poses, PoseRecords):
         out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
         _core.store_corners(poses, out, backend)
         return out
+    _refuse_store(poses, "corners_of_poses", "poses", "a PoseRecords store or an (N, 6) float array")
     poses = _poses(poses, "poses")
     out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
     _core.pose_corners(poses, out, backend)
@@ -454,8 +509,8 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
         With it, the pairs (i, j) with i indexing ``boxes`` and j indexing
         ``against`` (every i and j, not only i < j).
     method : str, optional
-        One of :func:`methods` for the form. The default, ``"exact"``, is the
-        default of every scene query (``obbsat pairs`` on the command line,
+        One of :func:`methods` for the form. The default (also for ``None``),
+        ``"exact"``, is the default of every scene query (``obbsat pairs`` on the command line,
         :func:`obbsat.dask.find_pairs`, :class:`PairFinder`): the exact answer.
         :func:`collide` defaults to the fastest float method instead.
     backend, threads
@@ -474,8 +529,9 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
         A coordinate or pose is invalid (named as in :func:`collide`, with
         ``boxes: `` or ``against: `` in front for a cross query), a shape is
         wrong, ``boxes`` and ``against`` hold different forms, a method is
-        unknown or does not run on the form, a backend unknown, ``threads <
-        0``, or the backend cannot run here (``UnsupportedBackendError``).
+        unknown or does not run on the form, a backend unknown, ``threads``
+        outside 0 .. 2**32 - 1, or the backend cannot run here
+        (``UnsupportedBackendError``).
     TypeError
         A dtype is not numeric.
 
@@ -491,9 +547,11 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
     array([[0, 1],
            [1, 1]], dtype=uint32)
     """
+    method = _SCENE_METHOD if method is None else method
+    threads = _threads(threads)
     form, boxes, against = _scene(boxes, against)
     query = _core.find_pairs_poses if form == "poses" else _core.find_pairs_corners
-    return query(boxes, against, method, backend, int(threads))
+    return query(boxes, against, method, _backend(backend), threads)
 
 
 class PairFinder:
@@ -511,7 +569,7 @@ class PairFinder:
     (:class:`FindPairsStats`: ``boxes``, ``strips``, ``visits``,
     ``candidates``, ``pairs``, ``slow_path_pairs``, ``reused_order``,
     ``reused_candidates``, ``kept_candidates`` and the seconds of each phase). The default method is ``"exact"``, as in
-    :func:`find_pairs`. One call runs at a time (another thread calling meanwhile waits, with
+    :func:`find_pairs` (``method=None`` too; ``backend=None`` is ``"auto"``). One call runs at a time (another thread calling meanwhile waits, with
     the GIL released).
 
     >>> finder = obbsat.PairFinder()
@@ -527,12 +585,12 @@ class PairFinder:
     """
 
     def __init__(self, method="exact", backend="auto", threads=1):
-        self._method = method
-        self._backend = backend
-        self._threads = int(threads)
+        self._method = _SCENE_METHOD if method is None else method
+        self._backend = _backend(backend)
+        self._threads = _threads(threads)
         self._ran = False
-        # An unknown method or backend, one this CPU cannot run, or threads < 0 is refused here.
-        self._query = _core.PairFinder(method, backend, self._threads)
+        # An unknown method or backend, one this CPU cannot run, or threads out of range is refused here.
+        self._query = _core.PairFinder(self._method, self._backend, self._threads)
 
     def __repr__(self):
         return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads})"

@@ -16,7 +16,7 @@ _Out = TypeVar("_Out", npt.NDArray[np.bool_], npt.NDArray[np.uint8])
 def aligned(array: npt.ArrayLike, alignment: int = ...) -> np.ndarray: ...
 def methods(poses: bool = ...) -> list[str]: ...
 def backends(compiled: bool = ...) -> list[str]: ...
-def resolved_backend(backend: str = ...) -> str: ...
+def resolved_backend(backend: str | None = ...) -> str: ...
 @overload
 def records(rects: RectRecords) -> RectRecords: ...
 @overload
@@ -27,7 +27,7 @@ def collide(
     rects: npt.ArrayLike | RectRecords | PoseRecords,
     pairs: npt.ArrayLike,
     method: str | None = ...,
-    backend: str = ...,
+    backend: str | None = ...,
     threads: int = ...,
     out: _Out | None = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
@@ -35,29 +35,29 @@ def colliding_pairs(
     rects: npt.ArrayLike | RectRecords | PoseRecords,
     pairs: npt.ArrayLike,
     method: str | None = ...,
-    backend: str = ...,
+    backend: str | None = ...,
     threads: int = ...,
 ) -> npt.NDArray[np.integer[Any]]: ...
 def collide_stream(
     a: npt.ArrayLike,
     b: npt.ArrayLike,
     method: str | None = ...,
-    backend: str = ...,
+    backend: str | None = ...,
     threads: int = ...,
     out: _Out | None = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
-def corners_of_poses(poses: npt.ArrayLike | PoseRecords, backend: str = ...) -> npt.NDArray[np.float32]: ...
+def corners_of_poses(poses: npt.ArrayLike | PoseRecords, backend: str | None = ...) -> npt.NDArray[np.float32]: ...
 def find_pairs(
     boxes: npt.ArrayLike | RectRecords | PoseRecords,
     against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
     *,
-    method: str = ...,
-    backend: str = ...,
+    method: str | None = ...,
+    backend: str | None = ...,
     threads: int = ...,
 ) -> npt.NDArray[np.uint32]: ...
 
 class PairFinder:
-    def __init__(self, method: str = ..., backend: str = ..., threads: int = ...) -> None: ...
+    def __init__(self, method: str | None = ..., backend: str | None = ..., threads: int = ...) -> None: ...
     def find(
         self,
         boxes: npt.ArrayLike | RectRecords | PoseRecords,

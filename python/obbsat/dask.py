@@ -113,6 +113,7 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, client=None):
     method, backend, threads
         As in :func:`obbsat.collide`, for each chunk (``threads`` per task);
         ``method=None`` is ``"sat4"`` on corners, ``"local"`` on poses.
+        ``threads`` out of 0 .. 2**32 - 1 is refused here (``ValueError``).
     client : distributed.Client, optional
         Where to broadcast the rectangles; the default client if omitted.
         Without any client (Dask's local schedulers) the store is shared in
@@ -123,9 +124,10 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, client=None):
     """
     import dask.array as da
 
+    threads = _obbsat._threads(threads)
     pairs = _as_pair_array(pairs)
     store = rects if _is_shared(rects) else shared_records(rects, client)
-    return da.map_blocks(_decide_chunk, pairs, store, method, backend, int(threads),
+    return da.map_blocks(_decide_chunk, pairs, store, method, backend, threads,
                          drop_axis=1, dtype=bool, meta=_np.empty((0,), dtype=bool))
 
 
@@ -342,7 +344,8 @@ def find_pairs(boxes, tile, against=None, *, method="exact", backend="auto", thr
         j ``against``, both of one form.
     method, backend, threads
         As in :func:`obbsat.find_pairs` (``threads`` per task; the method
-        ``"exact"`` by default). Checked here, before any work.
+        ``"exact"`` by default, also for ``None``). Checked here, before any
+        work.
     extent : (x_lo, y_lo, x_hi, y_hi), optional
         The region the tiles cover. Without it, the least and greatest
         finite bounds of the boxes, computed when called (one pass over the
@@ -369,6 +372,7 @@ def find_pairs(boxes, tile, against=None, *, method="exact", backend="auto", thr
     width = boxes.shape[1]
     # An unknown method or backend, a method not on the form, threads < 0: refused now.
     _obbsat.find_pairs(_np.empty((0, width), dtype=_np.float32), method=method, backend=backend, threads=threads)
+    threads = _obbsat._threads(threads)
     tile = float(tile)
     if not (_math.isfinite(tile) and tile > 0):
         raise ValueError(f"tile: expected a finite side > 0, got {tile}")

@@ -47,6 +47,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -92,9 +93,12 @@ obbsat::backend backend_named(const std::string& name) {
     return *b;
 }
 
-obbsat::collide_options options_of(const std::string& method, const std::string& backend, long threads) {
-    if (threads < 0) {
-        throw py::value_error("threads must be >= 0 (0 means every core), not " + std::to_string(threads));
+obbsat::collide_options options_of(const std::string& method, const std::string& backend, long long threads) {
+    // collide_options::threads is unsigned: a larger count would wrap around.
+    constexpr long long most_threads = std::numeric_limits<unsigned>::max();
+    if (threads < 0 || threads > most_threads) {
+        throw py::value_error("threads must be >= 0 and <= " + std::to_string(most_threads) +
+                              " (0 means every core), not " + std::to_string(threads));
     }
     obbsat::collide_options options;
     options.test = method_named(method);
@@ -155,6 +159,34 @@ std::uint8_t* verdicts_in_place(py::array& out, std::size_t count) {
     return static_cast<std::uint8_t*>(out.mutable_data());
 }
 
+/// The bytes [first, last) that `a`'s elements span, whatever its strides.
+std::pair<std::uintptr_t, std::uintptr_t> byte_span(const py::array& a) {
+    auto first = reinterpret_cast<std::uintptr_t>(a.data());
+    auto last = first;
+    if (a.size() == 0) {
+        return {first, first};
+    }
+    for (py::ssize_t axis = 0; axis < a.ndim(); ++axis) {
+        const py::ssize_t step = a.strides(axis) * (a.shape(axis) - 1);
+        if (step < 0) {
+            first -= static_cast<std::uintptr_t>(-step);
+        } else {
+            last += static_cast<std::uintptr_t>(step);
+        }
+    }
+    return {first, last + static_cast<std::uintptr_t>(a.itemsize())};
+}
+
+/// Refuses an `out` whose bytes share memory with the input `what`, which
+/// the call would overwrite while (or before) reading it: ValueError naming both.
+void require_apart(const py::array& out, const py::array& input, const char* what) {
+    const auto [out_first, out_last] = byte_span(out);
+    const auto [in_first, in_last] = byte_span(input);
+    if (out_first < out_last && in_first < in_last && out_first < in_last && in_first < out_last) {
+        throw py::value_error(std::string("out and ") + what + " share memory: out must not overlap " + what);
+    }
+}
+
 /// Runs `call` without the GIL and returns what it returns, turning the
 /// library's exceptions into Python's.
 template <class Call>
@@ -199,11 +231,13 @@ void require_runs_on(const obbsat::collide_options& options, obbsat::store_kind 
 }
 
 std::string collide_records(const py::array& rects, const py::array& pairs, py::array& out,
-                            const std::string& method, const std::string& backend, long threads) {
+                            const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const auto [records, rect_count] = corners_in_place(rects, "rects");
     const auto [pair_list, count] = pairs_in_place(pairs);
     std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, rects, "rects");
+    require_apart(out, pairs, "pairs");
     const obbsat::backend ran = without_gil([&, records = records, rect_count = rect_count,
                                              pair_list = pair_list, count = count] {
         require_runs_on(options, obbsat::store_kind::corners);
@@ -215,10 +249,11 @@ std::string collide_records(const py::array& rects, const py::array& pairs, py::
 /// collide_records over a prepared store: its coordinates were checked when
 /// it was built, so the call reads only the pairs before deciding them.
 std::string collide_store(const obbsat::rect_records& store, const py::array& pairs, py::array& out,
-                          const std::string& method, const std::string& backend, long threads) {
+                          const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const auto [pair_list, count] = pairs_in_place(pairs);
     std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, pairs, "pairs");
     const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
         require_runs_on(options, obbsat::store_kind::corners);
         return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
@@ -250,7 +285,7 @@ obbsat::rect_soa soa_copy(const obbsat::rect* rects, std::size_t count, const ch
 }
 
 std::string collide_stream(const py::array& a, const py::array& b, py::array& out,
-                           const std::string& method, const std::string& backend, long threads) {
+                           const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const auto [rects_a, count_a] = corners_in_place(a, "a");
     const auto [rects_b, count_b] = corners_in_place(b, "b");
@@ -259,6 +294,8 @@ std::string collide_stream(const py::array& a, const py::array& b, py::array& ou
                               " rectangles in a, " + std::to_string(count_b) + " in b");
     }
     std::uint8_t* verdicts = verdicts_in_place(out, count_a);
+    require_apart(out, a, "a");
+    require_apart(out, b, "b");
     const obbsat::backend ran = without_gil([&, rects_a = rects_a, rects_b = rects_b,
                                              count_a = count_a, count_b = count_b] {
         require_runs_on(options, obbsat::store_kind::corners);
@@ -296,11 +333,13 @@ py::array_t<float> poses_copy(const obbsat::pose_records& store) {
 }
 
 std::string collide_poses(const py::array& poses, const py::array& pairs, py::array& out,
-                          const std::string& method, const std::string& backend, long threads) {
+                          const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const auto [list, pose_count] = poses_in_place(poses, "poses");
     const auto [pair_list, count] = pairs_in_place(pairs);
     std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, poses, "poses");
+    require_apart(out, pairs, "pairs");
     const obbsat::backend ran = without_gil([&, list = list, pose_count = pose_count, pair_list = pair_list,
                                              count = count] {
         require_runs_on(options, obbsat::store_kind::poses);
@@ -311,10 +350,11 @@ std::string collide_poses(const py::array& poses, const py::array& pairs, py::ar
 
 /// collide_poses over a prepared store: no copy, no check of the poses.
 std::string collide_pose_store(const obbsat::pose_records& store, const py::array& pairs, py::array& out,
-                               const std::string& method, const std::string& backend, long threads) {
+                               const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const auto [pair_list, count] = pairs_in_place(pairs);
     std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, pairs, "pairs");
     const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
         require_runs_on(options, obbsat::store_kind::poses);
         return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
@@ -332,7 +372,7 @@ obbsat::pose_soa pose_soa_copy(const obbsat::rect_pose* poses, std::size_t count
 }
 
 std::string collide_pose_stream(const py::array& a, const py::array& b, py::array& out,
-                                const std::string& method, const std::string& backend, long threads) {
+                                const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const auto [poses_a, count_a] = poses_in_place(a, "a");
     const auto [poses_b, count_b] = poses_in_place(b, "b");
@@ -341,6 +381,8 @@ std::string collide_pose_stream(const py::array& a, const py::array& b, py::arra
                               std::to_string(count_b) + " in b");
     }
     std::uint8_t* verdicts = verdicts_in_place(out, count_a);
+    require_apart(out, a, "a");
+    require_apart(out, b, "b");
     const obbsat::backend ran = without_gil([&, poses_a = poses_a, poses_b = poses_b, count_a = count_a,
                                              count_b = count_b] {
         require_runs_on(options, obbsat::store_kind::poses);
@@ -372,6 +414,7 @@ std::string pose_corners(const py::array& poses, py::array& out, const std::stri
     const obbsat::backend requested = backend_named(backend);
     const auto [list, count] = poses_in_place(poses, "poses");
     obbsat::rect* corners = corners_out(out, count);
+    require_apart(out, poses, "poses");
     const obbsat::backend ran = without_gil([&, list = list, count = count] {
         const obbsat::backend resolved = obbsat::resolve_backend(requested);
         const obbsat::pose_records store(list, count);
@@ -480,7 +523,7 @@ py::array_t<std::uint32_t> pair_array(std::vector<obbsat::pair_index>&& pairs) {
 /// `against`, both of the store kind Store, sorted.
 template <class Store>
 py::array_t<std::uint32_t> find_pairs_of(const py::object& boxes, const py::object& against,
-                                         const std::string& method, const std::string& backend, long threads) {
+                                         const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const bool cross = !against.is_none();
     const scene_side<Store> a = side_of<Store>(boxes, "boxes");
@@ -529,7 +572,7 @@ private:
 };
 
 std::unique_ptr<scene_finder> make_scene_finder(const std::string& method, const std::string& backend,
-                                                long threads) {
+                                                long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     // A backend this CPU cannot run is refused here rather than at the first query.
     obbsat::resolve_backend(options.use);

@@ -4,6 +4,8 @@
 // unequal batch lengths with invalid_input (rect_soa already guarantees finite
 // coordinates), resolve the backend once per call, and split the batch over
 // `threads` cores. Verdicts never depend on the backend or the thread count.
+// A pair-list call whose verdict buffer shares memory with its pairs (or with
+// the rects or poses it reads in place) throws invalid_input naming both.
 #pragma once
 
 #include <obbsat/backend.hpp>

@@ -3,7 +3,7 @@
 // it. The cases that catch a sum rounded twice (first to double, then to
 // float) are built on purpose: their exact value sits a hair off a float
 // midpoint, where the double rounding lands on the midpoint itself.
-#include "backend_cases.hpp"
+#include "backends/backend_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/scene.hpp>

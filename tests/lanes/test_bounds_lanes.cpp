@@ -4,7 +4,7 @@
 // Poses across every scale (subnormal half extents, rotations far from unit
 // length, coordinates whose bounds overflow to infinity) and corners with
 // zeros of both signs, at every length up to a few vectors.
-#include "backend_cases.hpp"
+#include "backends/backend_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>

@@ -2,7 +2,7 @@
 // against its store) must be the plain maximum over both indices of every
 // pair: at every position of a list, in whole and partial vectors, with
 // indices past 2^31 (where a signed comparison would order them wrongly).
-#include "backend_cases.hpp"
+#include "backends/backend_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/scene.hpp>

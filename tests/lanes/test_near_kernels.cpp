@@ -7,7 +7,7 @@
 // fetches 16 pairs ahead into L1. Pairs from a scene
 // of touching and overlapping boxes, in sweep-like runs and at random, of
 // every length up to a few vectors past a whole block.
-#include "backend_cases.hpp"
+#include "backends/backend_cases.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>

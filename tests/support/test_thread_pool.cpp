@@ -1,0 +1,185 @@
+// The persistent pool (support/thread_pool.hpp): run(parts, task) runs every
+// part exactly once and returns only when all have finished, for no part, one
+// and many, from one run to the next as the number of parts grows and
+// shrinks, after the workers have gone to sleep, and when a part is slow. The
+// calling thread runs part 0; a run started while another holds the pool (a
+// part that runs a batch of its own, or a second thread) runs its parts one
+// after another on the calling thread. The header asks that a task not throw:
+// nothing is promised for one that does, so nothing is tested.
+#include "support/thread_pool.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using obbsat::detail::thread_pool;
+
+/// Runs `parts` parts that each count their own runs in plain ints (so that
+/// a run returning before a part's write is seen shows up as a wrong count)
+/// and returns the counts.
+std::vector<int> run_counts(std::size_t parts) {
+    std::vector<int> runs(parts + 1, 0);  // one past the last part: never written
+    thread_pool::shared().run(parts, [&](std::size_t part) { runs.at(part) += 1; });
+    return runs;
+}
+
+void expect_each_part_once(std::size_t parts, const std::string& what) {
+    const std::vector<int> runs = run_counts(parts);
+    for (std::size_t p = 0; p < parts; ++p) {
+        ASSERT_EQ(runs[p], 1) << what << ": part " << p << " of " << parts;
+    }
+    EXPECT_EQ(runs[parts], 0) << what << ": a part past the last ran";
+}
+
+TEST(thread_pool, no_part_runs_nothing) {
+    bool called = false;
+    thread_pool::shared().run(0, [&](std::size_t) { called = true; });
+    EXPECT_FALSE(called);
+}
+
+TEST(thread_pool, every_part_runs_exactly_once_for_one_to_eight_parts) {
+    for (const std::size_t parts : {1u, 2u, 3u, 4u, 5u, 8u}) {
+        expect_each_part_once(parts, "first runs");
+    }
+}
+
+TEST(thread_pool, back_to_back_runs_that_grow_and_shrink_run_every_part_once) {
+    // Workers with no part in a run must sit it out and still take their part
+    // in the next one; a worker must never run a part of an earlier run again.
+    const std::size_t sizes[] = {4, 1, 2, 4, 3, 1, 0, 4, 2, 2, 5, 1, 3};
+    for (int round = 0; round < 30; ++round) {
+        for (const std::size_t parts : sizes) {
+            expect_each_part_once(parts, "round " + std::to_string(round));
+            if (HasFatalFailure()) {
+                return;
+            }
+        }
+    }
+}
+
+TEST(thread_pool, runs_after_the_workers_went_to_sleep_run_every_part_once) {
+    // The workers spin for well under a millisecond before they sleep.
+    for (int round = 0; round < 5; ++round) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        expect_each_part_once(4, "after a pause, round " + std::to_string(round));
+    }
+}
+
+TEST(thread_pool, returns_only_when_the_slowest_part_has_finished) {
+    // A part slower than the caller's spin makes it wait on the condition.
+    for (const std::size_t slow : {0u, 1u, 3u}) {
+        std::vector<int> finished(4, 0);
+        thread_pool::shared().run(4, [&](std::size_t part) {
+            if (part == slow) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(30));
+            }
+            finished[part] = 1;
+        });
+        EXPECT_EQ(finished, (std::vector<int>{1, 1, 1, 1})) << "slow part " << slow;
+    }
+}
+
+TEST(thread_pool, the_calling_thread_runs_part_zero) {
+    const std::thread::id caller = std::this_thread::get_id();
+    for (const std::size_t parts : {1u, 2u, 4u}) {
+        std::vector<std::thread::id> ran_on(parts);
+        thread_pool::shared().run(parts, [&](std::size_t part) { ran_on[part] = std::this_thread::get_id(); });
+        EXPECT_EQ(ran_on[0], caller) << parts << " parts";
+    }
+}
+
+TEST(thread_pool, parts_of_a_run_run_at_the_same_time_on_other_threads) {
+    // Four parts each wait (for at most ten seconds) until all four have
+    // started: only a pool that runs them side by side lets them all through.
+    constexpr std::size_t parts = 4;
+    const std::thread::id caller = std::this_thread::get_id();
+    std::atomic<std::size_t> started{0};
+    std::vector<int> met(parts, 0);
+    std::vector<std::thread::id> ran_on(parts);
+    thread_pool::shared().run(parts, [&](std::size_t part) {
+        ran_on[part] = std::this_thread::get_id();
+        started.fetch_add(1);
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (started.load() < parts && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::yield();
+        }
+        met[part] = started.load() == parts ? 1 : 0;
+    });
+    EXPECT_EQ(met, (std::vector<int>{1, 1, 1, 1}));
+    const std::set<std::thread::id> threads(ran_on.begin(), ran_on.end());
+    EXPECT_EQ(threads.size(), parts);
+    EXPECT_EQ(ran_on[0], caller);
+}
+
+TEST(thread_pool, a_run_inside_a_part_runs_its_parts_in_order_on_that_parts_thread) {
+    // The outer run holds the pool, so every inner run is one after another
+    // on the thread of the outer part that started it.
+    constexpr std::size_t outer = 3;
+    constexpr std::size_t inner = 5;
+    std::vector<std::vector<std::size_t>> order(outer);
+    std::vector<int> same_thread(outer, 0);
+    thread_pool::shared().run(outer, [&](std::size_t o) {
+        const std::thread::id here = std::this_thread::get_id();
+        bool same = true;
+        thread_pool::shared().run(inner, [&](std::size_t i) {
+            order[o].push_back(i);
+            same = same && std::this_thread::get_id() == here;
+        });
+        same_thread[o] = same ? 1 : 0;
+    });
+    for (std::size_t o = 0; o < outer; ++o) {
+        EXPECT_EQ(order[o], (std::vector<std::size_t>{0, 1, 2, 3, 4})) << "outer part " << o;
+        EXPECT_EQ(same_thread[o], 1) << "outer part " << o;
+    }
+    // The pool is free again afterwards.
+    expect_each_part_once(4, "after the nested runs");
+}
+
+TEST(thread_pool, runs_from_several_threads_at_once_each_run_every_part_once) {
+    // Whichever thread does not get the pool runs its parts itself.
+    constexpr std::size_t threads = 3;
+    constexpr std::size_t rounds = 200;
+    std::vector<int> wrong(threads, 0);
+    std::vector<std::thread> callers;
+    for (std::size_t t = 0; t < threads; ++t) {
+        callers.emplace_back([&, t] {
+            for (std::size_t round = 0; round < rounds; ++round) {
+                const std::size_t parts = 1 + (round + t) % 4;
+                std::vector<int> runs(parts, 0);
+                thread_pool::shared().run(parts, [&](std::size_t part) { runs[part] += 1; });
+                wrong[t] += static_cast<int>(std::count_if(runs.begin(), runs.end(), [](int r) { return r != 1; }));
+            }
+        });
+    }
+    for (auto& c : callers) {
+        c.join();
+    }
+    EXPECT_EQ(wrong, std::vector<int>(threads, 0));
+}
+
+TEST(thread_pool, shared_is_one_pool) {
+    EXPECT_EQ(&thread_pool::shared(), &thread_pool::shared());
+    thread_pool* from_other_thread = nullptr;
+    std::thread([&] { from_other_thread = &thread_pool::shared(); }).join();
+    EXPECT_EQ(from_other_thread, &thread_pool::shared());
+}
+
+// Last: the pool keeps every worker it ever started, and many spinning
+// workers would slow the tests after this one when they share its process.
+TEST(thread_pool, many_more_parts_than_cores_run_every_part_once) {
+    for (const std::size_t parts : {16u, 64u, 3u, 64u}) {
+        expect_each_part_once(parts, "many parts");
+    }
+}
+
+}  // namespace

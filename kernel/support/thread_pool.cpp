@@ -32,6 +32,12 @@ bool spin_until(const Done& done, std::chrono::microseconds budget) {
     }
 }
 
+// True on a thread while it runs a part of a batch (a worker, always; the
+// caller, during its part 0). A run started there runs its parts in turn on
+// that thread: the workers are busy with the batch that holds the pool, and
+// the caller would otherwise try to take batch_owner_, which it already holds.
+thread_local bool running_a_part = false;
+
 }  // namespace
 
 thread_pool& thread_pool::shared() {
@@ -58,6 +64,7 @@ void thread_pool::grow_to(std::size_t workers) {
 }
 
 void thread_pool::worker_loop(std::size_t part) {
+    running_a_part = true;
     std::uint64_t seen = 0;
     for (;;) {
         auto new_batch = [&] {
@@ -86,8 +93,11 @@ void thread_pool::worker_loop(std::size_t part) {
 }
 
 void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>& task) {
-    std::unique_lock<std::mutex> owner(batch_owner_, std::try_to_lock);
-    if (parts <= 1 || !owner.owns_lock()) {
+    std::unique_lock<std::mutex> owner;
+    if (parts > 1 && !running_a_part) {
+        owner = std::unique_lock<std::mutex>(batch_owner_, std::try_to_lock);
+    }
+    if (!owner.owns_lock()) {
         for (std::size_t p = 0; p < parts; ++p) {
             task(p);
         }
@@ -102,7 +112,9 @@ void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>&
         generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
+    running_a_part = true;
     task(0);
+    running_a_part = false;
     auto all_done = [&] { return unfinished_.load(std::memory_order_acquire) == 0; };
     if (!spin_until(all_done, caller_spin)) {
         std::unique_lock<std::mutex> lock(state_);

@@ -25,8 +25,9 @@ public:
     static thread_pool& shared();
 
     /// Runs task(0) .. task(parts - 1) and returns when all have finished. The
-    /// calling thread runs part 0. If another batch holds the pool, the parts
-    /// run one after another on the calling thread. `task` must not throw.
+    /// calling thread runs part 0. If another batch holds the pool, or the
+    /// call comes from inside a part of a batch, the parts run one after
+    /// another on the calling thread. `task` must not throw.
     void run(std::size_t parts, const std::function<void(std::size_t)>& task);
 
     ~thread_pool();

@@ -86,6 +86,9 @@ public:
     const find_pairs_stats& stats() const { return stats_; }
 
 private:
+    /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
+    friend struct pair_search_test_access;
+
     struct record {
         float v[8];
     };

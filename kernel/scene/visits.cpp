@@ -18,6 +18,13 @@ void pair_search::collect_visits(std::size_t parts) {
     // that order already; only the others ("far" visits, of rectangles taller
     // than a strip) are radix sorted, and then merged in. Each share counts
     // its visits, then writes them after the shares before it.
+    //
+    // A rectangle's lowest strip (its key) comes from the order's read of the
+    // rows, its highest (strip_hi_) from the copy's. Rows the caller changes
+    // between the two (forbidden, but possible) may put the highest below the
+    // lowest; both passes then take the highest as the lowest (no visit), so
+    // that no count underflows and the second pass writes what the first
+    // counted.
     const std::uint32_t strips = grid_.strips;
     const unsigned q_bits = grid_.q_bits;
     std::vector<std::size_t> first_near(parts + 1, 0), first_far(parts + 1, 0);
@@ -25,7 +32,8 @@ void pair_search::collect_visits(std::size_t parts) {
         const auto [begin, end] = share_of(n_, share, parts);
         std::size_t near = 0, far = 0;
         for (std::size_t k = begin; k < end; ++k) {
-            const std::uint32_t hops = strip_hi_[k] - (keys_[k] >> q_bits);
+            const std::uint32_t low = keys_[k] >> q_bits;
+            const std::uint32_t hops = std::max(strip_hi_[k], low) - low;
             const std::uint32_t is_near = hops != 0 ? 1 : 0;
             near += is_near;
             far += hops - is_near;
@@ -67,7 +75,7 @@ void pair_search::collect_visits(std::size_t parts) {
         std::uint32_t unused[2];
         for (std::size_t k = begin; k < end; ++k) {
             const std::uint32_t low = keys_[k] >> q_bits;
-            const std::uint32_t high = strip_hi_[k];
+            const std::uint32_t high = std::max(strip_hi_[k], low);
             const bool is_near = high != low;
             const std::uint32_t key = ((low + 1) << q_bits) | q_lo_[k];
             sorted &= (key >= last_key) | !is_near ? 1u : 0u;

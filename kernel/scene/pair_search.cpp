@@ -36,6 +36,9 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
         p.found.clear();
     }
     if (n_ < 2 || (!self_ && (input.a_count == 0 || input.b_count == 0))) {
+        // Nothing to compare, and no bounds pass to check the rows: they are
+        // checked here, so that what a larger query refuses this one does too.
+        require_valid_rows(input);
         return;
     }
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);

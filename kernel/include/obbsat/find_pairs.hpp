@@ -19,9 +19,10 @@
 // checked when it was built) or rows in the caller's memory (rect_pose or
 // rect, e.g. a std::vector of them or a numpy array), read in place and
 // checked by every query that reads them, in the pass that computes the
-// bounds: a non-finite value, a negative half extent or a zero rotation
-// vector is refused with invalid_input naming the row and the field, prefixed
-// "a: " or "b: " in a query across two sets; no pair is reported then.
+// bounds, every row whatever their count (one row, or rows against an empty
+// set, are checked too): a non-finite value, a negative half extent or a zero
+// rotation vector is refused with invalid_input naming the row and the field,
+// prefixed "a: " or "b: " in a query across two sets; no pair is reported then.
 //
 // Memory: about 100 bytes per rectangle while the pairs are found (one copy
 // of the records in the query's own order, its bounds, order and strips)

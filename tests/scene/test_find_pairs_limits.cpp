@@ -44,6 +44,27 @@ void expect_refused(const std::function<void()>& query, const std::string& text)
     }
 }
 
+// A moved-from pair_finder.
+
+TEST(pair_finder, a_moved_from_finder_refuses_every_call_with_a_clear_error) {
+    const std::vector<rect_pose> poses{{{0, 0}, {1, 1}, {1, 0}}, {{1, 0}, {1, 1}, {1, 0}}};
+    obbsat::pair_finder finder(options_for(method::exact));
+    ASSERT_EQ(finder.find(poses).size(), 1u);
+    obbsat::pair_finder taker(std::move(finder));
+    EXPECT_EQ(taker.find(poses).size(), 1u);
+    expect_refused([&] { finder.find(poses); }, "moved-from pair_finder");
+    expect_refused([&] { finder.find(poses, poses); }, "moved-from pair_finder");
+    expect_refused([&] { (void)finder.stats(); }, "moved-from pair_finder");
+    // Assigned from, it is empty again; assigned to, it works.
+    obbsat::pair_finder other(options_for(method::exact));
+    other = std::move(taker);
+    expect_refused([&] { taker.find(poses); }, "moved-from pair_finder");
+    EXPECT_EQ(other.find(poses).size(), 1u);
+    finder = obbsat::pair_finder(options_for(method::local));
+    EXPECT_EQ(finder.find(poses).size(), 1u);
+    EXPECT_EQ(finder.stats().pairs, 1u);
+}
+
 // Queries with nothing to compare still check every row.
 
 TEST(find_pairs, one_row_is_checked_as_any_other) {

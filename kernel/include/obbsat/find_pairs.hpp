@@ -145,6 +145,10 @@ class pair_search;
 /// first, 29 per rectangle (its bounds, its key, and the repair of the
 /// order), and 8 more per rectangle that changed strips since the last full
 /// query.
+///
+/// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
+/// and its find and stats throw invalid_input ("... on a moved-from
+/// pair_finder ...") until a pair_finder is assigned to it.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);

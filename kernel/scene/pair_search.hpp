@@ -146,7 +146,10 @@ private:
 
     // Steps 4 and 5, the sweep and the method's kernels (sweep.cpp).
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
-    void sweep_strip(std::uint32_t strip, part& p) const;
+    /// Sweeps one strip, its candidates flushed in blocks; after each flush
+    /// inside the strip calls after_flush(), and stops if it returns false.
+    template <class AfterFlush>
+    void sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const;
     void flush_candidates(part& p) const;
     /// Pair `q` of the query's order in the caller's indices (in a query
     /// across two sets, b counted from the second set's first rectangle).

@@ -22,8 +22,10 @@ static_assert(candidate_block <= pair_blocks::block_pairs, "a block of candidate
 /// widened bounds would give more is answered as a plain query.
 constexpr std::size_t kept_budget_factor = 4;
 
-/// Found pairs handed to a streaming sink at once.
+/// The most found pairs a part of a streaming query holds, and so hands to
+/// the sink at once (find_pairs.hpp).
 constexpr std::size_t emit_block = 4096;
+static_assert(candidate_block <= emit_block, "a flush of candidates fits in a chunk of found pairs");
 
 /// Below this many rectangles per part, a second core costs more than it saves.
 constexpr std::size_t min_boxes_per_part = 16384;

@@ -79,7 +79,8 @@ void pair_search::flush_candidates(part& p) const {
     p.candidate_count = 0;
 }
 
-void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
+template <class AfterFlush>
+void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const {
     // Merge the rectangles starting in this strip with its visitors, by
     // quantized lo_x (a rectangle before a visitor on equal keys).
     const std::size_t own_begin = own_begin_[strip];
@@ -153,7 +154,12 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p) const {
         p.candidate_count +=
             sweep_kernel(view, cursor, p.candidates.data() + before, candidate_block - before);
         if (cursor.e + 1 < m) {
+            // A full block inside the strip: tested now, and the pairs found
+            // handed on, however many the strip holds.
             flush_candidates(p);
+            if (!after_flush()) {
+                return;
+            }
         }
     }
 }
@@ -186,8 +192,9 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         p.slow_path = 0;
         p.kernel_seconds = 0;
     }
-    kept_.capture_budget = kept_.margin > 0.0f ? kept_budget_factor * kept_.last_candidates + n_ + parts * candidate_block
-                                     : std::numeric_limits<std::size_t>::max();
+    kept_.capture_budget = kept_.margin > 0.0f
+                               ? kept_budget_factor * kept_.last_candidates + n_ + parts * candidate_block
+                               : std::numeric_limits<std::size_t>::max();
     kept_.captured_all.store(0, std::memory_order_relaxed);
     std::mutex emit_mutex;
     std::vector<std::exception_ptr> failures(parts);
@@ -195,8 +202,11 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     run_parts(parts, [&](std::size_t index) {
         part& p = parts_[index];
         try {
+            // Pairs are found only by a flush, at most candidate_block at a
+            // time: handing them over once a flush may not fit under
+            // emit_block keeps every chunk, and what a part holds, within it.
             const auto hand_over = [&](bool all) {
-                if (emit != nullptr && (all || p.found.size() >= emit_block) && !p.found.empty()) {
+                if (emit != nullptr && (all || p.found.size() > emit_block - candidate_block) && !p.found.empty()) {
                     const std::lock_guard<std::mutex> lock(emit_mutex);
                     if (!failed.load()) {
                         for (const pair_span<pair_index>& span : p.found.spans()) {
@@ -206,9 +216,12 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
                     p.found.clear();
                 }
             };
-            for (std::uint32_t strip = p.first_strip; strip < p.end_strip && !failed.load(); ++strip) {
-                sweep_strip(strip, p);
+            const auto after_flush = [&] {
                 hand_over(false);
+                return !failed.load();
+            };
+            for (std::uint32_t strip = p.first_strip; strip < p.end_strip && !failed.load(); ++strip) {
+                sweep_strip(strip, p, after_flush);
             }
             flush_candidates(p);
             hand_over(true);

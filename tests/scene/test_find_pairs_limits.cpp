@@ -34,6 +34,9 @@ collide_options options_for(method m, unsigned threads = 1) {
     return o;
 }
 
+/// The most pairs find_pairs_each hands to its sink at once (find_pairs.hpp).
+constexpr std::size_t chunk_bound = 4096;
+
 /// Expects `query` to throw invalid_input whose message holds `text`.
 void expect_refused(const std::function<void()>& query, const std::string& text) {
     try {
@@ -42,6 +45,56 @@ void expect_refused(const std::function<void()>& query, const std::string& text)
     } catch (const obbsat::invalid_input& e) {
         EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
     }
+}
+
+// A crowded scene: every box in one place, every pair colliding, all of them
+// in one strip.
+
+TEST(find_pairs_each, a_crowded_scene_streams_every_pair_in_bounded_chunks) {
+    constexpr std::size_t n = 3000;
+    const std::vector<rect_pose> stack(n, rect_pose{{0, 0}, {1, 1}, {1, 0}});
+    const obbsat::pose_records store(stack);
+    for (const unsigned threads : {1u, 2u}) {
+        for (const bool rows : {false, true}) {
+            SCOPED_TRACE(std::to_string(threads) + " threads, " + (rows ? "rows" : "store"));
+            std::size_t total = 0;
+            std::size_t largest = 0;
+            std::size_t chunks = 0;
+            std::vector<std::uint32_t> per_first(n, 0);
+            const obbsat::pair_chunk_sink sink = [&](const pair_index* pairs, std::size_t count) {
+                total += count;
+                largest = std::max(largest, count);
+                ++chunks;
+                for (std::size_t k = 0; k < count; ++k) {
+                    ++per_first[pairs[k].a];
+                }
+            };
+            if (rows) {
+                obbsat::find_pairs_each(stack, options_for(method::exact, threads), sink);
+            } else {
+                obbsat::find_pairs_each(store, options_for(method::exact, threads), sink);
+            }
+            EXPECT_EQ(total, n * (n - 1) / 2);
+            EXPECT_LE(largest, chunk_bound) << "in " << chunks << " chunks";
+            // Box i is the first of a pair with every later box: each pair once.
+            for (std::size_t i = 0; i < n; ++i) {
+                ASSERT_EQ(per_first[i], n - 1 - i) << "box " << i;
+            }
+        }
+    }
+}
+
+TEST(find_pairs_each, a_crowded_scene_across_two_sets_streams_in_bounded_chunks) {
+    const std::vector<rect> a(1500, rect{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}});
+    const std::vector<rect> b(1200, rect{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}});
+    std::size_t total = 0;
+    std::size_t largest = 0;
+    obbsat::find_pairs_each(a, b, options_for(method::sat4, 2), [&](const pair_index*, std::size_t count) {
+        total += count;
+        largest = std::max(largest, count);
+    });
+    EXPECT_EQ(total, a.size() * b.size());
+    EXPECT_LE(largest, chunk_bound);
 }
 
 // A moved-from pair_finder.

@@ -29,8 +29,9 @@
 // and 8 bytes per reported pair; find_pairs releases the per-rectangle
 // memory before it sorts the pairs, which takes 8 more bytes per pair, so
 // its peak is the larger of the two phases. find_pairs_each holds no pairs
-// beyond a few thousand per thread. A pair_finder keeps all of it for the
-// next call.
+// beyond 4096 per thread, however crowded the scene (a strip's candidates
+// are tested in blocks of 2048 and the pairs found handed on as they come).
+// A pair_finder keeps all of it for the next call.
 #pragma once
 
 #include <obbsat/collide.hpp>
@@ -111,9 +112,10 @@ std::vector<pair_index> find_pairs(box_view boxes, const collide_options& option
 /// j; `a` and `b` hold the same kind (invalid_input otherwise).
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options);
 
-/// Receives the colliding pairs in chunks, never from two threads at once,
-/// in no particular order (each pair once, i < j for one store, i in a and j
-/// in b for two); the pointer is valid only during the call.
+/// Receives the colliding pairs in chunks of at most 4096 pairs, never from
+/// two threads at once, in no particular order (each pair once, i < j for
+/// one store, i in a and j in b for two); the pointer is valid only during
+/// the call.
 using pair_chunk_sink = std::function<void(const pair_index* pairs, std::size_t count)>;
 
 /// Streams the pairs of find_pairs to `sink` without holding them all.

@@ -1,7 +1,7 @@
 // The state of pair_finder's kept candidates (the policy described at the
 // top of pair_search.hpp), apart from the plain query's: one place for what
 // it keeps between calls and what each thread's share of it holds. Its steps
-// are in kept_pairs.cpp. Internal to the library.
+// are in kept_pairs.cpp and kept_answer.cpp. Internal to the library.
 #pragma once
 
 #include "sort/pair_sort.hpp"
@@ -33,7 +33,8 @@ struct kept_pairs {
     bool ready = false;
     float margin = 0;                   ///< each box widened by margin times its larger extent or typical_extent
     float typical_extent = 0;           ///< about the median of the boxes' larger extents, from the last query
-    float measured_typical_extent = 0;  ///< the same of this query's boxes, measured with its extent, applied when it ends
+    /// The same of this query's boxes, measured with its extent, applied when it ends.
+    float measured_typical_extent = 0;
     double margin_share = 1.0 / 16;     ///< margin of the next full query that follows motion
     std::size_t calls = 0;              ///< calls answered by the kept candidates
     std::size_t last_candidates = 0;    ///< candidates of the last full query, for the budget of kept ones

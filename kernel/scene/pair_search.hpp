@@ -40,7 +40,8 @@
 // answer in the caller's order through a permutation kept with them: no
 // sort, no sweep, no output sort. A rectangle that left its widened bounds makes the call a
 // full query again, which builds new candidates. Its state is kept_pairs
-// (kept_pairs.hpp), its steps are in kept_pairs.cpp.
+// (kept_pairs.hpp); its steps are in kept_pairs.cpp (the policy, collect,
+// and keeping the candidates) and kept_answer.cpp (their test and answer).
 #pragma once
 
 #include "scene/kept_pairs.hpp"
@@ -165,11 +166,12 @@ private:
     /// The answer of a query that keeps nothing, over bounds not widened.
     const std::vector<pair_index>& answer_plainly(const query_input& input);
 
-    // pair_finder's kept candidates (kept_pairs.cpp; see the top of this file).
+    // pair_finder's kept candidates (see the top of this file): kept_pairs.cpp.
     /// Copies the rows into the kept order and checks that each one's bounds lie in its widened
     /// bounds; with `keep_bounds`, also stores the bounds in kept_.now for test_kept's filter.
     bool refresh_records(const query_input& input, std::size_t parts, bool keep_bounds);
     void keep_candidates(std::size_t parts);
+    // Their test and the answer read from them: kept_answer.cpp.
     /// Marks, for an answer from kept candidates in `parts` shares, the share of each kept candidate.
     void mark_answer_shares(std::size_t parts);
     void test_kept(std::size_t parts, bool unfiltered);

@@ -3,7 +3,7 @@
 #include "store/finite_check.hpp"
 #include "methods/method_check.hpp"
 #include "store/pose_record.hpp"
-#include "support/thread_pool.hpp"
+#include "support/work_shares.hpp"
 
 #include <obbsat/collide.hpp>
 #include <obbsat/error.hpp>
@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
-#include <thread>
+#include <vector>
 
 namespace obbsat {
 
@@ -47,31 +47,19 @@ constexpr std::size_t min_pairs_per_part = 8192;
 // vectors of the widest backend.
 constexpr std::size_t part_alignment = 64;
 
-std::size_t parts_for(std::size_t count, unsigned threads) {
-    std::size_t wanted = threads;
-    if (wanted == 0) {
-        wanted = std::max(1u, std::thread::hardware_concurrency());
-    }
-    const std::size_t useful = std::max<std::size_t>(1, count / min_pairs_per_part);
-    return std::min(wanted, useful);
-}
-
 /// Runs body(begin, end) over [0, count) split into aligned ranges, one per
 /// part; body returns how many pairs it settled exactly, and the sum is
 /// reported through options.slow_path_pairs.
 template <class Body>
 void split_over_threads(std::size_t count, const collide_options& options, const Body& body) {
-    const std::size_t parts = parts_for(count, options.threads);
+    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
     std::size_t settled = 0;
     if (parts <= 1) {
-        settled = body(std::size_t{0}, count);
+        settled = body(std::size_t{0}, count);  // no vector of one: a small batch allocates nothing
     } else {
-        const std::size_t per_part =
-            (count / parts + part_alignment - 1) / part_alignment * part_alignment;
         std::vector<std::size_t> settled_per_part(parts, 0);
-        detail::thread_pool::shared().run(parts, [&](std::size_t part) {
-            const std::size_t begin = std::min(count, part * per_part);
-            const std::size_t end = (part + 1 == parts) ? count : std::min(count, begin + per_part);
+        detail::run_parts(parts, [&](std::size_t part) {
+            const auto [begin, end] = detail::aligned_share_of(count, part, parts, part_alignment);
             if (begin < end) {
                 settled_per_part[part] = body(begin, end);
             }
@@ -91,16 +79,14 @@ void split_over_threads(std::size_t count, const collide_options& options, const
 void check_indices(backend ran, std::size_t rect_count, const pair_index* pairs, std::size_t count,
                    const collide_options& options) {
     const detail::largest_index_fn largest_index = detail::kernels_for(ran).largest_index;
-    const std::size_t parts = parts_for(count, options.threads);
+    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
     std::uint32_t largest = 0;
     if (parts <= 1) {
         largest = largest_index(pairs, count);
     } else {
-        const std::size_t per_part = (count + parts - 1) / parts;
         std::vector<std::uint32_t> part_largest(parts, 0);
-        detail::thread_pool::shared().run(parts, [&](std::size_t part) {
-            const std::size_t begin = std::min(count, part * per_part);
-            const std::size_t end = std::min(count, begin + per_part);
+        detail::run_parts(parts, [&](std::size_t part) {
+            const auto [begin, end] = detail::share_of(count, part, parts);
             part_largest[part] = largest_index(pairs + begin, end - begin);
         });
         largest = *std::max_element(part_largest.begin(), part_largest.end());
@@ -169,16 +155,14 @@ bool all_finite(const rect* rects, std::size_t begin, std::size_t end) {
 /// The scan is split like a batch (a rectangle costs about as much to scan as
 /// a pair to decide would to fetch); only on failure is the offender searched.
 void require_all_finite(const rect* rects, std::size_t count, const collide_options& options) {
-    const std::size_t parts = parts_for(count, options.threads);
+    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
     bool finite = true;
     if (parts <= 1) {
         finite = all_finite(rects, 0, count);
     } else {
-        const std::size_t per_part = (count + parts - 1) / parts;
         std::vector<unsigned char> part_finite(parts, 1);
-        detail::thread_pool::shared().run(parts, [&](std::size_t part) {
-            const std::size_t begin = std::min(count, part * per_part);
-            const std::size_t end = std::min(count, begin + per_part);
+        detail::run_parts(parts, [&](std::size_t part) {
+            const auto [begin, end] = detail::share_of(count, part, parts);
             part_finite[part] = all_finite(rects, begin, end) ? 1 : 0;
         });
         finite = std::find(part_finite.begin(), part_finite.end(), 0) == part_finite.end();

@@ -86,14 +86,27 @@ pair_finder::~pair_finder() = default;
 pair_finder::pair_finder(pair_finder&&) noexcept = default;
 pair_finder& pair_finder::operator=(pair_finder&&) noexcept = default;
 
+namespace {
+
+/// The engine of a pair_finder; a moved-from one has none (find_pairs.hpp).
+detail::pair_search& engine_of(const std::unique_ptr<detail::pair_search>& search, const char* call) {
+    if (!search) {
+        throw invalid_input(std::string("pair_finder::") + call +
+                            " on a moved-from pair_finder: assign it a pair_finder before calling it again");
+    }
+    return *search;
+}
+
+}  // namespace
+
 const std::vector<pair_index>& pair_finder::find(box_view boxes) {
-    return search_->collect(input_of(boxes, nullptr));
+    return engine_of(search_, "find").collect(input_of(boxes, nullptr));
 }
 
 const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
-    return search_->collect(input_of(a, &b));
+    return engine_of(search_, "find").collect(input_of(a, &b));
 }
 
-const find_pairs_stats& pair_finder::stats() const { return search_->stats(); }
+const find_pairs_stats& pair_finder::stats() const { return engine_of(search_, "stats").stats(); }
 
 }  // namespace obbsat

@@ -1,24 +1,32 @@
 // The engine of the scene queries (obbsat/find_pairs.hpp): bounds, order,
 // sweep, the method's kernels, the answer in the caller's indices. It keeps
 // every buffer and the last order between calls. Internal to the library.
+// Each step has a file of its own, named below; nothing of it is compiled
+// with ISA flags (the backends' kernels are reached through kernels_for).
 //
 // How it finds the candidates:
 //   1. Bounds of every rectangle (obbsat/ref/bounds.hpp), in the caller's order,
 //      a vector of records at a time in the backend's lanes (bounds_lanes.hpp).
+//      [bounds_pass.cpp]
 //   2. The scene is cut into horizontal strips (strip_grid.hpp). Each
 //      rectangle is sorted by (lowest strip it touches, quantized lo_x); that
-//      order is the query's own, and the records are copied into it, so that
-//      rectangles near each other in the plane are near each other in memory.
+//      order is the query's own [order.cpp], and the records are copied into
+//      it, so that rectangles near each other in the plane are near each
+//      other in memory [records_copy.cpp].
 //   3. A rectangle taller than its strip also visits the strips above, up to
-//      the one holding its hi_y; visits are sorted the same way.
+//      the one holding its hi_y; visits are sorted the same way. [visits.cpp]
 //   4. In each strip the rectangles that start there and the visitors are
 //      merged by quantized lo_x and swept: every later entry whose quantized
 //      lo_x is at most this entry's quantized hi_x is tested on the full
 //      bounds. A pair is taken in the strip holding the larger of its two
 //      lo_y (the first strip both touch), i.e. never between two visitors,
-//      so each pair whose bounds overlap is found exactly once.
+//      so each pair whose bounds overlap is found exactly once. [sweep.cpp]
 //   5. Candidates go to the method's indexed kernel in blocks, over the
-//      reordered records; the colliding ones are mapped back.
+//      reordered records; the colliding ones are mapped back. [sweep.cpp]
+//   6. The answer: the found pairs streamed to the caller's sink as they
+//      come [sweep.cpp], or sorted into one list [output.cpp].
+// The query's rows are read through query_input.hpp; run() in
+// pair_search.cpp takes the steps in turn.
 //
 // A persistent query (collect, for pair_finder) answers its first call on a
 // scene as a plain query; later full queries widen every bounds by a
@@ -31,10 +39,14 @@
 // its verdict on the others is "apart" anyway), tests them, and reads the
 // answer in the caller's order through a permutation kept with them: no
 // sort, no sweep, no output sort. A rectangle that left its widened bounds makes the call a
-// full query again, which builds new candidates.
+// full query again, which builds new candidates. Its state is kept_pairs
+// (kept_pairs.hpp); its steps are in kept_pairs.cpp (the policy, collect,
+// and keeping the candidates) and kept_answer.cpp (their test and answer).
 #pragma once
 
+#include "scene/kept_pairs.hpp"
 #include "scene/pair_blocks.hpp"
+#include "scene/query_input.hpp"
 #include "sort/pair_sort.hpp"
 #include "sort/radix_sort.hpp"
 #include "support/scratch_vector.hpp"
@@ -56,22 +68,6 @@
 
 namespace obbsat::detail {
 
-/// The rectangles of one query: one or two sets of one kind, each rows of
-/// `stride` floats (a pose's first six floats are cx, cy, hx, hy, c, s; a
-/// corner row's eight are UL, UR, LR, LL). A set not `checked` is checked by
-/// the pass that computes the bounds.
-struct query_input {
-    store_kind kind = store_kind::poses;
-    const float* a = nullptr;  ///< the first set
-    std::size_t a_count = 0;
-    std::size_t a_stride = 8;
-    bool a_checked = true;
-    const float* b = nullptr;  ///< the second set; nullptr for a query within a
-    std::size_t b_count = 0;
-    std::size_t b_stride = 8;
-    bool b_checked = true;
-};
-
 class pair_search {
 public:
     explicit pair_search(const collide_options& options);
@@ -91,6 +87,9 @@ public:
     const find_pairs_stats& stats() const { return stats_; }
 
 private:
+    /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
+    friend struct pair_search_test_access;
+
     struct record {
         float v[8];
     };
@@ -107,16 +106,8 @@ private:
         std::vector<std::uint8_t> verdicts;
         // Colliding pairs in the caller's indices.
         pair_blocks found;
-        // Candidates kept instead of tested (a query that keeps them), and
-        // the kept candidates' positions of a block under test.
-        std::vector<pair_index> captured;
-        bool over_budget = false;
-        scratch_vector<tagged_pair> tagged;  // written whole before it is read: never zeroed
-        std::vector<std::uint32_t> slots;
+        kept_share keep;  ///< this share of the kept candidates (kept_pairs.hpp)
         std::size_t tested = 0;
-        std::size_t colliding = 0;  ///< kept candidates the method called colliding
-        /// Of those, how many fall in each share of the answer past the first.
-        std::vector<std::size_t> colliding_in_share;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;
     };
@@ -129,17 +120,37 @@ private:
         alignas(64) float hi_x[size];
         alignas(64) float hi_y[size];
     };
+    /// Entry r of a run of bounds as signed_bounds.
+    static signed_bounds signed_bounds_of(const bounds_run& b, std::size_t r) {
+        return signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
+    }
+
+    // The query (pair_search.cpp).
+    void set_query(const query_input& input);
+
+    // Step 1, bounds (bounds_pass.cpp).
     /// The bounds of rectangles [begin, end) of the input, end - begin <= bounds_run::size,
     /// through the backend's kernel where the rows are 32-byte records.
     void input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const;
+    /// Widens `count` bounds by the kept candidates' margin while a query keeps them.
+    void widen(bounds_run& b, std::size_t count) const;
     void measure_extent(const query_input& input, std::size_t parts, bool with_keys);
+
+    // Step 2, the order (order.cpp) and the records in it (records_copy.cpp).
     bool same_scene_as_last() const;
     void order_boxes(const query_input& input, std::size_t parts);
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
+
+    // Step 3, visits (visits.cpp).
     void collect_visits(std::size_t parts);
+
+    // Steps 4 and 5, the sweep and the method's kernels (sweep.cpp).
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
-    void sweep_strip(std::uint32_t strip, part& p) const;
+    /// Sweeps one strip, its candidates flushed in blocks; after each flush
+    /// inside the strip calls after_flush(), and stops if it returns false.
+    template <class AfterFlush>
+    void sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const;
     void flush_candidates(part& p) const;
     /// Pair `q` of the query's order in the caller's indices (in a query
     /// across two sets, b counted from the second set's first rectangle).
@@ -149,20 +160,22 @@ private:
     /// The method's verdicts on `count` pairs of the query's records.
     void test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const;
     void test_candidates(part& p, std::size_t count) const;
+
+    // The answer as one sorted list (output.cpp).
     void sort_found();
-    // The kept candidates (see the top of this file).
-    void set_query(const query_input& input);
-    void widen(bounds_run& b, std::size_t count) const;
+    /// The answer of a query that keeps nothing, over bounds not widened.
+    const std::vector<pair_index>& answer_plainly(const query_input& input);
+
+    // pair_finder's kept candidates (see the top of this file): kept_pairs.cpp.
     /// Copies the rows into the kept order and checks that each one's bounds lie in its widened
-    /// bounds; with `keep_bounds`, also stores the bounds in now_ for test_kept's filter.
+    /// bounds; with `keep_bounds`, also stores the bounds in kept_.now for test_kept's filter.
     bool refresh_records(const query_input& input, std::size_t parts, bool keep_bounds);
     void keep_candidates(std::size_t parts);
+    // Their test and the answer read from them: kept_answer.cpp.
     /// Marks, for an answer from kept candidates in `parts` shares, the share of each kept candidate.
     void mark_answer_shares(std::size_t parts);
     void test_kept(std::size_t parts, bool unfiltered);
     void answer_from_kept(std::size_t parts);
-    /// The answer of a query that keeps nothing, over bounds not widened.
-    const std::vector<pair_index>& answer_plainly(const query_input& input);
 
     collide_options options_;
     find_pairs_stats stats_;
@@ -205,48 +218,11 @@ private:
     scratch_vector<std::uint32_t> near_keys_, near_ids_;  ///< visits to the strip above, before the merge (when there are far ones)
 
     std::vector<part> parts_;
-    // The pairs a query that keeps its candidates may keep, counted over all
-    // parts, so that whether it keeps them does not depend on the threads.
-    std::size_t capture_budget_ = 0;
-    mutable std::atomic<std::size_t> captured_all_{0};
     std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 
-    // Kept candidates. keep_ is set while a query keeps its candidates, and
-    // margin_ then sets the widening of its bounds (in_lo_x_... hold the
-    // widened bounds, now_ the bounds themselves, one 16-byte entry per
-    // rectangle so that a candidate's test reads two and compares them in one
-    // vector).
-    bool keep_ = false;
-    bool kept_ready_ = false;
-    float margin_ = 0;                ///< each box widened by margin_ times its larger extent or typical_extent_
-    float typical_extent_ = 0;        ///< about the median of the boxes' larger extents, from the last query
-    float measured_typical_extent_ = 0;  ///< the same of this query's boxes, measured with its extent, applied when it ends
-    double margin_share_ = 1.0 / 16;  ///< margin_ of the next full query that follows motion
-    std::size_t kept_calls_ = 0;      ///< calls answered by the kept candidates
-    std::size_t last_candidates_ = 0;  ///< candidates of the last full query, for the budget of kept ones
-    /// Bounds as (lo_x, lo_y, -hi_x, -hi_y): two overlap iff one's entry is at
-    /// most the other's with halves swapped and negated, in all four places.
-    struct signed_bounds {
-        float v[4];
-    };
-    scratch_vector<signed_bounds> now_;
-    /// Entry r of a run of bounds as signed_bounds.
-    static signed_bounds signed_bounds_of(const bounds_run& b, std::size_t r) {
-        return signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
-    }
-    std::vector<pair_index> kept_;             ///< in the query's order, as the kernel takes them
-    std::vector<tagged_pair> kept_by_caller_;  ///< (a, b) in the caller's indices, sorted; tag: index into kept_
-    std::vector<std::uint64_t> kept_verdicts_;  ///< bit i % 64 of word i / 64: the verdict on kept_[i]
-    /// For share s > 0 of an answer in answer_parts_ shares (share_of over
-    /// kept_by_caller_), words [(s - 1) W, s W) with W the words of
-    /// kept_verdicts_: bit i set iff kept_[i] is in share s. The test counts
-    /// each share's colliding pairs with them, so every share of the answer
-    /// is written where it belongs, with no copy.
-    std::vector<std::uint64_t> answer_marks_;
-    std::size_t answer_parts_ = 0;  ///< 0 while answer_marks_ marks nothing
-    std::vector<pair_sort_scratch<tagged_pair>> tag_scratch_;
+    kept_pairs kept_;  ///< pair_finder's kept candidates and the policy that keeps them
 };
 
 }  // namespace obbsat::detail

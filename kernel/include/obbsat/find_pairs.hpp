@@ -19,17 +19,19 @@
 // checked when it was built) or rows in the caller's memory (rect_pose or
 // rect, e.g. a std::vector of them or a numpy array), read in place and
 // checked by every query that reads them, in the pass that computes the
-// bounds: a non-finite value, a negative half extent or a zero rotation
-// vector is refused with invalid_input naming the row and the field, prefixed
-// "a: " or "b: " in a query across two sets; no pair is reported then.
+// bounds, every row whatever their count (one row, or rows against an empty
+// set, are checked too): a non-finite value, a negative half extent or a zero
+// rotation vector is refused with invalid_input naming the row and the field,
+// prefixed "a: " or "b: " in a query across two sets; no pair is reported then.
 //
 // Memory: about 100 bytes per rectangle while the pairs are found (one copy
 // of the records in the query's own order, its bounds, order and strips)
 // and 8 bytes per reported pair; find_pairs releases the per-rectangle
 // memory before it sorts the pairs, which takes 8 more bytes per pair, so
 // its peak is the larger of the two phases. find_pairs_each holds no pairs
-// beyond a few thousand per thread. A pair_finder keeps all of it for the
-// next call.
+// beyond 4096 per thread, however crowded the scene (a strip's candidates
+// are tested in blocks of 2048 and the pairs found handed on as they come).
+// A pair_finder keeps all of it for the next call.
 #pragma once
 
 #include <obbsat/collide.hpp>
@@ -110,9 +112,10 @@ std::vector<pair_index> find_pairs(box_view boxes, const collide_options& option
 /// j; `a` and `b` hold the same kind (invalid_input otherwise).
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options);
 
-/// Receives the colliding pairs in chunks, never from two threads at once,
-/// in no particular order (each pair once, i < j for one store, i in a and j
-/// in b for two); the pointer is valid only during the call.
+/// Receives the colliding pairs in chunks of at most 4096 pairs, never from
+/// two threads at once, in no particular order (each pair once, i < j for
+/// one store, i in a and j in b for two); the pointer is valid only during
+/// the call.
 using pair_chunk_sink = std::function<void(const pair_index* pairs, std::size_t count)>;
 
 /// Streams the pairs of find_pairs to `sink` without holding them all.
@@ -144,6 +147,10 @@ class pair_search;
 /// first, 29 per rectangle (its bounds, its key, and the repair of the
 /// order), and 8 more per rectangle that changed strips since the last full
 /// query.
+///
+/// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
+/// and its find and stats throw invalid_input ("... on a moved-from
+/// pair_finder ...") until a pair_finder is assigned to it.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);

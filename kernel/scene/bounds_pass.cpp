@@ -1,0 +1,166 @@
+// Step 1 of the scene query (pair_search.hpp): the bounds of every rectangle, their extent, and the rows' check.
+#include "scene/pair_search.hpp"
+
+#include "dispatch/backend_registry.hpp"
+#include "scene/search_common.hpp"
+#include "support/work_shares.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace obbsat::detail {
+
+namespace {
+
+double clamp_finite(float x) {
+    return static_cast<double>(std::min(std::max(x, -FLT_MAX), FLT_MAX));
+}
+
+}  // namespace
+
+void pair_search::widen(bounds_run& b, std::size_t count) const {
+    if (!kept_.keep || kept_.margin == 0.0f) {
+        return;
+    }
+    // Each box by a share of its larger extent or of the scene's typical
+    // extent, whichever is larger, so that a few huge boxes widen only
+    // themselves and the smallest still get room to move. Rounding is
+    // monotone, so lo - m <= lo and hi + m >= hi: the widened bounds contain
+    // the bounds. An extent is never NaN (lo <= hi, at worst -inf and +inf),
+    // so neither is m.
+    for (std::size_t i = 0; i < count; ++i) {
+        const float m =
+            kept_.margin * std::max(std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]), kept_.typical_extent);
+        b.lo_x[i] -= m;
+        b.lo_y[i] -= m;
+        b.hi_x[i] += m;
+        b.hi_y[i] += m;
+    }
+}
+
+void pair_search::input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const {
+    const bounds_fn kernel = kernels_for(ran_).bounds;
+    std::size_t i = begin;
+    while (i < end) {
+        // One set at a time: the rows of a and of b may have different strides.
+        const bool in_a = i < input.a_count;
+        const std::size_t stop = in_a ? std::min(end, input.a_count) : end;
+        const std::size_t o = i - begin;
+        if ((in_a ? input.a_stride : input.b_stride) == 8) {
+            kernel(kind_, record_at(input, i), stop - i, out.lo_x + o, out.lo_y + o, out.hi_x + o, out.hi_y + o);
+        } else {
+            for (std::size_t k = i; k < stop; ++k) {
+                const ref::box_bounds b = bounds_of_record(kind_, record_at(input, k));
+                out.lo_x[k - begin] = b.lo_x;
+                out.lo_y[k - begin] = b.lo_y;
+                out.hi_x[k - begin] = b.hi_x;
+                out.hi_y[k - begin] = b.hi_y;
+            }
+        }
+        i = stop;
+    }
+}
+
+void pair_search::measure_extent(const query_input& input, std::size_t parts, bool with_keys) {
+    if (with_keys) {
+        key_by_id_.resize(n_);
+    }
+    struct partial {
+        double x_low = std::numeric_limits<double>::infinity();
+        double x_high = -std::numeric_limits<double>::infinity();
+        double y_low = std::numeric_limits<double>::infinity();
+        double y_high = -std::numeric_limits<double>::infinity();
+        double height_sum = 0;
+        std::size_t first_bad = std::numeric_limits<std::size_t>::max();
+        std::array<std::uint32_t, 256> exponents{};  ///< of the boxes' larger extents, before widening
+    };
+    std::vector<partial> partials(parts);
+    // Rows the caller's memory holds are checked here, as they are read; a
+    // row that fails takes no part in anything that follows.
+    const bool check_a = !input.a_checked;
+    const bool check_b = !input.b_checked;
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
+        float height_sum = 0;
+        double total = 0;
+        std::size_t first_bad = std::numeric_limits<std::size_t>::max();
+        std::array<std::uint32_t, 256>& exponents = partials[share].exponents;
+        // Heights are summed in float over runs and in double across them.
+        bounds_run b;
+        std::uint32_t extent_exponent[bounds_run::size];
+        for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
+            const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+            input_bounds(input, run_begin, run_end, b);
+            for (std::size_t r = 0; r < run_end - run_begin; ++r) {
+                const float extent = std::max(b.hi_x[r] - b.lo_x[r], b.hi_y[r] - b.lo_y[r]);
+                std::uint32_t bits;
+                std::memcpy(&bits, &extent, sizeof bits);
+                extent_exponent[r] = (bits >> 23) & 0xffu;
+            }
+            widen(b, run_end - run_begin);
+            for (std::size_t i = run_begin; i < run_end; ++i) {
+                // A row that fails its check has bounds of no meaning: it takes no part.
+                if ((i < a_count_ ? check_a : check_b) && !valid_row(kind_, record_at(input, i))) {
+                    first_bad = std::min(first_bad, i);
+                    continue;
+                }
+                const std::size_t r = i - run_begin;
+                ++exponents[extent_exponent[r]];
+                if (with_keys) {
+                    key_by_id_[i] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
+                }
+                x_low = std::min(x_low, b.lo_x[r]);
+                x_high = std::max(x_high, b.hi_x[r]);
+                y_low = std::min(y_low, b.lo_y[r]);
+                y_high = std::max(y_high, b.hi_y[r]);
+                height_sum += std::min(b.hi_y[r] - b.lo_y[r], FLT_MAX / bounds_run::size);
+            }
+            total += static_cast<double>(height_sum);
+            height_sum = 0;
+        }
+        partial& p = partials[share];
+        p.x_low = clamp_finite(x_low);
+        p.x_high = clamp_finite(x_high);
+        p.y_low = clamp_finite(y_low);
+        p.y_high = clamp_finite(y_high);
+        p.height_sum = total + static_cast<double>(height_sum);
+        p.first_bad = first_bad;
+    });
+    for (const partial& p : partials) {
+        if (p.first_bad != std::numeric_limits<std::size_t>::max()) {
+            refuse_row(input, p.first_bad);  // parts are in order: the first bad row of all
+        }
+    }
+    partial all;
+    for (const partial& p : partials) {
+        all.x_low = std::min(all.x_low, p.x_low);
+        all.x_high = std::max(all.x_high, p.x_high);
+        all.y_low = std::min(all.y_low, p.y_low);
+        all.y_high = std::max(all.y_high, p.y_high);
+        all.height_sum += p.height_sum;
+    }
+    extent_ = bounds_extent{all.x_low, all.x_high, all.y_low, all.y_high,
+                            all.height_sum / static_cast<double>(n_)};
+    // The median of the boxes' larger extents, to the power of two below it:
+    // a histogram of float exponents, robust to a few huge or tiny boxes.
+    // Exponent 0 holds zero and subnormal extents, 255 infinite ones: no scale.
+    std::size_t seen = 0;
+    int median = 0;
+    for (int e = 0; e < 256; ++e) {
+        for (const partial& p : partials) {
+            seen += p.exponents[static_cast<std::size_t>(e)];
+        }
+        if (2 * seen > n_) {
+            median = e;
+            break;
+        }
+    }
+    kept_.measured_typical_extent = median > 0 && median < 255 ? std::ldexp(1.0f, median - 127) : 0.0f;
+}
+
+}  // namespace obbsat::detail

@@ -1,0 +1,225 @@
+// pair_finder's kept candidates (kept_pairs.hpp): the policy that keeps them, the refreshed records, the kept list.
+#include "scene/pair_search.hpp"
+
+#include "dispatch/backend_registry.hpp"
+#include "scene/search_common.hpp"
+#include "sort/pair_sort.hpp"
+#include "support/fetch_ahead.hpp"
+#include "support/work_shares.hpp"
+
+#include <obbsat/method.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+namespace obbsat::detail {
+
+namespace {
+
+/// Writes `count` 32-byte records from `from` to `to` (both 16-byte aligned)
+/// with non-temporal stores where the CPU has them: lines written whole are
+/// not read in first. finish_streams orders them before what follows.
+template <class Record>
+void stream_records(const Record* from, std::size_t count, Record* to) {
+    static_assert(sizeof(Record) == 32, "two 16-byte stores a record");
+#if defined(__SSE2__)
+    for (std::size_t k = 0; k < count; ++k) {
+        _mm_stream_ps(to[k].v, _mm_load_ps(from[k].v));
+        _mm_stream_ps(to[k].v + 4, _mm_load_ps(from[k].v + 4));
+    }
+#else
+    std::memcpy(to, from, count * sizeof(Record));
+#endif
+}
+
+void finish_streams() {
+#if defined(__SSE2__)
+    _mm_sfence();
+#endif
+}
+
+}  // namespace
+
+const std::vector<pair_index>& pair_search::collect(const query_input& input) {
+    set_query(input);
+    const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
+    if (kept_.ready && same_scene_as_last() && n_ >= 2) {
+        const auto start = clock_type::now();
+        // An exact method calls a pair colliding only if the two rectangles
+        // share a point, so only if their bounds overlap (the bounds hold the
+        // rectangles): its verdict on a kept pair whose bounds do not overlap
+        // is false, the answer of leaving the pair out. It tests every kept
+        // pair, which costs less than the filter, and needs no bounds of this
+        // call beyond the check that they fit.
+        const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
+        const bool fits = refresh_records(input, parts, !exact);
+        stats_.bounds_seconds = seconds_since(start);
+        if (fits) {
+            ++kept_.calls;
+            stats_.reused_order = true;
+            stats_.reused_candidates = true;
+            stats_.kept_candidates = kept_.pairs.size();
+            stats_.strips = grid_.strips;
+            stats_.visits = visit_keys_.size() - 1;
+            used_parts_ = parts;
+            test_kept(parts, exact);
+            answer_from_kept(parts);
+            return pairs_;
+        }
+    }
+    // A full query that keeps its candidates. The margin follows the motion:
+    // kept candidates that served only a few calls widen the next ones, and
+    // candidates that outlived many calls narrow them.
+    if (kept_.ready && kept_.margin > 0.0f) {
+        if (kept_.calls < 4) {
+            kept_.margin_share = std::min(kept_.margin_share * 2, 1.0 / 2);
+        } else if (kept_.calls > 64) {
+            kept_.margin_share = std::max(kept_.margin_share / 2, 1.0 / 256);
+        }
+    }
+    kept_.ready = false;
+    kept_.calls = 0;
+    if (!same_scene_as_last()) {
+        // The first call on a scene knows no motion yet, and pairs kept from
+        // bounds not widened would serve no call after a move: it answers
+        // as a plain query, and the next call keeps the pairs of widened bounds.
+        return answer_plainly(input);
+    }
+    kept_.margin = static_cast<float>(kept_.margin_share);
+    kept_.keep = true;
+    try {
+        run(input, pair_chunk_sink{});
+    } catch (...) {
+        kept_.keep = false;
+        throw;
+    }
+    kept_.keep = false;
+    if (used_parts_ == 0) {
+        pairs_.clear();
+        return pairs_;
+    }
+    bool over_budget = false;
+    for (std::size_t i = 0; i < used_parts_; ++i) {
+        over_budget |= parts_[i].keep.over_budget;
+    }
+    if (over_budget) {
+        // The widened bounds met too many others: this call answers as a
+        // plain query, and the next full query widens less.
+        for (std::size_t i = 0; i < used_parts_; ++i) {
+            std::vector<pair_index>().swap(parts_[i].keep.captured);
+        }
+        kept_.margin_share = std::max(kept_.margin_share / 4, 1.0 / 256);
+        return answer_plainly(input);
+    }
+    keep_candidates(used_parts_);
+    kept_.ready = true;
+    test_kept(used_parts_, false);
+    kept_.last_candidates = stats_.candidates;
+    answer_from_kept(used_parts_);
+    return pairs_;
+}
+
+bool pair_search::refresh_records(const query_input& input, std::size_t parts, bool keep_bounds) {
+    // The records in the kept order with this call's rows; every rectangle's
+    // bounds must lie inside its widened bounds. A row that fails its check
+    // makes this false too: the full query names it.
+    const bounds_fn bounds = kernels_for(ran_).bounds;
+    const bool check_a = !input.a_checked;
+    const bool check_b = !input.b_checked;
+    std::vector<unsigned char> fits(parts, 1);
+    const bool stream = n_ * sizeof(record) > store_bytes_from_dram;
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        constexpr std::size_t ahead = random_rows_ahead;
+        bounds_run b;
+        bool ok = true;
+        // Plain locals: the record stores may alias anything the loop reads.
+        const query_input in = input;
+        const std::uint32_t* const order = order_.data();
+        record* const records = records_.data();
+        // Records read from DRAM by the test are written past the cache: a
+        // run is staged here, its bounds computed from the stage, and then
+        // streamed out, so no old record is read in before it is overwritten.
+        alignas(64) record stage[bounds_run::size];
+        for (std::size_t run_begin = begin; run_begin < end && ok; run_begin += bounds_run::size) {
+            const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+            record* const into = stream ? stage : records + run_begin;
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                if (k + ahead < end) {
+                    fetch_into_l2(record_at(in, order[k + ahead]));
+                }
+                const std::uint32_t id = order[k];
+                if (id < in.a_count ? check_a : check_b) {
+                    ok &= valid_row(in.kind, record_at(in, id));
+                }
+                copy_row(in, id, into[k - run_begin].v);
+            }
+            bounds(kind_, into[0].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+            if (stream) {
+                stream_records(stage, run_end - run_begin, records + run_begin);
+            }
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                const std::size_t r = k - run_begin;
+                const unsigned inside = static_cast<unsigned>(b.lo_x[r] >= in_lo_x_[k]) &
+                                        static_cast<unsigned>(b.lo_y[r] >= in_lo_y_[k]) &
+                                        static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
+                                        static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
+                ok &= inside != 0;
+            }
+            if (keep_bounds) {
+                for (std::size_t k = run_begin; k < run_end; ++k) {
+                    kept_.now[k] = signed_bounds_of(b, k - run_begin);
+                }
+            }
+        }
+        if (stream) {
+            finish_streams();
+        }
+        fits[share] = ok ? 1 : 0;
+    });
+    return std::find(fits.begin(), fits.end(), 0) == fits.end();
+}
+
+void pair_search::keep_candidates(std::size_t parts) {
+    // The parts' candidates one after the other, in the sweep's order, and
+    // each one's pair in the caller's indices tagged with its position.
+    const auto start = clock_type::now();
+    std::vector<std::size_t> offsets(parts + 1, 0);
+    for (std::size_t i = 0; i < parts; ++i) {
+        offsets[i + 1] = offsets[i] + parts_[i].keep.captured.size();
+    }
+    kept_.pairs.resize(offsets[parts]);
+    std::vector<pair_source<tagged_pair>> sources;
+    run_parts(parts, [&](std::size_t share) {
+        part& p = parts_[share];
+        std::copy(p.keep.captured.begin(), p.keep.captured.end(),
+                  kept_.pairs.begin() + static_cast<std::ptrdiff_t>(offsets[share]));
+        p.keep.tagged.resize(p.keep.captured.size());
+        for (std::size_t i = 0; i < p.keep.captured.size(); ++i) {
+            const pair_index caller = caller_pair(p.keep.captured[i]);
+            p.keep.tagged[i] = tagged_pair{caller.a, caller.b, static_cast<std::uint32_t>(offsets[share] + i)};
+        }
+        p.keep.captured.clear();
+    });
+    for (std::size_t i = 0; i < parts; ++i) {
+        sources.push_back({{parts_[i].keep.tagged.data(), parts_[i].keep.tagged.size()}});
+    }
+    if (kept_.tag_scratch.size() < parts) {
+        kept_.tag_scratch.resize(parts);
+    }
+    sort_pairs(sources, self_ ? n_ : a_count_, kept_.by_caller, kept_.tag_scratch);
+    for (std::size_t i = 0; i < parts; ++i) {
+        parts_[i].keep.tagged.clear();
+    }
+    stats_.kept_candidates = kept_.pairs.size();
+    kept_.answer_parts = 0;
+    stats_.output_seconds += seconds_since(start);
+}
+
+}  // namespace obbsat::detail

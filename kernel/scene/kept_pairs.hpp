@@ -1,0 +1,79 @@
+// The state of pair_finder's kept candidates (the policy described at the
+// top of pair_search.hpp), apart from the plain query's: one place for what
+// it keeps between calls and what each thread's share of it holds. Its steps
+// are in kept_pairs.cpp and kept_answer.cpp. Internal to the library.
+#pragma once
+
+#include "sort/pair_sort.hpp"
+#include "support/scratch_vector.hpp"
+
+#include <obbsat/rect.hpp>
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace obbsat::detail {
+
+/// Bounds as (lo_x, lo_y, -hi_x, -hi_y): two overlap iff one's entry is at
+/// most the other's with halves swapped and negated, in all four places.
+struct signed_bounds {
+    float v[4];
+};
+
+/// What pair_search keeps for pair_finder's later calls.
+struct kept_pairs {
+    // The policy.
+    /// Set while a full query keeps its candidates instead of testing them;
+    /// `margin` then sets the widening of its bounds (pair_search::widen).
+    bool keep = false;
+    /// `pairs` hold the candidates of the last full query's widened bounds,
+    /// and the next call on the same scene may answer from them.
+    bool ready = false;
+    float margin = 0;                   ///< each box widened by margin times its larger extent or typical_extent
+    float typical_extent = 0;           ///< about the median of the boxes' larger extents, from the last query
+    /// The same of this query's boxes, measured with its extent, applied when it ends.
+    float measured_typical_extent = 0;
+    double margin_share = 1.0 / 16;     ///< margin of the next full query that follows motion
+    std::size_t calls = 0;              ///< calls answered by the kept candidates
+    std::size_t last_candidates = 0;    ///< candidates of the last full query, for the budget of kept ones
+
+    // The budget of a full query that keeps its candidates: the pairs it may
+    // keep, counted over all parts, so that whether it keeps them does not
+    // depend on the threads.
+    std::size_t capture_budget = 0;
+    mutable std::atomic<std::size_t> captured_all{0};
+
+    // The kept candidates.
+    /// The bounds themselves, one 16-byte entry per rectangle in the query's
+    /// order, so that a candidate's test reads two and compares them in one
+    /// vector (the query's in_lo_x... then hold the widened bounds).
+    scratch_vector<signed_bounds> now;
+    std::vector<pair_index> pairs;         ///< in the query's order, as the kernel takes them
+    std::vector<tagged_pair> by_caller;    ///< (a, b) in the caller's indices, sorted; tag: index into pairs
+    std::vector<std::uint64_t> verdicts;   ///< bit i % 64 of word i / 64: the verdict on pairs[i]
+    /// For share s > 0 of an answer in answer_parts shares (share_of over
+    /// by_caller), words [(s - 1) W, s W) with W the words of verdicts: bit i
+    /// set iff pairs[i] is in share s. The test counts each share's colliding
+    /// pairs with them, so every share of the answer is written where it
+    /// belongs, with no copy.
+    std::vector<std::uint64_t> answer_marks;
+    std::size_t answer_parts = 0;  ///< 0 while answer_marks marks nothing
+    std::vector<pair_sort_scratch<tagged_pair>> tag_scratch;
+};
+
+/// One thread's share of the kept candidates (a member of each part of the sweep).
+struct kept_share {
+    /// Candidates kept instead of tested (a query that keeps them).
+    std::vector<pair_index> captured;
+    bool over_budget = false;  ///< the query's candidates passed capture_budget
+    scratch_vector<tagged_pair> tagged;  ///< written whole before it is read: never zeroed
+    /// The kept candidates' positions in a block under test.
+    std::vector<std::uint32_t> slots;
+    std::size_t colliding = 0;  ///< kept candidates the method called colliding
+    /// Of those, how many fall in each share of the answer past the first.
+    std::vector<std::size_t> colliding_in_share;
+};
+
+}  // namespace obbsat::detail

@@ -1,0 +1,151 @@
+// Step 2 of the scene query (pair_search.hpp): the grid of strips and the query's order, sorted anew or repaired.
+#include "scene/pair_search.hpp"
+
+#include "scene/search_common.hpp"
+#include "sort/radix_sort.hpp"
+#include "support/work_shares.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+namespace obbsat::detail {
+
+bool pair_search::same_scene_as_last() const {
+    return have_order_ && ordered_n_ == n_ && ordered_a_count_ == a_count_ && ordered_kind_ == kind_ &&
+           ordered_self_ == self_;
+}
+
+void pair_search::order_boxes(const query_input& input, std::size_t parts) {
+    // measure_extent computed the keys on the last grid when there was one.
+    const bool keep_grid = same_scene_as_last() && grid_still_fits(grid_, extent_);
+    if (!keep_grid) {
+        grid_ = grid_for(extent_, n_, strip_factor);
+    }
+    keys_.resize(n_);
+    order_.resize(n_);
+    stats_.reused_order = keep_grid && repair_order(parts);
+    if (!stats_.reused_order) {
+        run_parts(parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(n_, share, parts);
+            bounds_run b;
+            for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
+                const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+                input_bounds(input, run_begin, run_end, b);
+                widen(b, run_end - run_begin);
+                for (std::size_t i = run_begin; i < run_end; ++i) {
+                    keys_[i] = grid_.key_of(b.lo_x[i - run_begin], b.lo_y[i - run_begin]);
+                    order_[i] = static_cast<std::uint32_t>(i);
+                }
+            }
+        });
+        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts);
+    }
+    have_order_ = true;
+    ordered_n_ = n_;
+    ordered_a_count_ = a_count_;
+    ordered_kind_ = kind_;
+    ordered_self_ = self_;
+}
+
+bool pair_search::repair_order(std::size_t parts) {
+    // The last order with this query's keys: nearly sorted when the
+    // rectangles moved a little, but for those that changed strips, each of
+    // which an insertion sort would carry across about half its new strip.
+    // So the rectangles that stayed in their strips keep the last order and
+    // are repaired there, strip by strip, the strips split between the
+    // threads; those that changed strips are sorted apart; the two are then
+    // merged. keys_ still holds the last query's keys, in its order.
+    const unsigned q_bits = grid_.q_bits;
+    changed_strip_.resize(n_);
+    std::vector<std::size_t> changed_before(parts + 1, 0);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        std::size_t changed = 0;
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t key = key_by_id_[order_[k]];
+            const bool moved = (key >> q_bits) != (keys_[k] >> q_bits);
+            changed_strip_[k] = moved ? 1 : 0;
+            changed += moved ? 1 : 0;
+            keys_[k] = key;
+        }
+        changed_before[share + 1] = changed;
+    });
+    std::partial_sum(changed_before.begin(), changed_before.end(), changed_before.begin());
+    const std::size_t changed = changed_before[parts];
+    const std::size_t stayed = n_ - changed;
+    stay_keys_.resize(stayed);
+    stay_ids_.resize(stayed);
+    moved_keys_.resize(changed);
+    moved_ids_.resize(changed);
+    // The rectangles that stayed are in the order of their strips already,
+    // as each share checks (and the shares' ends against each other): the
+    // strips are found by position below.
+    std::vector<std::uint32_t> first_strip(parts, 0), last_strip(parts, 0);
+    std::vector<unsigned char> in_strip_order(parts, 1);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        std::size_t m = changed_before[share];
+        std::size_t s = begin - m;
+        const std::size_t share_first = s;
+        std::uint32_t last = 0;
+        unsigned ordered = 1;
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t key = keys_[k];
+            if (changed_strip_[k] != 0) {
+                moved_keys_[m] = key;
+                moved_ids_[m] = order_[k];
+                ++m;
+            } else {
+                ordered &= (key >> q_bits) >= last ? 1u : 0u;
+                last = key >> q_bits;
+                stay_keys_[s] = key;
+                stay_ids_[s] = order_[k];
+                ++s;
+            }
+        }
+        first_strip[share] = s > share_first ? stay_keys_[share_first] >> q_bits : 0;
+        last_strip[share] = last;
+        in_strip_order[share] = static_cast<unsigned char>(ordered);
+    });
+    std::uint32_t last_so_far = 0;
+    for (std::size_t share = 0; share < parts; ++share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        const bool stayers = end - begin > changed_before[share + 1] - changed_before[share];
+        if (in_strip_order[share] == 0 || (stayers && first_strip[share] < last_so_far)) {
+            return false;
+        }
+        last_so_far = stayers ? last_strip[share] : last_so_far;
+    }
+    std::vector<std::uint32_t> strip_begin(grid_.strips + 1);
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(stayed, share, parts);
+        bucket_starts(stay_keys_.data(), stayed, q_bits, grid_.strips, begin, end, strip_begin.data());
+    });
+    std::vector<unsigned char> repaired(parts, 1);
+    run_parts(parts, [&](std::size_t share) {
+        const std::size_t first = grid_.strips * share / parts;
+        const std::size_t last = grid_.strips * (share + 1) / parts;
+        const std::size_t begin = strip_begin[first];
+        const std::size_t end = strip_begin[last];
+        std::size_t budget = 16 * (end - begin);
+        for (std::size_t s = first; s < last && repaired[share] != 0; ++s) {
+            const std::size_t b = strip_begin[s];
+            const std::size_t count = strip_begin[s + 1] - b;
+            std::size_t moved = 0;
+            if (!repair_sort(stay_keys_.data() + b, stay_ids_.data() + b, count, budget, &moved)) {
+                repaired[share] = 0;
+            }
+            budget -= std::min(budget, moved);
+        }
+    });
+    if (std::find(repaired.begin(), repaired.end(), 0) != repaired.end()) {
+        return false;
+    }
+    radix_sort(moved_keys_.data(), moved_ids_.data(), changed, grid_.key_bits(), packed_, spare_, parts);
+    merge_by_key(stay_keys_.data(), stay_ids_.data(), stayed, moved_keys_.data(), moved_ids_.data(), changed,
+                 keys_.data(), order_.data(), parts);
+    return true;
+}
+
+}  // namespace obbsat::detail

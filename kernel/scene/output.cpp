@@ -1,0 +1,58 @@
+// Step 6 of the scene query (pair_search.hpp): the found pairs as one list sorted by (a, b).
+#include "scene/pair_search.hpp"
+
+#include "scene/search_common.hpp"
+#include "sort/pair_sort.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace obbsat::detail {
+
+void pair_search::sort_found() {
+    const auto start = clock_type::now();
+    std::vector<pair_source<pair_index>> sources;
+    for (std::size_t i = 0; i < used_parts_; ++i) {
+        sources.push_back(parts_[i].found.spans());
+    }
+    const std::size_t parts = std::max<std::size_t>(1, sources.size());
+    if (sort_scratch_.size() < parts) {
+        sort_scratch_.resize(parts);
+    }
+    sort_pairs(sources, self_ ? n_ : a_count_, pairs_, sort_scratch_);
+    for (part& p : parts_) {
+        p.found.clear();
+    }
+    stats_.pairs = pairs_.size();
+    stats_.output_seconds += seconds_since(start);
+}
+
+const std::vector<pair_index>& pair_search::answer_plainly(const query_input& input) {
+    // kept_.keep is false: the bounds themselves, not widened (see widen), so the
+    // method is asked of the same candidates as in find_pairs.
+    run(input, pair_chunk_sink{});
+    sort_found();
+    kept_.last_candidates = stats_.candidates;
+    return pairs_;
+}
+
+std::vector<pair_index> pair_search::collect_once(const query_input& input) {
+    run(input, pair_chunk_sink{});
+    // The scene's working memory goes before the sorted copy of the pairs is
+    // made: the peak is the larger of the two, not their sum.
+    decltype(records_)().swap(records_);
+    for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
+        scratch_vector<float>().swap(*v);
+    }
+    for (auto* v : {&keys_, &order_, &key_by_id_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_, &far_keys_,
+                    &far_ids_, &near_keys_, &near_ids_}) {
+        scratch_vector<std::uint32_t>().swap(*v);
+    }
+    radix_buffer().swap(packed_);
+    radix_buffer().swap(spare_);
+    sort_found();
+    return std::move(pairs_);
+}
+
+}  // namespace obbsat::detail

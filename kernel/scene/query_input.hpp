@@ -1,0 +1,76 @@
+// The rows of a scene query (pair_search.hpp) where the caller keeps them:
+// which row an index names, copying one, checking one, its bounds. Used by
+// every step that reads the input. Internal to the library, baseline ISA.
+#pragma once
+
+#include "store/finite_check.hpp"
+#include "store/pose_record.hpp"
+
+#include <obbsat/method.hpp>
+#include <obbsat/rect.hpp>
+#include <obbsat/rect_pose.hpp>
+#include <obbsat/ref/bounds.hpp>
+
+#include <cstddef>
+#include <cstring>
+
+namespace obbsat::detail {
+
+/// The rectangles of one query: one or two sets of one kind, each rows of
+/// `stride` floats (a pose's first six floats are cx, cy, hx, hy, c, s; a
+/// corner row's eight are UL, UR, LR, LL). A set not `checked` is checked by
+/// the pass that computes the bounds.
+struct query_input {
+    store_kind kind = store_kind::poses;
+    const float* a = nullptr;  ///< the first set
+    std::size_t a_count = 0;
+    std::size_t a_stride = 8;
+    bool a_checked = true;
+    const float* b = nullptr;  ///< the second set; nullptr for a query within a
+    std::size_t b_count = 0;
+    std::size_t b_stride = 8;
+    bool b_checked = true;
+};
+
+/// Row `id` of the query: of the first set below a_count, else of the second.
+inline const float* record_at(const query_input& input, std::size_t id) {
+    return id < input.a_count ? input.a + input.a_stride * id : input.b + input.b_stride * (id - input.a_count);
+}
+
+inline std::size_t stride_of(const query_input& input, std::size_t id) {
+    return id < input.a_count ? input.a_stride : input.b_stride;
+}
+
+/// True iff the values of one row are a valid rectangle of its kind (finite_check.hpp).
+inline bool valid_row(store_kind kind, const float* v) {
+    return kind == store_kind::poses ? valid_pose_row(v) : all_finite(v, 8);
+}
+
+/// Throws the store's own message for row `id` of the query, which valid_row
+/// refused: "pose 7: ..." or "rectangle 7: ...", with "a: " or "b: " in front
+/// in a query across two sets.
+[[noreturn]] void refuse_row(const query_input& input, std::size_t id);
+
+/// Checks every row of the sets not `checked` and refuses the first invalid
+/// one (refuse_row): for a query with nothing to compare, which reads no
+/// bounds, so that it refuses what a larger one would.
+void require_valid_rows(const query_input& input);
+
+inline ref::box_bounds bounds_of_record(store_kind kind, const float* v) {
+    if (kind == store_kind::poses) {
+        return ref::bounds_of(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}});
+    }
+    return ref::bounds_of(rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
+}
+
+/// Copies row `id` of the query into `out` (a pose row's two last floats zero).
+inline void copy_row(const query_input& input, std::size_t id, float* out) {
+    const float* row = record_at(input, id);
+    if (stride_of(input, id) == 8) {
+        std::memcpy(out, row, 8 * sizeof(float));
+    } else {
+        widen_pose_row(out, row);
+    }
+}
+
+}  // namespace obbsat::detail

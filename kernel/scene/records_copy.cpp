@@ -1,0 +1,64 @@
+// Step 2 of the scene query (pair_search.hpp), second half: the records copied into the query's order.
+#include "scene/pair_search.hpp"
+
+#include "dispatch/backend_registry.hpp"
+#include "scene/search_common.hpp"
+#include "support/fetch_ahead.hpp"
+#include "support/work_shares.hpp"
+
+#include <algorithm>
+
+namespace obbsat::detail {
+
+void pair_search::copy_records(const query_input& input, std::size_t parts) {
+    records_.resize(n_);
+    in_lo_x_.resize(n_);
+    in_lo_y_.resize(n_);
+    in_hi_x_.resize(n_);
+    in_hi_y_.resize(n_);
+    q_lo_.resize(n_);
+    q_hi_.resize(n_);
+    strip_hi_.resize(n_);
+    side_.resize(n_);
+    if (kept_.keep) {
+        kept_.now.resize(n_);
+    }
+    const bounds_fn bounds = kernels_for(ran_).bounds;
+    run_parts(parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, parts);
+        constexpr std::size_t ahead = random_rows_ahead;
+        bounds_run b;
+        for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
+            const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                if (k + ahead < end) {
+                    fetch_into_l2(record_at(input, order_[k + ahead]));
+                }
+                const std::uint32_t id = order_[k];
+                copy_row(input, id, records_[k].v);
+                side_[k] = id >= a_count_ && !self_ ? 1 : 0;
+            }
+            // The same function on the same floats as the extent pass: the bounds of step 1.
+            bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+            if (kept_.keep) {
+                // The bounds themselves for the kept candidates' test, the widened ones for the sweep.
+                for (std::size_t k = run_begin; k < run_end; ++k) {
+                    kept_.now[k] = signed_bounds_of(b, k - run_begin);
+                }
+                widen(b, run_end - run_begin);
+            }
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                const std::size_t r = k - run_begin;
+                in_lo_x_[k] = b.lo_x[r];
+                in_lo_y_[k] = b.lo_y[r];
+                in_hi_x_[k] = b.hi_x[r];
+                in_hi_y_[k] = b.hi_y[r];
+                q_lo_[k] = grid_.q_of(b.lo_x[r]);
+                q_hi_[k] = grid_.q_of(b.hi_x[r]);
+                strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
+            }
+        }
+    });
+}
+
+}  // namespace obbsat::detail

@@ -1,0 +1,39 @@
+// What several steps of the scene query (pair_search.hpp) share: its block
+// sizes and thresholds, and the clock of its stats. Internal to the library,
+// baseline ISA; every name has internal linkage or is inline.
+#pragma once
+
+#include "scene/pair_blocks.hpp"
+
+#include <chrono>
+#include <cstddef>
+
+namespace obbsat::detail {
+
+/// Strips are this many mean bounds heights tall (measured: see docs/performance.md).
+constexpr double strip_factor = 2.0;
+
+/// Candidates handed to the method's kernel at once.
+constexpr std::size_t candidate_block = 2048;
+static_assert(candidate_block <= pair_blocks::block_pairs, "a block of candidates fits in a block of found pairs");
+
+/// A query that widens its bounds keeps at most this many times the
+/// candidates of the last query, plus one per rectangle; a scene whose
+/// widened bounds would give more is answered as a plain query.
+constexpr std::size_t kept_budget_factor = 4;
+
+/// The most found pairs a part of a streaming query holds, and so hands to
+/// the sink at once (find_pairs.hpp).
+constexpr std::size_t emit_block = 4096;
+static_assert(candidate_block <= emit_block, "a flush of candidates fits in a chunk of found pairs");
+
+/// Below this many rectangles per part, a second core costs more than it saves.
+constexpr std::size_t min_boxes_per_part = 16384;
+
+using clock_type = std::chrono::steady_clock;
+
+inline double seconds_since(clock_type::time_point start) {
+    return std::chrono::duration<double>(clock_type::now() - start).count();
+}
+
+}  // namespace obbsat::detail

@@ -10,7 +10,7 @@
 
 namespace obbsat::detail {
 
-/// Strips are this many mean bounds heights tall (measured: see docs/performance.md).
+/// Strips are this many mean bounds heights tall (measured: see docs/notes/performance-history.md).
 constexpr double strip_factor = 2.0;
 
 /// Candidates handed to the method's kernel at once.

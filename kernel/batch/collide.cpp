@@ -295,7 +295,7 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
     const detail::soa_view va = detail::view_of(a);
     const detail::soa_view vb = detail::view_of(b);
     split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
-        return kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+        return kernel(detail::shifted(va, begin), detail::shifted(vb, begin), end - begin, verdicts + begin);
     });
     return ran;
 }
@@ -391,7 +391,7 @@ backend collide_stream(const pose_soa& a, const pose_soa& b, std::uint8_t* verdi
     const detail::pose_soa_view va = detail::view_of(a);
     const detail::pose_soa_view vb = detail::view_of(b);
     split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
-        return kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+        return kernel(detail::shifted(va, begin), detail::shifted(vb, begin), end - begin, verdicts + begin);
     });
     return ran;
 }

@@ -1,6 +1,10 @@
 // The entry points one backend provides, per method. The dispatcher holds one
 // table per backend; nothing in a table may be called before the dispatcher
 // has checked that the CPU runs that backend.
+//
+// The per-ISA kernels include this header: it may hold only types, constants,
+// declarations and functions of internal linkage that they call
+// (kernel/lanes/README.md, checked by `ctest -R isa_boundary`).
 #pragma once
 
 #include "dispatch/pose_soa_view.hpp"

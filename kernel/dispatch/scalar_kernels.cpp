@@ -25,7 +25,7 @@ std::size_t exact_count(std::size_t count) {
 template <reference_fn Reference, bool SlowPath>
 std::size_t stream_pairs(const soa_view& a, const soa_view& b, std::size_t count, std::uint8_t* verdicts) {
     for (std::size_t i = 0; i < count; ++i) {
-        verdicts[i] = Reference(a.at(i), b.at(i)) ? 1 : 0;
+        verdicts[i] = Reference(rect_at(a, i), rect_at(b, i)) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
 }
@@ -34,7 +34,7 @@ template <reference_fn Reference, bool SlowPath>
 std::size_t indexed_pairs(const soa_view& rects, const pair_index* pairs, std::size_t count,
                           std::uint8_t* verdicts) {
     for (std::size_t i = 0; i < count; ++i) {
-        verdicts[i] = Reference(rects.at(pairs[i].a), rects.at(pairs[i].b)) ? 1 : 0;
+        verdicts[i] = Reference(rect_at(rects, pairs[i].a), rect_at(rects, pairs[i].b)) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
 }
@@ -69,7 +69,7 @@ template <pose_reference_fn Reference, bool SlowPath>
 std::size_t pose_stream_soa_pairs(const pose_soa_view& a, const pose_soa_view& b, std::size_t count,
                                   std::uint8_t* verdicts) {
     for (std::size_t i = 0; i < count; ++i) {
-        verdicts[i] = Reference(a.at(i), b.at(i)) ? 1 : 0;
+        verdicts[i] = Reference(pose_at(a, i), pose_at(b, i)) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
 }

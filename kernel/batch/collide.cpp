@@ -15,27 +15,6 @@
 
 namespace obbsat {
 
-namespace detail {
-
-/// Throws invalid_input unless options.test names a method that runs on `store`.
-void require_method_on(const collide_options& options, store_kind store) {
-    if (!is_method(options.test)) {
-        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
-                            ", which names no method");
-    }
-    if (!runs_on(options.test, store)) {
-        std::string offered;
-        for (const method m : methods_on(store)) {
-            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
-        }
-        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on " +
-                            store_name(store) + " (" + (store == store_kind::poses ? "pose_records" : "rect stores") +
-                            " take " + offered + ")");
-    }
-}
-
-}  // namespace detail
-
 namespace {
 
 // Below this many pairs per part, waking another core costs more than it

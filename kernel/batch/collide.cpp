@@ -16,27 +16,6 @@
 
 namespace obbsat {
 
-namespace detail {
-
-/// Throws invalid_input unless options.test names a method that runs on `store`.
-void require_method_on(const collide_options& options, store_kind store) {
-    if (!is_method(options.test)) {
-        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
-                            ", which names no method");
-    }
-    if (!runs_on(options.test, store)) {
-        std::string offered;
-        for (const method m : methods_on(store)) {
-            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
-        }
-        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on " +
-                            store_name(store) + " (" + (store == store_kind::poses ? "pose_records" : "rect stores") +
-                            " take " + offered + ")");
-    }
-}
-
-}  // namespace detail
-
 namespace {
 
 // Below this many pairs per part, waking another core costs more than it
@@ -297,7 +276,7 @@ backend collide_stream(const rect_soa& a, const rect_soa& b, std::uint8_t* verdi
     const detail::soa_view va = detail::view_of(a);
     const detail::soa_view vb = detail::view_of(b);
     split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
-        return kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+        return kernel(detail::shifted(va, begin), detail::shifted(vb, begin), end - begin, verdicts + begin);
     });
     return ran;
 }
@@ -396,7 +375,7 @@ backend collide_stream(const pose_soa& a, const pose_soa& b, std::uint8_t* verdi
     const detail::pose_soa_view va = detail::view_of(a);
     const detail::pose_soa_view vb = detail::view_of(b);
     split_over_threads(a.size(), options, [&](std::size_t begin, std::size_t end) {
-        return kernel(va.shifted(begin), vb.shifted(begin), end - begin, verdicts + begin);
+        return kernel(detail::shifted(va, begin), detail::shifted(vb, begin), end - begin, verdicts + begin);
     });
     return ran;
 }

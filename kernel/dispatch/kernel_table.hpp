@@ -1,11 +1,16 @@
 // The entry points one backend provides, per method. The dispatcher holds one
 // table per backend; nothing in a table may be called before the dispatcher
 // has checked that the CPU runs that backend.
+//
+// The per-ISA kernels include this header: it may hold only types, constants,
+// declarations and functions of internal linkage that they call
+// (kernel/lanes/README.md, checked by `ctest -R isa_boundary`).
 #pragma once
 
 #include "dispatch/pose_soa_view.hpp"
 #include "dispatch/soa_view.hpp"
 #include "dispatch/strip_view.hpp"
+#include "methods/method_catalogue.hpp"
 
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
@@ -104,15 +109,56 @@ struct kernel_table {
     largest_index_fn largest_index;
 
     /// The entry points of `m` on corners; the caller has checked is_method.
-    const method_kernels& of(method m) const { return methods[static_cast<unsigned>(m)]; }
+    const method_kernels& of(method m) const { return methods[static_cast<std::size_t>(m)]; }
     /// The entry points of `m` on poses; the caller has checked is_method.
-    const pose_method_kernels& on_poses(method m) const { return pose_methods[static_cast<unsigned>(m)]; }
+    const pose_method_kernels& on_poses(method m) const { return pose_methods[static_cast<std::size_t>(m)]; }
 };
 
 /// The table of one backend of backend_catalogue.hpp: defined by
 /// scalar_kernels.cpp for the scalar path and by backend_isa.cpp, once per
-/// SIMD instruction set, for the others.
+/// SIMD instruction set, for the others. Both fill every entry by its name,
+/// each method's row at row_of(its id), and check the result with
+/// follows_catalogue.
 template <class Backend>
 const kernel_table& kernels_of();
+
+namespace {
+
+/// The row of `m` in kernel_table::methods and kernel_table::pose_methods.
+constexpr std::size_t row_of(method m) { return static_cast<std::size_t>(m); }
+
+constexpr bool all_set(const method_kernels& k) {
+    return k.stream && k.indexed && k.indexed_records && k.indexed_records_near && k.indexed_records_far;
+}
+
+constexpr bool all_null(const method_kernels& k) {
+    return !k.stream && !k.indexed && !k.indexed_records && !k.indexed_records_near && !k.indexed_records_far;
+}
+
+constexpr bool all_set(const pose_method_kernels& k) {
+    return k.stream && k.indexed && k.stream_soa && k.indexed_near && k.indexed_far;
+}
+
+constexpr bool all_null(const pose_method_kernels& k) {
+    return !k.stream && !k.indexed && !k.stream_soa && !k.indexed_near && !k.indexed_far;
+}
+
+/// Whether `table` holds what the catalogue (method_catalogue.hpp) says: the
+/// row of each method on each store has every entry point where the catalogue
+/// offers the method on that store and none where it does not, and every
+/// entry outside the rows is set.
+template <class... Rows>
+constexpr bool follows_catalogue(const kernel_table& table, type_list<Rows...>) {
+    const bool corner_rows = ((offered<typename Rows::corners> ? all_set(table.methods[row_of(Rows::id)])
+                                                               : all_null(table.methods[row_of(Rows::id)])) &&
+                              ...);
+    const bool pose_rows = ((offered<typename Rows::poses> ? all_set(table.pose_methods[row_of(Rows::id)])
+                                                           : all_null(table.pose_methods[row_of(Rows::id)])) &&
+                            ...);
+    return corner_rows && pose_rows && table.fused_multiply_add && table.pose_corners && table.strip_sweep &&
+           table.bounds && table.largest_index;
+}
+
+}  // namespace
 
 }  // namespace obbsat::detail

@@ -1,5 +1,6 @@
 // What the kernels see of a pose_soa: six field arrays, shifted as a batch is
-// split over threads.
+// split over threads. Plain data, with its helpers of internal linkage: the
+// per-ISA kernels read it too (kernel/lanes/README.md).
 #pragma once
 
 #include <obbsat/pose_soa.hpp>
@@ -11,21 +12,23 @@ namespace obbsat::detail {
 
 struct pose_soa_view {
     const float* fields[pose_field_count];  // cx, cy, hx, hy, c, s
-
-    /// The pose at `i`, assembled from the six arrays.
-    rect_pose at(std::size_t i) const {
-        return rect_pose{{fields[0][i], fields[1][i]}, {fields[2][i], fields[3][i]}, {fields[4][i], fields[5][i]}};
-    }
-
-    /// The same arrays starting `offset` poses later.
-    pose_soa_view shifted(std::size_t offset) const {
-        pose_soa_view out = *this;
-        for (auto& f : out.fields) {
-            f += offset;
-        }
-        return out;
-    }
 };
+
+namespace {
+
+/// The pose at `i` of `v`, assembled from the six arrays.
+inline rect_pose pose_at(const pose_soa_view& v, std::size_t i) {
+    return rect_pose{{v.fields[0][i], v.fields[1][i]}, {v.fields[2][i], v.fields[3][i]}, {v.fields[4][i], v.fields[5][i]}};
+}
+
+/// The arrays of `v` starting `offset` poses later.
+inline pose_soa_view shifted(const pose_soa_view& v, std::size_t offset) {
+    pose_soa_view out = v;
+    for (auto& f : out.fields) {
+        f += offset;
+    }
+    return out;
+}
 
 inline pose_soa_view view_of(const pose_soa& poses) {
     pose_soa_view v{};
@@ -35,4 +38,5 @@ inline pose_soa_view view_of(const pose_soa& poses) {
     return v;
 }
 
+}  // namespace
 }  // namespace obbsat::detail

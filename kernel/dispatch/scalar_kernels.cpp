@@ -25,7 +25,7 @@ std::size_t exact_count(std::size_t count) {
 template <reference_fn Reference, bool SlowPath>
 std::size_t stream_pairs(const soa_view& a, const soa_view& b, std::size_t count, std::uint8_t* verdicts) {
     for (std::size_t i = 0; i < count; ++i) {
-        verdicts[i] = Reference(a.at(i), b.at(i)) ? 1 : 0;
+        verdicts[i] = Reference(rect_at(a, i), rect_at(b, i)) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
 }
@@ -34,7 +34,7 @@ template <reference_fn Reference, bool SlowPath>
 std::size_t indexed_pairs(const soa_view& rects, const pair_index* pairs, std::size_t count,
                           std::uint8_t* verdicts) {
     for (std::size_t i = 0; i < count; ++i) {
-        verdicts[i] = Reference(rects.at(pairs[i].a), rects.at(pairs[i].b)) ? 1 : 0;
+        verdicts[i] = Reference(rect_at(rects, pairs[i].a), rect_at(rects, pairs[i].b)) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
 }
@@ -69,7 +69,7 @@ template <pose_reference_fn Reference, bool SlowPath>
 std::size_t pose_stream_soa_pairs(const pose_soa_view& a, const pose_soa_view& b, std::size_t count,
                                   std::uint8_t* verdicts) {
     for (std::size_t i = 0; i < count; ++i) {
-        verdicts[i] = Reference(a.at(i), b.at(i)) ? 1 : 0;
+        verdicts[i] = Reference(pose_at(a, i), pose_at(b, i)) ? 1 : 0;
     }
     return exact_count<SlowPath>(count);
 }
@@ -132,46 +132,58 @@ void fused_multiply_add(const float* x, const float* y, const float* z, std::siz
     }
 }
 
+/// The entry points of one catalogue row on corners; all null when the row
+/// does not run on corners. The scalar path fetches nothing ahead, so its
+/// near and far variants are indexed_records itself.
 template <class Row>
 constexpr method_kernels kernels_of_row() {
+    method_kernels k{};
     if constexpr (offered<typename Row::corners>) {
         constexpr reference_fn reference = Row::corners::reference;
-        return method_kernels{stream_pairs<reference, Row::has_slow_path>,
-                              indexed_pairs<reference, Row::has_slow_path>,
-                              indexed_records<reference, Row::has_slow_path>,
-                              indexed_records<reference, Row::has_slow_path>,
-                              indexed_records<reference, Row::has_slow_path>};
-    } else {
-        return method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
+        k.stream = stream_pairs<reference, Row::has_slow_path>;
+        k.indexed = indexed_pairs<reference, Row::has_slow_path>;
+        k.indexed_records = indexed_records<reference, Row::has_slow_path>;
+        k.indexed_records_near = indexed_records<reference, Row::has_slow_path>;
+        k.indexed_records_far = indexed_records<reference, Row::has_slow_path>;
     }
+    return k;
 }
 
+/// The entry points of one catalogue row on poses; all null when the row
+/// does not run on poses.
 template <class Row>
 constexpr pose_method_kernels pose_kernels_of_row() {
+    pose_method_kernels k{};
     if constexpr (offered<typename Row::poses>) {
         constexpr pose_reference_fn reference = Row::poses::reference;
-        return pose_method_kernels{pose_stream_pairs<reference, Row::has_slow_path>,
-                                   pose_indexed_pairs<reference, Row::has_slow_path>,
-                                   pose_stream_soa_pairs<reference, Row::has_slow_path>,
-                                   pose_indexed_pairs<reference, Row::has_slow_path>,
-                                   pose_indexed_pairs<reference, Row::has_slow_path>};
-    } else {
-        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
+        k.stream = pose_stream_pairs<reference, Row::has_slow_path>;
+        k.indexed = pose_indexed_pairs<reference, Row::has_slow_path>;
+        k.stream_soa = pose_stream_soa_pairs<reference, Row::has_slow_path>;
+        k.indexed_near = pose_indexed_pairs<reference, Row::has_slow_path>;
+        k.indexed_far = pose_indexed_pairs<reference, Row::has_slow_path>;
     }
+    return k;
 }
 
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
-    return kernel_table{
-        {kernels_of_row<Rows>()...}, {pose_kernels_of_row<Rows>()...}, fused_multiply_add, pose_corners, strip_sweep,
-        bounds, largest_index};
+    kernel_table t{};
+    ((t.methods[row_of(Rows::id)] = kernels_of_row<Rows>()), ...);
+    ((t.pose_methods[row_of(Rows::id)] = pose_kernels_of_row<Rows>()), ...);
+    t.fused_multiply_add = fused_multiply_add;
+    t.pose_corners = pose_corners;
+    t.strip_sweep = strip_sweep;
+    t.bounds = bounds;
+    t.largest_index = largest_index;
+    return t;
 }
 
 }  // namespace
 
 template <>
 const kernel_table& kernels_of<scalar_backend>() {
-    static const kernel_table table = table_of(method_catalogue{});
+    static constexpr kernel_table table = table_of(method_catalogue{});
+    static_assert(follows_catalogue(table, method_catalogue{}), "the table holds the catalogue's rows");
     return table;
 }
 

@@ -1,4 +1,6 @@
 // A borrowed view of rectangles in structure-of-arrays form: what a kernel reads.
+// Plain data, with its helpers of internal linkage: the per-ISA kernels read
+// it too (kernel/lanes/README.md).
 #pragma once
 
 #include <obbsat/rect.hpp>
@@ -11,25 +13,27 @@ namespace obbsat::detail {
 struct soa_view {
     const float* coords[coord_count];  // ulx, uly, urx, ury, lrx, lry, llx, lly
     std::size_t size;
-
-    /// The rectangle at `i`, assembled from the eight arrays.
-    rect at(std::size_t i) const {
-        return rect{{coords[0][i], coords[1][i]},
-                    {coords[2][i], coords[3][i]},
-                    {coords[4][i], coords[5][i]},
-                    {coords[6][i], coords[7][i]}};
-    }
-
-    /// The same arrays starting `offset` rectangles later.
-    soa_view shifted(std::size_t offset) const {
-        soa_view out = *this;
-        for (auto& c : out.coords) {
-            c += offset;
-        }
-        out.size = size - offset;
-        return out;
-    }
 };
+
+namespace {
+
+/// The rectangle at `i` of `v`, assembled from the eight arrays.
+inline rect rect_at(const soa_view& v, std::size_t i) {
+    return rect{{v.coords[0][i], v.coords[1][i]},
+                {v.coords[2][i], v.coords[3][i]},
+                {v.coords[4][i], v.coords[5][i]},
+                {v.coords[6][i], v.coords[7][i]}};
+}
+
+/// The arrays of `v` starting `offset` rectangles later.
+inline soa_view shifted(const soa_view& v, std::size_t offset) {
+    soa_view out = v;
+    for (auto& c : out.coords) {
+        c += offset;
+    }
+    out.size = v.size - offset;
+    return out;
+}
 
 inline soa_view view_of(const rect_soa& rects) {
     soa_view v{};
@@ -40,4 +44,5 @@ inline soa_view view_of(const rect_soa& rects) {
     return v;
 }
 
+}  // namespace
 }  // namespace obbsat::detail

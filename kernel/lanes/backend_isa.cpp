@@ -2,16 +2,16 @@
 // SIMD row of backend_catalogue.hpp (see cmake/obbsat_isa.cmake) with
 // OBBSAT_ISA_NAME set to the backend's name and with that ISA's compiler
 // flags; it defines kernels_of<that backend>(), one row per method of
-// method_catalogue.hpp.
+// method_catalogue.hpp. Everything else here is private to this object
+// (README.md).
 #include "dispatch/backend_catalogue.hpp"
+#include "dispatch/kernel_table.hpp"
 #include "lanes/batch_kernel.hpp"
 #include "lanes/bounds_lanes.hpp"
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
 #include "lanes/fused_multiply_add.hpp"
-#include "dispatch/kernel_table.hpp"
 #include "lanes/largest_index_lanes.hpp"
-#include "methods/method_catalogue.hpp"
 #include "lanes/pose_batch.hpp"
 #include "lanes/pose_corner_lanes.hpp"
 #include "lanes/pose_lanes.hpp"
@@ -51,56 +51,61 @@ void fused_multiply_add_lanes(const float* x, const float* y, const float* z, st
     }
 }
 
-/// The entry points of one catalogue row on corners, instantiated for this ISA.
+/// The entry points of one catalogue row on corners, instantiated for this
+/// ISA; all null when the row does not run on corners.
 template <class Row>
 constexpr method_kernels kernels_of_row() {
     using corners = typename Row::corners;
+    method_kernels k{};
     if constexpr (offered<corners>) {
         static_assert(corners::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
                       "a method's lanes and its catalogue row agree on the slow path");
-        return method_kernels{stream_batch<isa_arch, corners::template lanes>,
-                              indexed_batch<isa_arch, corners::template lanes>,
-                              indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::into_l1>,
-                              indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::none>,
-                              indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::into_l2>};
-    } else {
-        return method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
+        k.stream = stream_batch<isa_arch, corners::template lanes>;
+        k.indexed = indexed_batch<isa_arch, corners::template lanes>;
+        k.indexed_records = indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::into_l1>;
+        k.indexed_records_near = indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::none>;
+        k.indexed_records_far = indexed_records_batch<isa_arch, corners::template lanes, pair_fetch::into_l2>;
     }
+    return k;
 }
 
-/// The entry points of one catalogue row on poses, instantiated for this ISA.
+/// The entry points of one catalogue row on poses, instantiated for this
+/// ISA; all null when the row does not run on poses.
 template <class Row>
 constexpr pose_method_kernels pose_kernels_of_row() {
     using poses = typename Row::poses;
+    pose_method_kernels k{};
     if constexpr (offered<poses>) {
         static_assert(poses::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
                       "a method's lanes and its catalogue row agree on the slow path");
-        return pose_method_kernels{pose_stream_batch<isa_arch, poses::template lanes>,
-                                   pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l1>,
-                                   pose_stream_soa_batch<isa_arch, poses::template lanes>,
-                                   pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::none>,
-                                   pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l2>};
-    } else {
-        return pose_method_kernels{nullptr, nullptr, nullptr, nullptr, nullptr};
+        k.stream = pose_stream_batch<isa_arch, poses::template lanes>;
+        k.indexed = pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l1>;
+        k.stream_soa = pose_stream_soa_batch<isa_arch, poses::template lanes>;
+        k.indexed_near = pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::none>;
+        k.indexed_far = pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l2>;
     }
+    return k;
 }
 
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
-    return kernel_table{{kernels_of_row<Rows>()...},
-                        {pose_kernels_of_row<Rows>()...},
-                        fused_multiply_add_lanes,
-                        pose_corners_batch<isa_arch>,
-                        strip_sweep_lanes<isa_arch>,
-                        bounds_batch<isa_arch>,
-                        largest_index_lanes<isa_arch>};
+    kernel_table t{};
+    ((t.methods[row_of(Rows::id)] = kernels_of_row<Rows>()), ...);
+    ((t.pose_methods[row_of(Rows::id)] = pose_kernels_of_row<Rows>()), ...);
+    t.fused_multiply_add = fused_multiply_add_lanes;
+    t.pose_corners = pose_corners_batch<isa_arch>;
+    t.strip_sweep = strip_sweep_lanes<isa_arch>;
+    t.bounds = bounds_batch<isa_arch>;
+    t.largest_index = largest_index_lanes<isa_arch>;
+    return t;
 }
 
 }  // namespace
 
 template <>
 const kernel_table& kernels_of<this_backend>() {
-    static const kernel_table table = table_of(method_catalogue{});
+    static constexpr kernel_table table = table_of(method_catalogue{});
+    static_assert(follows_catalogue(table, method_catalogue{}), "the table holds the catalogue's rows");
     return table;
 }
 

@@ -11,7 +11,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 
 namespace obbsat::detail {
 namespace {
@@ -80,7 +79,7 @@ std::size_t stream_batch(const soa_view& a, const soa_view& b, std::size_t count
     for (; i + width <= count; i += width) {
         const lane_verdicts v = Method<Arch>::collide(load_consecutive<Arch>(a, i), load_consecutive<Arch>(b, i));
         settled += finish_vector<width, Method, Arch>(v, verdicts + i, width, [&](std::size_t lane) {
-            return std::make_pair(a.at(i + lane), b.at(i + lane));
+            return make_lane_pair(rect_at(a, i + lane), rect_at(b, i + lane));
         });
     }
     if (i < count) {
@@ -93,7 +92,7 @@ std::size_t stream_batch(const soa_view& a, const soa_view& b, std::size_t count
         }
         const lane_verdicts v = Method<Arch>::collide(sa.load(), sb.load());
         settled += finish_vector<width, Method, Arch>(v, verdicts + i, count - i, [&](std::size_t lane) {
-            return std::make_pair(a.at(i + lane), b.at(i + lane));
+            return make_lane_pair(rect_at(a, i + lane), rect_at(b, i + lane));
         });
     }
     return settled;
@@ -117,7 +116,7 @@ std::size_t indexed_batch(const soa_view& rects, const pair_index* pairs, std::s
         }
         const lane_verdicts v = Method<Arch>::collide(sa.load(), sb.load());
         settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid, [&](std::size_t lane) {
-            return std::make_pair(rects.at(pairs[i + lane].a), rects.at(pairs[i + lane].b));
+            return make_lane_pair(rect_at(rects, pairs[i + lane].a), rect_at(rects, pairs[i + lane].b));
         });
     }
     return settled;
@@ -133,7 +132,7 @@ std::size_t indexed_records_batch(const rect* records, const pair_index* pairs, 
     // A list that fetches nothing ahead reads records the caches hold.
     constexpr bool in_cache = Fetch == pair_fetch::none;
     std::size_t settled = 0;
-    auto rects_of = [&](std::size_t pair) { return std::make_pair(records[pairs[pair].a], records[pairs[pair].b]); };
+    auto rects_of = [&](std::size_t pair) { return make_lane_pair(records[pairs[pair].a], records[pairs[pair].b]); };
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
         const pair_index* p = pairs + i;

@@ -91,6 +91,20 @@ struct lane_verdicts {
     unsigned unsure;
 };
 
+/// One lane's two rectangles (or poses), for a method's decide_exactly. Not
+/// std::pair: its members, like every std:: template, have vague linkage, and
+/// baseline code instantiates them too (lanes/README.md).
+template <class Shape>
+struct lane_pair {
+    Shape first;
+    Shape second;
+};
+
+template <class Shape>
+lane_pair<Shape> make_lane_pair(const Shape& a, const Shape& b) {
+    return lane_pair<Shape>{a, b};
+}
+
 /// Spreads the low 8 bits of `bits` into 8 bytes of value 0 or 1, bit i into byte i.
 inline std::uint64_t spread_bits_to_bytes(unsigned bits) {
     const std::uint64_t replicated = (bits & 0xffu) * 0x0101010101010101ull;

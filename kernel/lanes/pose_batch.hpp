@@ -15,7 +15,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 
 namespace obbsat::detail {
 namespace {
@@ -38,7 +37,7 @@ std::size_t pose_batch(const float* a, const float* b, First first, Second secon
     // A list that fetches nothing ahead reads records the caches hold.
     constexpr bool in_cache = Fetch == pair_fetch::none;
     std::size_t settled = 0;
-    auto poses_of_pair = [&](std::size_t i) { return std::make_pair(pose_record_at(a, first(i)), pose_record_at(b, second(i))); };
+    auto poses_of_pair = [&](std::size_t i) { return make_lane_pair(pose_record_at(a, first(i)), pose_record_at(b, second(i))); };
     // One vector of pairs, pair_of(lane) giving each lane's pair. Inlined
     // into the loop, with first and second held by value: called out of line,
     // or reading the pair list through references, the loop reloaded its
@@ -109,7 +108,7 @@ std::size_t pose_stream_soa_batch(const pose_soa_view& a, const pose_soa_view& b
         const lane_verdicts v =
             Method<Arch>::collide(load_consecutive_poses<Arch>(a, i), load_consecutive_poses<Arch>(b, i));
         settled += finish_vector<width, Method, Arch>(
-            v, verdicts + i, width, [&](std::size_t lane) { return std::make_pair(a.at(i + lane), b.at(i + lane)); });
+            v, verdicts + i, width, [&](std::size_t lane) { return make_lane_pair(pose_at(a, i + lane), pose_at(b, i + lane)); });
     }
     if (i < count) {
         // Partial vector: the last pair repeated in the unused lanes, staged locally.
@@ -128,7 +127,7 @@ std::size_t pose_stream_soa_batch(const pose_soa_view& a, const pose_soa_view& b
         }
         const lane_verdicts v = Method<Arch>::collide(load_consecutive_poses<Arch>(sa, 0), load_consecutive_poses<Arch>(sb, 0));
         settled += finish_vector<width, Method, Arch>(
-            v, verdicts + i, count - i, [&](std::size_t lane) { return std::make_pair(a.at(i + lane), b.at(i + lane)); });
+            v, verdicts + i, count - i, [&](std::size_t lane) { return make_lane_pair(pose_at(a, i + lane), pose_at(b, i + lane)); });
     }
     return settled;
 }

@@ -81,7 +81,10 @@ struct pose_steps {
         const batch Sb = Rb * T;
         const mask proves = (Sa <= batch(0x1p100f)) & (Sb <= batch(0x1p100f)) & (Ra >= batch(0x1p-40f)) &
                             (Ra <= batch(0x1p62f)) & (Rb >= batch(0x1p-40f)) & (Rb <= batch(0x1p62f));
-        const batch none(std::numeric_limits<float>::infinity());
+        // A constant, not a call: std::numeric_limits<float>::infinity() left
+        // out of line (-O0) is a function of vague linkage (lanes/README.md).
+        constexpr float infinity = std::numeric_limits<float>::infinity();
+        const batch none(infinity);
         return margins{xsimd::select(proves, (batch(0x1p-19f) * Sa) + batch(0x1p-140f), none),
                        xsimd::select(proves, (batch(0x1p-19f) * Sb) + batch(0x1p-140f), none)};
     }

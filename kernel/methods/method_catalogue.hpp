@@ -32,7 +32,7 @@
 namespace obbsat::detail {
 namespace {
 
-// Lane templates: defined in kernel/*_lanes.hpp and instantiated only in the
+// Lane templates: defined in kernel/lanes/*_lanes.hpp and instantiated only in the
 // per-ISA translation units; declared here so that baseline sources can read
 // the catalogue without compiling SIMD code.
 template <class Arch>

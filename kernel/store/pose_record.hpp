@@ -1,6 +1,7 @@
 // Reading one pose from the 32-byte records of pose_records (cx, cy, hx, hy,
 // c, s, 0, 0), for the batch drivers and the scalar path alike. Internal
-// linkage, as everything the per-ISA translation units share.
+// linkage, as everything the per-ISA translation units share
+// (kernel/lanes/README.md).
 #pragma once
 
 #include <obbsat/pose_records.hpp>

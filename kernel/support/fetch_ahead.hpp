@@ -4,12 +4,14 @@
 // with enough rows ahead the reads of a random gather overlap many more DRAM
 // latencies (refreshing 1M pose rows in a kept frame: 12.4 ns per row
 // prefetched 16 ahead into L1, 12.4 at 32 ahead, 7.7-8.6 into L2 at 32 to 96
-// ahead). Internal to the library.
+// ahead). Internal to the library; internal linkage, as everything the
+// per-ISA translation units share (kernel/lanes/README.md).
 #pragma once
 
 #include <cstddef>
 
 namespace obbsat::detail {
+namespace {
 
 /// How many rows ahead a random gather asks for its rows.
 constexpr std::size_t random_rows_ahead = 64;
@@ -54,4 +56,5 @@ constexpr std::size_t store_bytes_in_l2 = std::size_t{2} << 20;
 /// against 1.89 into L2, 16 MiB 2.61 against 2.05, 64 MiB 7.3 against 3.2.
 constexpr std::size_t store_bytes_from_dram = std::size_t{12} << 20;
 
+}  // namespace
 }  // namespace obbsat::detail

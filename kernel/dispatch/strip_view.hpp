@@ -43,8 +43,10 @@ struct sweep_cursor {
 
 /// Tests entry pairs from `cursor` on and writes each pair (id[e], id[f]),
 /// e < f, whose bounds overlap, that is not two visitors, and (cross) that
-/// mixes the stores, to `out`; stops at the end of the strip or when fewer
-/// than strip_padding slots of `capacity` are left. Returns the pairs written
+/// mixes the stores, to `out`; stops at the end of the strip or when the
+/// next step might not fit in the slots of `capacity` left (fewer than a
+/// vector's width on a SIMD backend; the scalar one stops at strip_padding),
+/// so any capacity of at least strip_padding makes progress. Returns the pairs written
 /// and leaves `cursor` where the next call resumes. The pairs and their order
 /// are the same on every backend.
 using strip_sweep_fn = std::size_t (*)(const strip_view& strip, sweep_cursor& cursor, pair_index* out,

@@ -12,7 +12,7 @@ namespace obbsat::detail {
 
 struct strip_grid {
     double x_low = 0;       ///< the x that quantizes to 0
-    double x_high = 0;      ///< the x that quantizes to q_max
+    double x_high = 0;      ///< the x where the quantized scale reaches q_max (rounding may put it at q_max - 1)
     double x_scale = 0;     ///< q_max / (x_high - x_low), or 0
     double y_low = 0;       ///< the bottom of strip 0
     double y_high = 0;      ///< the top of the last strip

@@ -48,7 +48,7 @@ const std::vector<option_spec>& demo_option_specs() {
         {"density", "D", "sparse, typical or dense: about 5%, 30% or 80% collide (default: typical)"},
         {"reps", "K", "timed repetitions per row, after one warm-up; the median counts (default: 7)"},
         {"scene-boxes", "N",
-         "boxes in the scene query's section, 0 to 4294967295; 0 leaves it out (default: 10 x rects, 1000000)"},
+         "boxes in the scene query's section, 0 to 4294967295; 0 leaves it out (default: 10 x rects, at most 4294967295; 1000000)"},
         {"method", "NAME", "a collision test, or 'all' for every one this build offers (default: sat4 and local)"},
         {"help", "", "show this help"},
     };
@@ -69,7 +69,7 @@ demo_settings settings_from(const parsed_options& options) {
     if (const auto v = options.value("reps")) {
         s.reps = static_cast<unsigned>(parse_number_option("reps", *v, 1, 1000));
     }
-    s.scene_boxes = 10 * s.rects;
+    s.scene_boxes = std::min<std::size_t>(10 * s.rects, UINT32_MAX);  // the option's own range
     if (const auto v = options.value("scene-boxes")) {
         s.scene_boxes = static_cast<std::size_t>(parse_number_option("scene-boxes", *v, 0, UINT32_MAX));
     }

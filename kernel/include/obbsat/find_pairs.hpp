@@ -150,8 +150,9 @@ class pair_events;
 /// query.
 ///
 /// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
-/// and its find and stats throw invalid_input ("... on a moved-from
-/// pair_finder ...") until a pair_finder is assigned to it.
+/// and its find, stats, track_events, began and ended throw invalid_input
+/// ("... on a moved-from pair_finder ...") until a pair_finder is assigned
+/// to it; the events move with the buffers.
 ///
 /// Begin/end events (off by default, and then find keeps nothing for them):
 /// with track_events(true), each find also gives the pairs that began and

@@ -1,3 +1,4 @@
+#include "scene/pair_events.hpp"
 #include "scene/pair_search.hpp"
 
 #include <obbsat/error.hpp>
@@ -100,13 +101,51 @@ detail::pair_search& engine_of(const std::unique_ptr<detail::pair_search>& searc
 }  // namespace
 
 const std::vector<pair_index>& pair_finder::find(box_view boxes) {
-    return engine_of(search_, "find").collect(input_of(boxes, nullptr));
+    const std::vector<pair_index>& found = engine_of(search_, "find").collect(input_of(boxes, nullptr));
+    if (events_) {
+        events_->update(found, false);
+    }
+    return found;
 }
 
 const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
-    return engine_of(search_, "find").collect(input_of(a, &b));
+    const std::vector<pair_index>& found = engine_of(search_, "find").collect(input_of(a, &b));
+    if (events_) {
+        events_->update(found, true);
+    }
+    return found;
 }
 
 const find_pairs_stats& pair_finder::stats() const { return engine_of(search_, "stats").stats(); }
+
+void pair_finder::track_events(bool on) {
+    engine_of(search_, "track_events");
+    if (!on) {
+        events_.reset();
+    } else if (!events_) {
+        events_ = std::make_unique<detail::pair_events>();
+    }
+}
+
+bool pair_finder::tracks_events() const { return events_ != nullptr; }
+
+namespace {
+
+/// The events of a pair_finder, or invalid_input saying why there are none.
+const detail::pair_events& events_of(const std::unique_ptr<detail::pair_search>& search,
+                                     const std::unique_ptr<detail::pair_events>& events, const char* call) {
+    engine_of(search, call);
+    if (!events) {
+        throw invalid_input(std::string("pair_finder::") + call +
+                            ": begin/end events are off; call track_events(true) before the calls to compare");
+    }
+    return *events;
+}
+
+}  // namespace
+
+const std::vector<pair_index>& pair_finder::began() const { return events_of(search_, events_, "began").began(); }
+
+const std::vector<pair_index>& pair_finder::ended() const { return events_of(search_, events_, "ended").ended(); }
 
 }  // namespace obbsat

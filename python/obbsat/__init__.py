@@ -568,7 +568,19 @@ class PairFinder:
     next call reuses. ``stats`` says what the last call did
     (:class:`FindPairsStats`: ``boxes``, ``strips``, ``visits``,
     ``candidates``, ``pairs``, ``slow_path_pairs``, ``reused_order``,
-    ``reused_candidates``, ``kept_candidates`` and the seconds of each phase). The default method is ``"exact"``, as in
+    ``reused_candidates``, ``kept_candidates`` and the seconds of each phase).
+
+    With ``events=True`` (keyword only; off by default, and then nothing is
+    kept for them), ``began()`` and ``ended()`` return the pairs that began
+    and ended colliding at the last call of :meth:`find`: uint32 (K, 2),
+    sorted like find's pairs (``i < j`` within one set, ``i`` in ``boxes`` and
+    ``j`` in ``against`` across two), new arrays. Rows are matched by
+    position whatever their count (a pair of a row that no longer exists
+    ends, one of a new row begins). The first call reports every pair as
+    begun and none ended, and so does a call of the other kind (one set, two
+    sets) than the last, which also ends every pair of the last; a call that
+    raises changes no events; before the first call both are empty. With
+    events off they raise ``RuntimeError``. The default method is ``"exact"``, as in
     :func:`find_pairs` (``method=None`` too; ``backend=None`` is ``"auto"``). One call runs at a time (another thread calling meanwhile waits, with
     the GIL released).
 
@@ -582,18 +594,33 @@ class PairFinder:
            [1, 2]], dtype=uint32)
     >>> finder.stats.boxes, finder.stats.pairs
     (3, 2)
+    >>> finder = obbsat.PairFinder(events=True)
+    >>> _ = finder.find(poses)
+    >>> finder.began()                              # the first call: every pair began
+    array([[0, 1],
+           [1, 2]], dtype=uint32)
+    >>> poses[0, 0] = -5                            # the first moves away
+    >>> _ = finder.find(poses)
+    >>> finder.ended()
+    array([[0, 1]], dtype=uint32)
+    >>> len(finder.began())
+    0
     """
 
-    def __init__(self, method="exact", backend="auto", threads=1):
+    def __init__(self, method="exact", backend="auto", threads=1, *, events=False):
         self._method = _SCENE_METHOD if method is None else method
         self._backend = _backend(backend)
         self._threads = _threads(threads)
         self._ran = False
+        self._events = bool(events)
         # An unknown method or backend, one this CPU cannot run, or threads out of range is refused here.
         self._query = _core.PairFinder(self._method, self._backend, self._threads)
+        if self._events:
+            self._query.track_events(True)
 
     def __repr__(self):
-        return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads})"
+        events = ", events=True" if self._events else ""
+        return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads}{events})"
 
     def find(self, boxes, against=None):
         """The pairs of ``find_pairs(boxes, against)`` with the finder's
@@ -608,6 +635,29 @@ class PairFinder:
     def stats(self):
         """What the last call of :meth:`find` did (all zero before the first)."""
         return self._query.stats if self._ran else FindPairsStats()
+
+    @property
+    def events(self):
+        """Whether the finder keeps begin/end events (``PairFinder(events=True)``)."""
+        return self._events
+
+    def began(self):
+        """The pairs that began colliding at the last call of :meth:`find`:
+        uint32 (K, 2), sorted, a new array; every pair of the first call."""
+        self._require_events("began")
+        return self._query.began()
+
+    def ended(self):
+        """The pairs that ended colliding at the last call of :meth:`find`:
+        uint32 (K, 2), sorted, a new array; none at the first call."""
+        self._require_events("ended")
+        return self._query.ended()
+
+    def _require_events(self, call):
+        if not self._events:
+            raise RuntimeError(
+                f"PairFinder.{call}: begin/end events were not requested; construct PairFinder(..., events=True)"
+            )
 
 
 def bounds(boxes):

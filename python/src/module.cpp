@@ -16,7 +16,8 @@
 // library's scene query reads in place (obbsat::box_view) and checks in the
 // pass that computes the bounds. The pairs come back
 // in the vector the library filled, owned by the numpy array (no copy), or,
-// from a PairFinder, copied out of the finder's reused buffer.
+// from a PairFinder, copied out of the finder's reused buffer (its begin/end
+// events too).
 //
 // Errors: obbsat::invalid_input becomes IndexError when it names a pair (an
 // index out of range) and ValueError otherwise (a non-finite coordinate, a bad
@@ -565,6 +566,21 @@ public:
         return finder_.stats();
     }
 
+    /// Turns the finder's begin/end events on or off (obbsat::pair_finder::track_events).
+    void track_events(bool on) {
+        py::gil_scoped_release release;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        finder_.track_events(on);
+    }
+
+    /// A copy of the pairs that began (or ended) at the last query.
+    py::array_t<std::uint32_t> events(bool began) {
+        return pair_array(without_gil([&] {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            return std::vector<obbsat::pair_index>(began ? finder_.began() : finder_.ended());
+        }));
+    }
+
 private:
     obbsat::collide_options options_;
     std::mutex mutex_;
@@ -850,7 +866,15 @@ PYBIND11_MODULE(_core, m) {
              "find_pairs_corners through the finder; the pairs are a copy of its buffer.")
         .def("find_poses", &scene_finder::find<obbsat::pose_records>, py::arg("boxes"), py::arg("against"),
              "find_pairs_poses through the finder; the pairs are a copy of its buffer.")
-        .def_property_readonly("stats", &scene_finder::stats, "What the last query did.");
+        .def_property_readonly("stats", &scene_finder::stats, "What the last query did.")
+        .def("track_events", &scene_finder::track_events, py::arg("on"),
+             "Turns the begin/end events on (the next query begins every pair) or off.")
+        .def("began", [](scene_finder& f) { return f.events(true); },
+             "The pairs that began colliding at the last query: uint32 (K, 2) sorted, a copy (ValueError when "
+             "events are off).")
+        .def("ended", [](scene_finder& f) { return f.events(false); },
+             "The pairs that ended colliding at the last query: uint32 (K, 2) sorted, a copy (ValueError when "
+             "events are off).");
     m.def("corner_bounds", &bounds_of<obbsat::rect_records>, py::arg("boxes"),
           "The bounds lo_x, lo_y, hi_x, hi_y of corner boxes (float32 (N, 8) or (N, 4, 2), or a RectRecords) "
           "as obbsat/ref/bounds.hpp computes them: float32 (N, 4).");

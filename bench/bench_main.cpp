@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
     // Whole scenes: obbsat's queries, then its peers on the same scenes.
     try {
         obbsat_bench::register_scene_benchmarks();
+        obbsat_bench::register_floor_benchmarks();
+        obbsat_bench::register_engine_benchmarks();
         obbsat_bench::register_grid_scene_peer();
 #if OBBSAT_BENCH_WITH_BOX2D
         obbsat_bench::register_box2d_scene_peer(std::cerr);

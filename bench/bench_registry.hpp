@@ -32,6 +32,15 @@ void register_boost_geometry_peers();
 /// boxes:<N>/sizes:<uniform|mixed>/threads:<T> (scene_harness.hpp).
 void register_scene_benchmarks();
 
+/// engine_frame/<scene>/boxes:<N>/threads:<T> and engine_cold/...: pair_finder
+/// and find_pairs over the frames of engine-shaped scenes (engine_scenes.hpp),
+/// up to 10^6 boxes (bench_engine.cpp).
+void register_engine_benchmarks();
+
+/// floor/boxes:<N>/threads:1 from 10^5 boxes: bounds, keys, one radix sort and
+/// the answer written out, on the scene of scene/exact/poses (bench_engine.cpp).
+void register_floor_benchmarks();
+
 /// peer_scene/grid/<tail> and peer_frame/grid/<tail>: a uniform grid, then obbsat's exact narrowphase.
 void register_grid_scene_peer();
 

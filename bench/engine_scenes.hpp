@@ -1,0 +1,65 @@
+// Scenes shaped like a physics engine's workloads, for the engine_frame/ and
+// engine_cold/ rows (bench_engine.cpp): each a deterministic sequence of
+// frames of poses, stepped one frame at a time. Generation uses IEEE basic
+// arithmetic and std::sqrt only (rotations from the rational parametrisation
+// of the unit circle, composed and renormalised), as make_pose_scene does, so
+// a scene and box count give the same bytes on every machine.
+//
+//   stacks         Pyramids of unit boxes (Box2D's pyramid benchmark: a base
+//                  of 20 boxes, each row one box shorter and offset by half a
+//                  box, on a ground box), laid out on a grid of pyramids.
+//                  Neighbours overlap by 2 mm (a resting contact's slop);
+//                  every frame each box sits at its rest pose plus a jitter
+//                  of at most 0.5 mm in x and y and 0.5 mrad in rotation,
+//                  drawn anew (it does not accumulate). Grounds do not move.
+//   tumbler        Drums of radius 26 with 2000 boxes (half extents 0.2 to
+//                  0.35) and 32 wall segments each, turning 0.02 rad per
+//                  frame. A box is carried along the wall at its own radius
+//                  (rotating with the drum) up to a release height drawn per
+//                  cycle on the rising side, then flies: thrown with the
+//                  wall's speed plus an inward push, under gravity (0.01 per
+//                  frame squared), spinning at up to 0.2 rad per frame, until
+//                  it reaches its radius again, moving outward, and is carried
+//                  again. Boxes pass through each other (no contact response):
+//                  the motion only has to change many contacts every frame.
+//   spawn_despawn  A uniform make_pose_scene (2 colliding pairs per box), every
+//                  box drifting at its own velocity (up to 0.01 per frame in x
+//                  and y); every frame 1% of the rows, drawn at random, are
+//                  removed (the others keep their order) and as many new boxes
+//                  are appended, at random places in the scene's square. The
+//                  count stays the same; the rows after the first removed one
+//                  hold other boxes than the frame before.
+//   teleports      The same uniform drifting scene; every frame 2% of the
+//                  boxes, drawn at random, jump to a random place in the
+//                  scene's square.
+#pragma once
+
+#include <obbsat/pose_records.hpp>
+
+#include <cstddef>
+#include <memory>
+
+namespace obbsat_bench {
+
+enum class engine_scene { stacks, tumbler, spawn_despawn, teleports };
+
+inline constexpr engine_scene engine_scenes[] = {engine_scene::stacks, engine_scene::tumbler,
+                                                 engine_scene::spawn_despawn, engine_scene::teleports};
+
+/// "stacks", "tumbler", "spawn_despawn" or "teleports".
+const char* engine_scene_name(engine_scene scene);
+
+/// One run through a scene's frames, from frame 0.
+class engine_sequence {
+public:
+    virtual ~engine_sequence() = default;
+    /// The poses of the current frame; valid until the next step.
+    virtual const obbsat::pose_records& poses() const = 0;
+    /// Moves to the next frame.
+    virtual void step() = 0;
+};
+
+/// Frame 0 of `scene` with `boxes` boxes (walls and grounds counted).
+std::unique_ptr<engine_sequence> make_engine_sequence(engine_scene scene, std::size_t boxes);
+
+}  // namespace obbsat_bench

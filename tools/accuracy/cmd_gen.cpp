@@ -180,7 +180,7 @@ void print_gen_help(std::FILE* out) {
                  "Both read back to the same bits, so every command gives the same output.\n"
                  "With --header, rects.csv or poses.csv and pairs.csv (or the scene) start\n"
                  "with a header line, ulx,uly,urx,ury,lrx,lry,llx,lly or cx,cy,hx,hy,c,s and\n"
-                 "i,j, which every reader skips; then line k+2 of pairs.csv is pair k. On a\n"
+                 "i,j, which every reader skips; then line k+1 of pairs.csv is pair k. On a\n"
                  "terminal, standard error gets a one-line summary at the end.\n"
                  "\n"
                  "options:\n",

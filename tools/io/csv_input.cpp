@@ -363,13 +363,14 @@ bool equals_ignoring_case(std::string_view a, std::string_view b) {
 }
 
 // A field that is a column name rather than a number: it starts with a
-// letter or '_' and is not a word strtof reads (inf, infinity, nan, nan(...)).
+// letter, '_' or '"' (a quoted name) and is not a word strtof reads (inf,
+// infinity, nan, nan(...)).
 bool is_name(std::string_view field) {
     if (field.empty()) {
         return false;
     }
     const char c = field.front();
-    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '"';
     if (!letter) {
         return false;
     }

@@ -9,8 +9,8 @@
 //   - Fields are separated by ','; blanks around a field are ignored.
 //   - Line 1 may be a header naming the columns, exactly one of the headers
 //     below (rect_header, pose_header, pose_angle_header, pair_header); it is
-//     skipped. A line 1 whose every field is a name (starts with a letter or
-//     '_' and is not inf, infinity, nan or nan(...)) but that is not such a
+//     skipped. A line 1 whose every field is a name (starts with a letter, '"' or
+//     '_', and is not inf, infinity, nan or nan(...)) but that is not such a
 //     header is an error naming the headers expected.
 //   - Rectangle file: 8 fields ulx,uly,urx,ury,lrx,lry,llx,lly, each a number
 //     strtof reads completely in the "C" locale (decimal or C99 hex float; the

@@ -23,6 +23,12 @@ std::string_view trimmed(std::string_view s) {
 }
 
 // The lines of a file that hold records, each with its line number for errors.
+// The header line a file may start with ('obbsat gen --header', 'obbsat
+// pairs --header', 'obbsat collide --header'): skipped when it is line 1.
+constexpr std::string_view rect_header = "ulx,uly,urx,ury,lrx,lry,llx,lly";
+constexpr std::string_view pair_header = "i,j";
+constexpr std::string_view verdict_header = "verdict";
+
 class record_lines {
 public:
     explicit record_lines(const std::string& path) : path_(path) {
@@ -66,6 +72,8 @@ public:
     }
 
     const std::string& path() const { return path_; }
+    /// The 1-based number of the line next() returned last.
+    std::uint64_t number() const { return number_; }
 
 private:
     std::string path_;
@@ -178,6 +186,9 @@ std::vector<obbsat::rect> read_rects(const std::string& path) {
     std::vector<obbsat::rect> rects;
     std::string_view line;
     while (lines.next(line)) {
+        if (lines.number() == 1 && line == rect_header) {
+            continue;
+        }
         const auto fields = split_fields<8>(line, lines, "ulx,uly,urx,ury,lrx,lry,llx,lly");
         std::array<float, 8> v;
         for (std::size_t k = 0; k < v.size(); ++k) {
@@ -197,6 +208,9 @@ std::vector<obbsat::pair_index> read_pairs(const std::string& path, std::size_t 
     std::vector<obbsat::pair_index> pairs;
     std::string_view line;
     while (lines.next(line)) {
+        if (lines.number() == 1 && line == pair_header) {
+            continue;
+        }
         const auto fields = split_fields<2>(line, lines, "i,j");
         pairs.push_back({parse_index(fields[0], 0, "i", rect_count, rect_path, lines),
                          parse_index(fields[1], 1, "j", rect_count, rect_path, lines)});
@@ -209,6 +223,9 @@ std::vector<std::uint8_t> read_verdicts(const std::string& path) {
     std::vector<std::uint8_t> verdicts;
     std::string_view line;
     while (lines.next(line)) {
+        if (lines.number() == 1 && line == verdict_header) {
+            continue;
+        }
         const std::string_view field = trimmed(line);
         if (field != "0" && field != "1") {
             lines.fail("'" + std::string(field) + "' is not a verdict (0 or 1)");

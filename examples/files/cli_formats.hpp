@@ -3,6 +3,8 @@
 //   rectangles  one per line: ulx,uly,urx,ury,lrx,lry,llx,lly (decimal or C99 hex floats)
 //   pairs       one per line: i,j (0-based indices into the rectangle file)
 //   verdicts    one per line: 0 or 1
+// Line 1 may be the file's header (ulx,uly,urx,ury,lrx,lry,llx,lly, i,j or
+// verdict, as 'obbsat ... --header' writes it), which is skipped.
 // Blank lines and lines whose first non-blank character is '#' hold no record;
 // blanks around a field are ignored; lines may end in "\n" or "\r\n".
 #pragma once

@@ -1,6 +1,7 @@
 // The CLI's readers: what they accept, and for every rejected line the file,
 // line number and reason of the error.
 #include "io/csv_input.hpp"
+#include "io/status_line.hpp"
 
 #include <obbsat/pose.hpp>
 #include <obbsat/pose_records.hpp>
@@ -8,12 +9,16 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cfloat>
+#include <charconv>
+#include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -538,7 +543,10 @@ TEST(csv_input_poses, rejects_wrong_field_counts) {
     EXPECT_EQ(pose_error("0,0,1,1,1,0\n" + unit_rect + "\n").reason(),
               "expected 5 or 6 comma-separated fields " + layout + ", found 8");
     EXPECT_EQ(pose_error("0,0,1,1,1,0\n" + unit_rect + "\n").line(), 2u);
-    EXPECT_EQ(pose_error("x\n").reason(), "expected 5 or 6 comma-separated fields " + layout + ", found 1");
+    EXPECT_EQ(pose_error("0,0,1,1,1,0\nx\n").reason(), "expected 5 or 6 comma-separated fields " + layout + ", found 1");
+    // On line 1, a line of names only is a header, and this one is wrong.
+    EXPECT_EQ(pose_error("x\n").reason(),
+              "expected the header 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' or a pose, found 'x'");
 }
 
 TEST(csv_input_poses, skips_what_the_rectangle_reader_skips) {
@@ -584,3 +592,248 @@ TEST(csv_input_poses, results_do_not_depend_on_chunk_boundaries) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------
+// Header lines.
+
+namespace {
+
+obbsat::pose_records poses_named(const std::string& text) {
+    line_reader lines(text, "Q.csv");
+    return obbsat::io::read_pose_records(lines);
+}
+
+input_error pose_named_error(const std::string& text) {
+    try {
+        poses_named(text);
+    } catch (const input_error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for pose text:\n" << text;
+    return input_error("", 0, "");
+}
+
+}  // namespace
+
+TEST(csv_headers, the_documented_header_on_line_1_is_skipped) {
+    EXPECT_EQ(rects_of("ulx,uly,urx,ury,lrx,lry,llx,lly\n" + unit_rect + "\n").size(), 1u);
+    EXPECT_EQ(rects_of("\xef\xbb\xbfulx,uly,urx,ury,lrx,lry,llx,lly\r\n" + unit_rect + "\r\n").size(), 1u);
+    EXPECT_EQ(rects_of("ulx,uly,urx,ury,lrx,lry,llx,lly").size(), 0u);
+    EXPECT_EQ(poses_named("cx,cy,hx,hy,c,s\n0,0,1,1,1,0\n0,0,1,1,0.5\n").size(), 2u);
+    EXPECT_EQ(poses_named("cx,cy,hx,hy,angle\n0,0,1,1,0.5\n").size(), 1u);
+    const std::vector<pair_index> pairs = pairs_of("i,j\n0,1\n2,3\n", 5);
+    ASSERT_EQ(pairs.size(), 2u);
+    EXPECT_EQ(pairs[1].a, 2u);
+    EXPECT_EQ(pairs[1].b, 3u);
+    // Line numbers still count the header.
+    EXPECT_EQ(pair_error("i,j\n0,1\n0,x\n").line(), 3u);
+    EXPECT_EQ(rect_error("ulx,uly,urx,ury,lrx,lry,llx,lly\n1,2\n").line(), 2u);
+}
+
+TEST(csv_headers, a_header_that_is_not_the_documented_one_is_an_error_on_line_1) {
+    const input_error e = rect_error("x1,y1,x2,y2,x3,y3,x4,y4\n" + unit_rect + "\n");
+    EXPECT_EQ(e.file(), "R.csv");
+    EXPECT_EQ(e.line(), 1u);
+    EXPECT_EQ(e.reason(),
+              "expected the header 'ulx,uly,urx,ury,lrx,lry,llx,lly' or a rectangle, found 'x1,y1,x2,y2,x3,y3,x4,y4'");
+    EXPECT_EQ(std::string(e.what()), "R.csv:1: " + e.reason());
+    // Exactly the names: no blanks, no other case, no other order, no quotes.
+    for (const char* header : {"cx, cy, hx, hy, c, s", "CX,CY,HX,HY,C,S", "cy,cx,hx,hy,c,s", "\"cx\",cy,hx,hy,c,s",
+                               "cx,cy,hx,hy,c,s,extra", "cx,cy,hx,hy", "x"}) {
+        const input_error p = pose_named_error(std::string(header) + "\n0,0,1,1,1,0\n");
+        EXPECT_EQ(p.line(), 1u) << header;
+        EXPECT_EQ(p.reason().rfind("expected the header 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' or a pose", 0), 0u)
+            << header << ": " << p.reason();
+    }
+    EXPECT_EQ(pair_error("a,b\n0,1\n").reason(), "expected the header 'i,j' or a pair, found 'a,b'");
+    EXPECT_EQ(pair_error("i,j,k\n").reason(), "expected the header 'i,j' or a pair, found 'i,j,k'");
+}
+
+TEST(csv_headers, a_line_1_with_a_number_in_it_keeps_its_number_errors) {
+    // nan, inf and friends are numbers strtof reads, not names.
+    EXPECT_EQ(rect_error(line_with(7, "nan") + "\n").reason(), "field 8 (lly): 'nan' is not finite");
+    EXPECT_EQ(rect_error("inf,nan,infinity,nan(1),INF,NaN,-inf,x\n").reason(), "field 1 (ulx): 'inf' is not finite");
+    EXPECT_EQ(pair_error("a,0\n").reason(), "field 1 (i): 'a' is not an unsigned decimal integer");
+    // A header after line 1 is a line like any other.
+    EXPECT_EQ(pair_error("# c\ni,j\n").reason(), "field 1 (i): 'i' is not an unsigned decimal integer");
+    EXPECT_EQ(pair_error("0,1\ni,j\n").line(), 2u);
+}
+
+// ---------------------------------------------------------------------------
+// Numbers: the from_chars path accepts, refuses and rounds as strtof.
+
+namespace {
+
+// What an error says after the quoted field ("is not a number"), or all of
+// it: the quoting of the field is the reader's own.
+std::string error_kind(const std::string& reason) {
+    const std::size_t quote = reason.rfind("' ");
+    return quote == std::string::npos ? reason : reason.substr(quote + 2);
+}
+
+// The reader's verdict on one field: the float's bits, or the error.
+std::string reader_verdict(const std::string& field) {
+    try {
+        const rect_soa rects = rects_of(line_with(3, field) + "\n");
+        const float v = coords(rects, 0)[3];
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &v, sizeof bits);
+        return "bits " + std::to_string(bits);
+    } catch (const input_error& e) {
+        return "error " + error_kind(e.reason());
+    }
+}
+
+// The same verdict by the rule the reader had before from_chars, in strtof's
+// own words: the whole field read, a finite value, an overflow refused.
+std::string strtof_verdict(const std::string& field) {
+    const std::string label = "field 4 (ury)";
+    std::string trimmed = field;
+    while (!trimmed.empty() && (trimmed.front() == ' ' || trimmed.front() == '\t')) {
+        trimmed.erase(0, 1);
+    }
+    while (!trimmed.empty() && (trimmed.back() == ' ' || trimmed.back() == '\t')) {
+        trimmed.pop_back();
+    }
+    if (trimmed.empty()) {
+        return "error " + label + " is empty";
+    }
+    const auto error = [](const std::string& kind) { return "error " + kind; };
+    char* stop = nullptr;
+    errno = 0;
+    const float v = std::strtof(trimmed.c_str(), &stop);
+    const int e = errno;
+    if (stop != trimmed.c_str() + trimmed.size()) {
+        return error("is not a number");
+    }
+    if (std::isinf(v) && e == ERANGE) {
+        return error("is out of float range (magnitude above 3.40282347e+38)");
+    }
+    if (!std::isfinite(v)) {
+        return error("is not finite");
+    }
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return "bits " + std::to_string(bits);
+}
+
+}  // namespace
+
+TEST(csv_numbers, every_form_is_accepted_refused_and_rounded_as_strtof_does) {
+    const std::vector<std::string> forms = {
+        "0", "-0", "1", "-1", "+1", "+0x1p0", "1.", ".5", "-.5", "1e5", "1E5", "1e+5", "1e-5", "1e", "1e+", "e5",
+        "1.5e-45", "1e-46", "-1e-50", "7e-46", "3.4028235e38", "3.4028236e38", "3.40282357e38", "1e39", "-1e39",
+        "340282356779733661637539395458142568448", "0.1", "0.30000001192092896", "16777217", "16777219",
+        "1.00000005960464477539062500000001", "1.000000059604644775390625",
+        "0x1p0", "0X1P0", "-0x1.8p+1", "0x1.8", "0x.8p1", "0x1.fffffep+127", "0x1.ffffffp+127", "0x1p128",
+        "0x1p-149", "0x1p-150", "0x1.8p-150", "0x1.000001p0", "0x1.0000011p0", "0x1.000003p0", "0xABCp-4",
+        "0x", "0x-1p0", "-0x-1p0", "0x+1p0", "-0x", "0xp1", "0x1p", "0x1p+", "1.8p+1", "a.8p+1", "0x1.8q",
+        "inf", "-inf", "INF", "infinity", "-Infinity", "nan", "-nan", "NaN", "nan(0x1)", "nan(", "0xinf",
+        "1 5", " 1", "1 ", "\t-2\t", "\v1", "1\v", "1\r", "٣", "0.5f", "1_000", "00001", "-00.5e-0002",
+        "1e2147483648", "1e-2147483649", "0x1p2147483648", "0x1p-2147483649",
+        std::string(200, '1'), "0." + std::string(60, '0') + "1", "1" + std::string(120, '0') + "e-120"};
+    for (const std::string& f : forms) {
+        EXPECT_EQ(reader_verdict(f), strtof_verdict(f)) << "'" << f << "'";
+    }
+}
+
+TEST(csv_numbers, random_floats_in_every_written_form_read_back_as_strtof_reads_them) {
+    std::mt19937 random(12345);
+    for (int k = 0; k < 20000; ++k) {
+        const std::uint32_t bits = static_cast<std::uint32_t>(random());
+        float v = 0;
+        std::memcpy(&v, &bits, sizeof v);
+        if (!std::isfinite(v)) {
+            continue;
+        }
+        char text[64];
+        std::vector<std::string> written;
+        written.emplace_back(text, std::to_chars(text, text + sizeof text, v).ptr);
+        std::snprintf(text, sizeof text, "%a", static_cast<double>(v));
+        written.emplace_back(text);
+        std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+        written.emplace_back(text);
+        std::snprintf(text, sizeof text, "%.6e", static_cast<double>(v));  // rounds: not every float
+        written.emplace_back(text);
+        std::snprintf(text, sizeof text, "%A", static_cast<double>(v));
+        written.emplace_back(text);
+        for (const std::string& w : written) {
+            ASSERT_EQ(reader_verdict(w), strtof_verdict(w)) << "'" << w << "'";
+        }
+        // Shortest decimal and hex give back the float itself.
+        ASSERT_EQ(reader_verdict(written[0]), "bits " + std::to_string(bits)) << written[0];
+        ASSERT_EQ(reader_verdict(written[1]), "bits " + std::to_string(bits)) << written[1];
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The status line.
+
+namespace {
+
+std::string written_to(std::FILE* f) {
+    std::fflush(f);
+    std::rewind(f);
+    std::string text;
+    for (int c = std::fgetc(f); c != EOF; c = std::fgetc(f)) {
+        text += static_cast<char>(c);
+    }
+    return text;
+}
+
+}  // namespace
+
+TEST(status_line, writes_nothing_off_a_terminal) {
+    std::FILE* f = std::tmpfile();
+    ASSERT_NE(f, nullptr);
+    {
+        obbsat::io::status_line status(f, false, "obbsat pairs", 0.0);
+        EXPECT_FALSE(status.due());
+        status.show("reading");
+        status.finish("3 poses, 1 pairs");
+    }
+    EXPECT_EQ(written_to(f), "");
+    std::fclose(f);
+}
+
+TEST(status_line, on_a_terminal_overwrites_itself_and_ends_with_the_summary) {
+    std::FILE* f = std::tmpfile();
+    ASSERT_NE(f, nullptr);
+    {
+        obbsat::io::status_line status(f, true, "obbsat pairs", 0.0);
+        ASSERT_TRUE(status.due());
+        status.show("reading Q.csv: 65536 poses");
+        status.show("too soon after the last");  // within a tenth of a second: not shown
+        status.finish("1000000 poses, 1996130 pairs");
+        EXPECT_FALSE(status.due());
+    }
+    const std::string text = written_to(f);
+    const std::string start = "\r\x1b[Kobbsat pairs: reading Q.csv: 65536 poses\r\x1b[Kobbsat pairs: 1000000 poses, "
+                              "1996130 pairs, ";
+    EXPECT_EQ(text.rfind(start, 0), 0u) << text;
+    EXPECT_EQ(text.find("too soon"), std::string::npos);
+    EXPECT_EQ(text.substr(text.size() - 3), " s\n") << text;
+    std::fclose(f);
+}
+
+TEST(status_line, waits_for_its_delay_and_is_erased_when_the_run_ends_in_an_error) {
+    std::FILE* f = std::tmpfile();
+    ASSERT_NE(f, nullptr);
+    {
+        obbsat::io::status_line slow(f, true, "obbsat collide", 60.0);
+        EXPECT_FALSE(slow.due());
+        slow.show("not yet");
+        slow.finish("2 poses, 1 pairs");  // the summary needs no delay
+    }
+    EXPECT_EQ(written_to(f).rfind("obbsat collide: 2 poses, 1 pairs, ", 0), 0u) << written_to(f);
+    std::fclose(f);
+
+    f = std::tmpfile();
+    ASSERT_NE(f, nullptr);
+    {
+        obbsat::io::status_line failing(f, true, "obbsat pairs", 0.0);
+        failing.show("reading");
+    }  // no finish: an error left the run
+    EXPECT_EQ(written_to(f), "\r\x1b[Kobbsat pairs: reading\r\x1b[K");
+    std::fclose(f);
+}

@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -60,6 +61,25 @@ std::string line_of(const rect& r) {
                   static_cast<double>(r.ul.y), static_cast<double>(r.ur.x), static_cast<double>(r.ur.y),
                   static_cast<double>(r.lr.x), static_cast<double>(r.lr.y), static_cast<double>(r.ll.x),
                   static_cast<double>(r.ll.y));
+    return text;
+}
+
+// A pose line as gen writes it by default: each float the shortest decimal
+// that reads back to it.
+std::string decimal_line_of(const rect_pose& p) {
+    std::string line;
+    for (const float v : {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y}) {
+        char text[32];
+        line += (line.empty() ? "" : ",") + std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
+    }
+    return line + "\n";
+}
+
+std::string decimal_file_of(const std::vector<rect_pose>& poses) {
+    std::string text;
+    for (const rect_pose& p : poses) {
+        text += decimal_line_of(p);
+    }
     return text;
 }
 
@@ -625,9 +645,11 @@ TEST(gen_scene, writes_the_scene_of_its_spec_that_pairs_reads_back) {
                               0),
                   0u)
             << r.out;
-        // The file holds the spec's scene, bit for bit.
+        // The file holds the spec's scene, bit for bit, in shortest decimal;
+        // with --hex, in the C99 hex floats gen wrote before.
         const std::vector<rect_pose> poses = obbsat::make_pose_scene(spec);
-        EXPECT_EQ(read_file(s.file("scene.csv")), file_of(poses)) << args;
+        EXPECT_EQ(read_file(s.file("scene.csv")), decimal_file_of(poses)) << args;
+        EXPECT_EQ(s.run("gen " + args + " --hex").out, file_of(poses)) << args;
         const std::string text = read_file(s.file("scene.csv"));
         obbsat::io::line_reader lines(std::string_view(text), "scene.csv");
         const obbsat::pose_records back = obbsat::io::read_pose_records(lines);
@@ -688,3 +710,238 @@ TEST(gen_scene, usage_errors_exit_2_and_leave_the_file_as_it_was) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------
+// Files for data tools: decimal or hex floats, header lines, the status line.
+
+namespace data_files {
+
+// Every float of a pose file as strtof reads it, independent of the
+// program's reader: the bits a consumer gets.
+std::vector<std::uint32_t> bits_by_strtof(const std::string& text) {
+    std::vector<std::uint32_t> bits;
+    for (const std::string& line : obbsat::cli_test::lines_of(text)) {
+        std::istringstream fields(line);
+        for (std::string field; std::getline(fields, field, ',');) {
+            char* stop = nullptr;
+            const float v = std::strtof(field.c_str(), &stop);
+            EXPECT_EQ(*stop, '\0') << field;
+            std::uint32_t b = 0;
+            std::memcpy(&b, &v, sizeof b);
+            bits.push_back(b);
+        }
+    }
+    return bits;
+}
+
+template <class Records>
+std::vector<unsigned char> record_bytes(const Records& records) {
+    std::vector<unsigned char> bytes;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const auto r = records[i];
+        const auto* p = reinterpret_cast<const unsigned char*>(&r);
+        bytes.insert(bytes.end(), p, p + sizeof r);
+    }
+    return bytes;
+}
+
+std::vector<unsigned char> pose_bytes(const std::string& text) {
+    obbsat::io::line_reader lines(std::string_view(text), "poses.csv");
+    return record_bytes(obbsat::io::read_pose_records(lines));
+}
+
+std::vector<unsigned char> rect_bytes(const std::string& text) {
+    obbsat::io::line_reader lines(std::string_view(text), "rects.csv");
+    return record_bytes(obbsat::io::read_rect_records(lines));
+}
+
+// `text` with every `from` replaced by `to`: a picture names its files.
+std::string renamed(std::string text, const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+
+}  // namespace data_files
+
+TEST(gen_formats, decimal_and_hex_scenes_read_back_to_the_same_bits_and_give_the_same_pairs) {
+    const scratch s;
+    ASSERT_EQ(s.run("gen --scene mixed --boxes 3000 --seed 4 --out dec.csv").status, 0);
+    ASSERT_EQ(s.run("gen --scene mixed --boxes 3000 --seed 4 --hex --out hex.csv").status, 0);
+    const std::string dec = read_file(s.file("dec.csv"));
+    const std::string hex = read_file(s.file("hex.csv"));
+    // Decimal: digits, signs, '.', 'e' only, and shorter than hex.
+    EXPECT_EQ(dec.find_first_not_of("0123456789-.e,\n"), std::string::npos);
+    EXPECT_NE(hex.find("0x1."), std::string::npos);
+    EXPECT_LT(dec.size(), hex.size());
+    EXPECT_EQ(data_files::bits_by_strtof(dec), data_files::bits_by_strtof(hex));
+    EXPECT_EQ(data_files::pose_bytes(dec), data_files::pose_bytes(hex));
+    for (const std::string options : {"", " --method conservative --threads 2"}) {
+        const run_result a = s.run("pairs --poses dec.csv" + options);
+        const run_result b = s.run("pairs --poses hex.csv" + options);
+        EXPECT_EQ(a.status, 0) << a.err;
+        EXPECT_EQ(a.out, b.out) << options;
+        EXPECT_EQ(a.err, b.err);
+    }
+}
+
+TEST(gen_formats, decimal_and_hex_suites_give_every_command_the_same_output) {
+    const scratch s;
+    for (const std::string& family : {std::string("tiles"), std::string("--poses contact")}) {
+        ASSERT_EQ(s.run("gen " + family + " --pairs 2000 --seed 3 --out dec").status, 0) << family;
+        ASSERT_EQ(s.run("gen " + family + " --pairs 2000 --seed 3 --hex --out hex").status, 0) << family;
+        const bool poses = family != "tiles";
+        const std::string shapes = poses ? "poses.csv" : "rects.csv";
+        const std::string dec = read_file(s.file("dec/" + shapes));
+        const std::string hex = read_file(s.file("hex/" + shapes));
+        EXPECT_NE(dec, hex) << family;
+        EXPECT_EQ(data_files::bits_by_strtof(dec), data_files::bits_by_strtof(hex)) << family;
+        EXPECT_EQ(poses ? data_files::pose_bytes(dec) : data_files::rect_bytes(dec),
+                  poses ? data_files::pose_bytes(hex) : data_files::rect_bytes(hex))
+            << family;
+        for (const char* other : {"pairs.csv", "truth_class.txt", "truth.txt", "tags.txt"}) {
+            EXPECT_EQ(read_file(s.file(std::string("dec/") + other)), read_file(s.file(std::string("hex/") + other)))
+                << family << " " << other;
+        }
+        const std::string kind = poses ? "--poses" : "--rects";
+        const std::vector<std::string> methods =
+            poses ? std::vector<std::string>{"local", "conservative", "exact"}
+                  : std::vector<std::string>{"sat4", "sat4_double", "exact"};
+        for (const std::string& m : methods) {
+            const run_result a = s.run("collide " + kind + " dec/" + shapes + " --pairs dec/pairs.csv --method " + m);
+            const run_result b = s.run("collide " + kind + " hex/" + shapes + " --pairs hex/pairs.csv --method " + m);
+            EXPECT_EQ(a.status, 0) << a.err;
+            EXPECT_EQ(a.out, b.out) << family << " " << m;
+        }
+        EXPECT_EQ(s.run("collide " + kind + " dec/" + shapes + " --pairs dec/pairs.csv --method exact").out,
+                  read_file(s.file("dec/truth.txt")));
+        EXPECT_EQ(s.run("pairs " + kind + " dec/" + shapes).out, s.run("pairs " + kind + " hex/" + shapes).out);
+        const run_result da =
+            s.run("draw " + kind + " dec/" + shapes + " --pairs dec/pairs.csv --select 0-3 --out dec.svg");
+        const run_result db =
+            s.run("draw " + kind + " hex/" + shapes + " --pairs hex/pairs.csv --select 0-3 --out hex.svg");
+        EXPECT_EQ(da.status, 0) << da.err;
+        EXPECT_EQ(db.status, 0) << db.err;
+        EXPECT_EQ(data_files::renamed(read_file(s.file("dec.svg")), "dec/", "hex/"), read_file(s.file("hex.svg")))
+            << family;
+    }
+}
+
+TEST(headers, gen_writes_them_on_request_and_every_reader_skips_them) {
+    const scratch s;
+    ASSERT_EQ(s.run("gen tiles --pairs 300 --out plain").status, 0);
+    ASSERT_EQ(s.run("gen tiles --pairs 300 --header --out named").status, 0);
+    ASSERT_EQ(s.run("gen --poses contact --pairs 300 --header --hex --out named_poses").status, 0);
+    const std::string rects = read_file(s.file("named/rects.csv"));
+    EXPECT_EQ(rects, "ulx,uly,urx,ury,lrx,lry,llx,lly\n" + read_file(s.file("plain/rects.csv")));
+    EXPECT_EQ(read_file(s.file("named/pairs.csv")), "i,j\n" + read_file(s.file("plain/pairs.csv")));
+    EXPECT_EQ(read_file(s.file("named/truth.txt")), read_file(s.file("plain/truth.txt")));
+    const std::string named_poses = read_file(s.file("named_poses/poses.csv"));
+    EXPECT_EQ(named_poses.rfind("cx,cy,hx,hy,c,s\n", 0), 0u);
+    EXPECT_NE(named_poses.find("0x1."), std::string::npos);
+    EXPECT_EQ(read_file(s.file("named_poses/pairs.csv")).rfind("i,j\n", 0), 0u);
+    EXPECT_EQ(s.run("gen --scene uniform --boxes 4 --header").out.rfind("cx,cy,hx,hy,c,s\n", 0), 0u);
+
+    // The readers skip them: the same verdicts, pairs and pictures.
+    const run_result plain = s.run("collide --rects plain/rects.csv --pairs plain/pairs.csv --method exact");
+    const run_result named = s.run("collide --rects named/rects.csv --pairs named/pairs.csv --method exact");
+    EXPECT_EQ(named.status, 0) << named.err;
+    EXPECT_EQ(named.out, plain.out);
+    EXPECT_EQ(named.out, read_file(s.file("plain/truth.txt")));
+    const run_result pose_verdicts =
+        s.run("collide --poses named_poses/poses.csv --pairs named_poses/pairs.csv --method exact");
+    EXPECT_EQ(pose_verdicts.status, 0) << pose_verdicts.err;
+    EXPECT_EQ(pose_verdicts.out, read_file(s.file("named_poses/truth.txt")));
+    EXPECT_EQ(s.run("pairs --rects named/rects.csv").out, s.run("pairs --rects plain/rects.csv").out);
+    EXPECT_EQ(s.run("draw --rects named/rects.csv --pairs named/pairs.csv --select 0-2 --out named.svg").status, 0);
+    EXPECT_EQ(s.run("draw --rects plain/rects.csv --pairs plain/pairs.csv --select 0-2 --out plain.svg").status, 0);
+    EXPECT_EQ(data_files::renamed(read_file(s.file("named.svg")), "named/", "plain/"), read_file(s.file("plain.svg")));
+    // The header of a pose file written with angles.
+    write_file(s.file("angles.csv"), "cx,cy,hx,hy,angle\n0,0,1,1,0.5\n1,0,1,1,0\n");
+    EXPECT_EQ(s.run("pairs --poses angles.csv").out, "0,1\n");
+}
+
+TEST(headers, pairs_and_collide_write_them_on_request) {
+    const scratch s;
+    ASSERT_EQ(s.run("gen --scene uniform --boxes 400 --seed 2 --out scene.csv").status, 0);
+    const run_result plain = s.run("pairs --poses scene.csv");
+    const run_result named = s.run("pairs --poses scene.csv --header");
+    ASSERT_EQ(named.status, 0) << named.err;
+    EXPECT_EQ(named.out, "i,j\n" + plain.out);
+    ASSERT_EQ(s.run("pairs --poses scene.csv --header --out named.csv").status, 0);
+    EXPECT_EQ(read_file(s.file("named.csv")), named.out);
+    // The pair list with its header is a pair file collide reads.
+    write_file(s.file("pairs.csv"), named.out);
+    const run_result verdicts = s.run("collide --poses scene.csv --pairs pairs.csv --method exact");
+    ASSERT_EQ(verdicts.status, 0) << verdicts.err;
+    std::string ones;
+    for (std::size_t k = 0; k < obbsat::cli_test::lines_of(plain.out).size(); ++k) {
+        ones += "1\n";
+    }
+    EXPECT_EQ(verdicts.out, ones);
+    const run_result named_verdicts = s.run("collide --poses scene.csv --pairs pairs.csv --method exact --header");
+    EXPECT_EQ(named_verdicts.status, 0) << named_verdicts.err;
+    EXPECT_EQ(named_verdicts.out, "verdict\n" + ones);
+    ASSERT_EQ(s.run("collide --poses scene.csv --pairs pairs.csv --header --out v.txt").status, 0);
+    EXPECT_EQ(read_file(s.file("v.txt")), "verdict\n" + ones);
+}
+
+TEST(headers, a_first_line_of_names_that_is_not_the_header_is_an_error_naming_line_1) {
+    const scratch s;
+    write_file(s.file("out.csv"), "previous\n");
+    write_file(s.file("Q.csv"), "x,y,w,h,c,s\n0,0,1,1,1,0\n");
+    write_file(s.file("R.csv"), "ULX,uly,urx,ury,lrx,lry,llx,lly\n0,1,1,1,1,0,0,0\n");
+    write_file(s.file("good.csv"), "0,1,1,1,1,0,0,0\n0,1,1,1,1,0,0,0\n");
+    write_file(s.file("P.csv"), "a,b\n0,1\n");
+    write_file(s.file("late.csv"), "# comment\ncx,cy,hx,hy,c,s\n0,0,1,1,1,0\n");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"pairs --poses Q.csv --out out.csv",
+         "obbsat: Q.csv:1: expected the header 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' or a pose, found "
+         "'x,y,w,h,c,s'\n"},
+        {"pairs --rects R.csv --out out.csv",
+         "obbsat: R.csv:1: expected the header 'ulx,uly,urx,ury,lrx,lry,llx,lly' or a rectangle, found "
+         "'ULX,uly,urx,ury,lrx,lry,llx,lly'\n"},
+        {"collide --rects good.csv --pairs P.csv --out out.csv",
+         "obbsat: P.csv:1: expected the header 'i,j' or a pair, found 'a,b'\n"},
+        // A header is line 1 or nothing: later it is a line of numbers.
+        {"pairs --poses late.csv --out out.csv", "obbsat: late.csv:2: field 1 (cx): 'cx' is not a number\n"},
+    };
+    for (const auto& [args, message] : cases) {
+        const run_result r = s.run(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, message) << args;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(read_file(s.file("out.csv")), "previous\n") << args;
+    }
+}
+
+// Off a terminal (every test above captures standard error in a file) the
+// program writes no status line and no summary; on one, the summary.
+TEST(status_line, a_terminal_gets_a_summary_of_the_run) {
+    const scratch s;
+    if (std::system("command -v script > /dev/null 2>&1") != 0) {
+        GTEST_SKIP() << "no 'script' to run the program on a terminal";
+    }
+    ASSERT_EQ(s.run("gen --scene uniform --boxes 300 --out scene.csv").status, 0);
+    const run_result quiet = s.run("pairs --poses scene.csv --out off.csv");
+    ASSERT_EQ(quiet.status, 0);
+    EXPECT_EQ(quiet.err, "");
+    const std::size_t pair_count = obbsat::cli_test::lines_of(read_file(s.file("off.csv"))).size();
+
+    const std::string typescript = (s.file("typescript")).string();
+    const std::string command = "cd '" + s.file("").string() + "' && script -qec \"'" OBBSAT_CLI_PATH
+                                "' pairs --poses scene.csv --out on.csv\" /dev/null > '" + typescript + "' 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const std::string shown = read_file(typescript);
+    const std::string summary = "obbsat pairs: 300 poses, " + std::to_string(pair_count) + " pairs, ";
+    EXPECT_NE(shown.find(summary), std::string::npos) << shown;
+    EXPECT_NE(shown.find(" s\r\n"), std::string::npos) << shown;
+    EXPECT_EQ(read_file(s.file("on.csv")), read_file(s.file("off.csv")));
+
+    const std::string gen_command = "cd '" + s.file("").string() + "' && script -qec \"'" OBBSAT_CLI_PATH
+                                    "' gen --scene uniform --boxes 10 --out g.csv\" /dev/null > '" + typescript +
+                                    "' 2>&1";
+    ASSERT_EQ(std::system(gen_command.c_str()), 0);
+    EXPECT_NE(read_file(typescript).find("obbsat gen: 10 poses, "), std::string::npos) << read_file(typescript);
+}

@@ -17,6 +17,7 @@
 #include "cli/cli_args.hpp"
 #include "io/atomic_output.hpp"
 #include "io/output_target.hpp"
+#include "io/status_line.hpp"
 
 #include <obbsat/oracle/classify_pairs.hpp>
 #include <obbsat/pose_scene.hpp>
@@ -48,6 +49,8 @@ const std::vector<option_spec>& gen_option_specs() {
         {"scene", "SIZES", "uniform or mixed: write a seeded scene of poses, not a family"},
         {"boxes", "N", "with --scene: rectangles, 1 to 4294967295 (required)"},
         {"pairs-per-box", "D", "with --scene: colliding pairs per rectangle, about (default: 2)"},
+        {"hex", "", "write floats as C99 hex floats (%a), not shortest decimal"},
+        {"header", "", "start each CSV file with its header line (e.g. cx,cy,hx,hy,c,s)"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -128,15 +131,14 @@ split_words split_positional(const arguments& args) {
 
 void print_gen_help(std::FILE* out) {
     std::fprintf(out,
-                 "usage: obbsat gen FAMILY --out DIR [--pairs N] [--seed S]\n"
-                 "       obbsat gen --poses FAMILY --out DIR [--pairs N] [--seed S]\n"
+                 "usage: obbsat gen FAMILY --out DIR [--pairs N] [--seed S] [--hex] [--header]\n"
+                 "       obbsat gen --poses FAMILY --out DIR [--pairs N] [--seed S] [--hex] [--header]\n"
                  "       obbsat gen --scene uniform|mixed --boxes N [--seed S] [--pairs-per-box D]\n"
-                 "                  [--out FILE]\n"
+                 "                  [--out FILE] [--hex] [--header]\n"
                  "\n"
                  "Writes N pairs of one hard-case suite family (pairs on or within a few float\n"
                  "steps of the boundary between separated, touching and overlapping) into DIR:\n"
-                 "  rects.csv        one rect per line, ulx,uly,urx,ury,lrx,lry,llx,lly as C99\n"
-                 "                   hex floats (strtof reads them back exactly)\n"
+                 "  rects.csv        one rect per line, ulx,uly,urx,ury,lrx,lry,llx,lly\n"
                  "  pairs.csv        one pair per line, i,j (0-based lines of rects.csv)\n"
                  "  truth_class.txt  per pair, the exact oracle's S (separated), T (touching)\n"
                  "                   or O (overlapping)\n"
@@ -150,8 +152,8 @@ void print_gen_help(std::FILE* out) {
                  "\n"
                  "With --poses, FAMILY is a pose family, pairs of rectangles given as poses for\n"
                  "the methods on poses, and poses.csv replaces rects.csv:\n"
-                 "  poses.csv        one pose per line, cx,cy,hx,hy,c,s as C99 hex floats, what\n"
-                 "                   'obbsat collide --poses' reads; the truth is the exact pose\n"
+                 "  poses.csv        one pose per line, cx,cy,hx,hy,c,s, what 'obbsat collide\n"
+                 "                   --poses' reads; the truth is the exact pose\n"
                  "                   oracle's, the tags say how each pair was built, e.g. v:x+2:y-1\n"
                  "                   (placed on contact along the first pose's axis (-s, c), then\n"
                  "                   the second's center moved 2 float steps in x and -1 in y)\n"
@@ -165,12 +167,21 @@ void print_gen_help(std::FILE* out) {
                  "\n"
                  "With --scene, no FAMILY: N rectangles at random positions and orientations in\n"
                  "a square sized for about D colliding pairs per rectangle (make_pose_scene,\n"
-                 "obbsat/pose_scene.hpp), as one pose file, cx,cy,hx,hy,c,s per line in C99 hex\n"
-                 "floats, what 'obbsat pairs --poses' reads. uniform: half extents in [0.5, 1.5];\n"
+                 "obbsat/pose_scene.hpp), as one pose file, cx,cy,hx,hy,c,s per line, what\n"
+                 "'obbsat pairs --poses' reads. uniform: half extents in [0.5, 1.5];\n"
                  "mixed: sizes over two decades, [0.2, 20], aspect ratios in [0.3, 1]. D is from\n"
                  "1e-6 to 1000. The same N, sizes, seed and D give the same scene. The file goes\n"
                  "to --out FILE, all or nothing, or else to standard output; a scene takes 32\n"
-                 "bytes per rectangle in memory and about 85 bytes per line on disk.\n"
+                 "bytes per rectangle in memory and about 70 bytes per line on disk.\n"
+                 "\n"
+                 "numbers: every float is written as the shortest decimal that reads back to\n"
+                 "the same float (std::to_chars), which numpy.loadtxt and pandas read; with\n"
+                 "--hex, as a C99 hex float (%%a, e.g. 0x1.8p+1), the format gen wrote before.\n"
+                 "Both read back to the same bits, so every command gives the same output.\n"
+                 "With --header, rects.csv or poses.csv and pairs.csv (or the scene) start\n"
+                 "with a header line, ulx,uly,urx,ury,lrx,lry,llx,lly or cx,cy,hx,hy,c,s and\n"
+                 "i,j, which every reader skips; then line k+1 of pairs.csv is pair k. On a\n"
+                 "terminal, standard error gets a one-line summary at the end.\n"
                  "\n"
                  "options:\n",
                  family_list().c_str(), pose_family_list().c_str());
@@ -191,6 +202,7 @@ void print_gen_help(std::FILE* out) {
 namespace {
 
 struct gen_request {
+    csv_style style;
     std::string dir;
     bool dir_exists = false;
     std::size_t pairs = 10000;
@@ -203,7 +215,7 @@ void gen_rects(const gen_request& request, suites::family family) {
     std::vector<oracle::contact> truth(s.pairs.size());
     oracle::classify_pairs(s.rects.data(), s.rects.size(), s.pairs.data(), s.pairs.size(),
                            truth.data());
-    write_suite_dir(request.dir, request.dir_exists, s, truth);
+    write_suite_dir(request.dir, request.dir_exists, s, truth, request.style);
     std::printf("%s: %zu pairs of family %s (seed %" PRIu64 ") over %zu rects\n", request.dir.c_str(),
                 s.pairs.size(), suites::family_name(family), request.seed, s.rects.size());
 }
@@ -213,7 +225,7 @@ void gen_poses(const gen_request& request, suites::pose_family family) {
     std::vector<oracle::contact> truth(s.pairs.size());
     oracle::classify_pairs(s.poses.data(), s.poses.size(), s.pairs.data(), s.pairs.size(),
                            truth.data());
-    write_suite_dir(request.dir, request.dir_exists, s, truth);
+    write_suite_dir(request.dir, request.dir_exists, s, truth, request.style);
     std::printf("%s: %zu pairs of pose family %s (seed %" PRIu64 ") over %zu poses\n",
                 request.dir.c_str(), s.pairs.size(), suites::pose_family_name(family), request.seed,
                 s.poses.size());
@@ -242,7 +254,14 @@ double pairs_per_box_option(std::string_view text) {
     return value;
 }
 
-void gen_scene(const split_words& words, const parsed_options& options) {
+csv_style style_option(const parsed_options& options) {
+    csv_style style;
+    style.hex = options.has("hex");
+    style.header = options.has("header");
+    return style;
+}
+
+void gen_scene(const split_words& words, const parsed_options& options, io::status_line& status) {
     if (!words.positional.empty()) {
         throw usage_error("unexpected argument '" + std::string(words.positional.front()) +
                           "' (--scene takes no FAMILY)");
@@ -270,8 +289,12 @@ void gen_scene(const split_words& words, const parsed_options& options) {
     const std::optional<std::string_view> out_path = output_option(options, "out");
     // Created before the scene is made, so an unwritable --out fails at once.
     io::output_target target(out_path);
-    write_pose_lines(make_pose_scene(spec), target);
+    status.show("making " + std::to_string(spec.boxes) + " poses");
+    const std::vector<rect_pose> poses = make_pose_scene(spec);
+    status.show("writing " + std::to_string(spec.boxes) + " poses");
+    write_pose_lines(poses, target, style_option(options));
     target.commit();
+    status.finish(std::to_string(spec.boxes) + " poses");
     if (out_path) {
         std::printf("%.*s: %zu poses, %s sizes (seed %" PRIu64 "), about %g pairs per box, side %g\n",
                     static_cast<int>(out_path->size()), out_path->data(), spec.boxes, scene_sizes_name(spec.sizes),
@@ -284,8 +307,9 @@ void gen_scene(const split_words& words, const parsed_options& options) {
 int run_gen(const arguments& args) {
     const split_words words = split_positional(args);
     const parsed_options options = parse_options(words.options, gen_option_specs());
+    io::status_line status("obbsat gen");
     if (options.has("scene")) {
-        gen_scene(words, options);
+        gen_scene(words, options, status);
         return exit_success;
     }
     for (const std::string_view name : scene_only_options) {
@@ -310,6 +334,7 @@ int run_gen(const arguments& args) {
                           std::string(family_word) + "' (known: " + known + ")");
     }
     gen_request request;
+    request.style = style_option(options);
     request.dir = without_trailing_slashes(std::string(options.required("out")));
     if (request.dir.empty()) {
         throw usage_error("--out: expected a directory name, got ''");
@@ -332,6 +357,7 @@ int run_gen(const arguments& args) {
     } else {
         gen_rects(request, *family);
     }
+    status.finish(std::to_string(request.pairs) + " pairs");
     return exit_success;
 }
 

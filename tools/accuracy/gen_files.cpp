@@ -1,6 +1,7 @@
 #include "accuracy/gen_files.hpp"
 
 #include "io/atomic_output.hpp"
+#include "io/csv_input.hpp"
 #include "io/output_target.hpp"
 #include "io/temporary_files.hpp"
 
@@ -10,11 +11,13 @@
 
 #include <array>
 #include <cerrno>
+#include <charconv>
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fcntl.h>
@@ -158,24 +161,42 @@ void sync_directory(const std::string& path) {
     }
 }
 
-// One line of rects.csv or of poses.csv. %a prints a float (promoted to
-// double, exactly) as a C99 hex float that strtof reads back to the same
-// float, subnormals too.
-int shape_line(char* text, std::size_t size, const rect& r) {
-    return std::snprintf(text, size, "%a,%a,%a,%a,%a,%a,%a,%a", static_cast<double>(r.ul.x),
-                         static_cast<double>(r.ul.y), static_cast<double>(r.ur.x),
-                         static_cast<double>(r.ur.y), static_cast<double>(r.lr.x),
-                         static_cast<double>(r.lr.y), static_cast<double>(r.ll.x),
-                         static_cast<double>(r.ll.y));
+// One line of rects.csv or of poses.csv, its floats joined by ','. In
+// decimal, std::to_chars without a precision gives the shortest text that
+// reads back to the same float (subnormals and -0 too); in hex, %a prints the
+// float (promoted to double, exactly) as a C99 hex float that strtof and
+// from_chars read back to the same float, the format gen wrote before
+// decimal became the default.
+template <std::size_t N>
+std::size_t float_line(char* text, std::size_t size, const std::array<float, N>& values, bool hex) {
+    char* at = text;
+    char* const end = text + size;
+    for (std::size_t k = 0; k < N; ++k) {
+        if (k > 0) {
+            *at++ = ',';
+        }
+        if (hex) {
+            const int n = std::snprintf(at, static_cast<std::size_t>(end - at), "%a", static_cast<double>(values[k]));
+            at += n;
+        } else {
+            at = std::to_chars(at, end, values[k]).ptr;
+        }
+    }
+    return static_cast<std::size_t>(at - text);
 }
 
-int shape_line(char* text, std::size_t size, const rect_pose& p) {
-    return std::snprintf(text, size, "%a,%a,%a,%a,%a,%a", static_cast<double>(p.center.x),
-                         static_cast<double>(p.center.y), static_cast<double>(p.half_extents.x),
-                         static_cast<double>(p.half_extents.y), static_cast<double>(p.rotation.x),
-                         static_cast<double>(p.rotation.y));
+std::size_t shape_line(char* text, std::size_t size, const rect& r, bool hex) {
+    return float_line<8>(text, size, {r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x, r.lr.y, r.ll.x, r.ll.y}, hex);
 }
 
+std::size_t shape_line(char* text, std::size_t size, const rect_pose& p, bool hex) {
+    return float_line<6>(text, size,
+                         {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y},
+                         hex);
+}
+
+std::string_view header_of(const suites::suite&) { return io::rect_header; }
+std::string_view header_of(const suites::pose_suite&) { return io::pose_header; }
 
 const std::vector<rect>& shapes_of(const suites::suite& s) { return s.rects; }
 const std::vector<rect_pose>& shapes_of(const suites::pose_suite& s) { return s.poses; }
@@ -183,21 +204,26 @@ const std::vector<rect_pose>& shapes_of(const suites::pose_suite& s) { return s.
 // Suite is suites::suite or suites::pose_suite; names[0] is its shapes' file.
 template <class Suite>
 void write_suite_files(const std::string& temp, const std::string& dir, const Suite& s,
-                       const std::vector<oracle::contact>& truth, const file_set& names) {
+                       const std::vector<oracle::contact>& truth, const file_set& names, const csv_style& style) {
     auto temp_path = [&](const char* name) { return temp + "/" + name; };
     auto final_path = [&](const char* name) { return dir + "/" + name; };
     char text[256];
 
     {
         suite_file shapes(temp_path(names[0]), final_path(names[0]));
+        if (style.header) {
+            shapes.line(std::string(header_of(s)));
+        }
         for (const auto& shape : shapes_of(s)) {
-            const int size = shape_line(text, sizeof text, shape);
-            shapes.line(text, static_cast<std::size_t>(size));
+            shapes.line(text, shape_line(text, sizeof text, shape, style.hex));
         }
         shapes.finish();
     }
     {
         suite_file pairs(temp_path("pairs.csv"), final_path("pairs.csv"));
+        if (style.header) {
+            pairs.line(std::string(io::pair_header));
+        }
         for (const pair_index& p : s.pairs) {
             const int size = std::snprintf(text, sizeof text, "%" PRIu32 ",%" PRIu32, p.a, p.b);
             pairs.line(text, static_cast<std::size_t>(size));
@@ -247,11 +273,11 @@ void move_files_into(const std::string& temp, const std::string& dir, const file
 // Writes the suite `s` and its `truth` into `dir`, all or nothing.
 template <class Suite>
 void write_suite(const std::string& dir, bool dir_exists, const Suite& s,
-                 const std::vector<oracle::contact>& truth, const file_set& names) {
+                 const std::vector<oracle::contact>& truth, const file_set& names, const csv_style& style) {
     const std::string parent = parent_of(dir);
     temp_directory temp(io::temporary_pattern((dir_exists ? dir : parent) + "/", "gen"), dir,
                         names);
-    write_suite_files(temp.path(), dir, s, truth, names);
+    write_suite_files(temp.path(), dir, s, truth, names, style);
 
     if (dir_exists) {
         move_files_into(temp.path(), dir, names);
@@ -279,14 +305,17 @@ std::string without_trailing_slashes(std::string path) {
 }
 
 // The poses of a scene, one line each, handed to `out` a megabyte at a time.
-void write_pose_lines(const std::vector<rect_pose>& poses, io::output_target& out) {
+void write_pose_lines(const std::vector<rect_pose>& poses, io::output_target& out, const csv_style& style) {
     constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
     std::string buffer;
     buffer.reserve(buffer_bytes + 256);
+    if (style.header) {
+        buffer.append(io::pose_header);
+        buffer += '\n';
+    }
     char text[256];
     for (const rect_pose& p : poses) {
-        const int size = shape_line(text, sizeof text, p);
-        buffer.append(text, static_cast<std::size_t>(size));
+        buffer.append(text, shape_line(text, sizeof text, p, style.hex));
         buffer += '\n';
         if (buffer.size() >= buffer_bytes) {
             out.write(buffer.data(), buffer.size());
@@ -297,13 +326,13 @@ void write_pose_lines(const std::vector<rect_pose>& poses, io::output_target& ou
 }
 
 void write_suite_dir(const std::string& dir, bool dir_exists, const suites::suite& s,
-                     const std::vector<oracle::contact>& truth) {
-    write_suite(dir, dir_exists, s, truth, rect_file_names);
+                     const std::vector<oracle::contact>& truth, const csv_style& style) {
+    write_suite(dir, dir_exists, s, truth, rect_file_names, style);
 }
 
 void write_suite_dir(const std::string& dir, bool dir_exists, const suites::pose_suite& s,
-                     const std::vector<oracle::contact>& truth) {
-    write_suite(dir, dir_exists, s, truth, pose_file_names);
+                     const std::vector<oracle::contact>& truth, const csv_style& style) {
+    write_suite(dir, dir_exists, s, truth, pose_file_names, style);
 }
 
 }  // namespace obbsat::cli

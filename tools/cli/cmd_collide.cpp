@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "io/csv_input.hpp"
 #include "io/output_target.hpp"
+#include "io/status_line.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
@@ -37,6 +38,7 @@ const std::vector<option_spec>& collide_option_specs() {
         {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
         {"threads", "N", "cores to split each chunk over, 0 for all (default: 1)"},
         {"method", "NAME", "collision test (default: sat4 on --rects, local on --poses)"},
+        {"header", "", "start the output with the header line 'verdict'"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -45,7 +47,13 @@ const std::vector<option_spec>& collide_option_specs() {
 // Verdicts as text, one '0' or '1' line per pair, to --out or standard output.
 class verdict_writer {
 public:
-    explicit verdict_writer(const std::optional<std::string_view>& out_path) : out_(out_path) {}
+    verdict_writer(const std::optional<std::string_view>& out_path, bool header) : out_(out_path) {
+        if (header) {
+            std::string line(io::verdict_header);
+            line += '\n';
+            out_.write(line.data(), line.size());
+        }
+    }
 
     void write(const std::vector<std::uint8_t>& verdicts, std::size_t count) {
         text_.resize(2 * count);
@@ -66,17 +74,21 @@ private:
 // Every record of the rectangle file, by `read` (a reader of csv_input.hpp);
 // the line buffer is gone before the pairs are read.
 template <class Read>
-auto read_whole(const io::input_file& file, Read read) {
+auto read_whole(const io::input_file& file, io::status_line& status, const char* plural, Read read) {
     io::line_reader lines(file.get(), file.name());
-    return read(lines);
+    return read(lines, [&](std::uint64_t records) {
+        if (status.due()) {
+            status.show("reading " + file.name() + ": " + std::to_string(records) + " " + plural);
+        }
+    });
 }
 
 // Decides the pairs of `pairs_file` a chunk at a time over `rects`, read from
 // `rects_file`, and hands the verdicts to `writer`.
 template <class Store>
-void collide_pair_file(const Store& rects, const io::input_file& rects_file,
-                       const io::input_file& pairs_file, const collide_options& run,
-                       verdict_writer& writer) {
+std::uint64_t collide_pair_file(const Store& rects, const io::input_file& rects_file,
+                                const io::input_file& pairs_file, const collide_options& run,
+                                verdict_writer& writer, io::status_line& status) {
     io::line_reader pair_lines(pairs_file.get(), pairs_file.name());
     io::pair_reader pairs(pair_lines, rects.size(), rects_file.name());
     std::vector<pair_index> chunk;
@@ -87,7 +99,11 @@ void collide_pair_file(const Store& rects, const io::input_file& rects_file,
         verdicts.resize(chunk.size());
         collide_pairs(rects, chunk.data(), chunk.size(), verdicts.data(), run);
         writer.write(verdicts, chunk.size());
+        if (status.due()) {
+            status.show(std::to_string(pairs.pairs_read()) + " pairs decided");
+        }
     }
+    return pairs.pairs_read();
 }
 
 }  // namespace
@@ -95,7 +111,7 @@ void collide_pair_file(const Store& rects, const io::input_file& rects_file,
 void print_collide_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat collide (--rects FILE | --poses FILE) --pairs FILE [--out FILE]\n"
-                 "                      [--backend NAME] [--threads N] [--method NAME]\n"
+                 "                      [--backend NAME] [--threads N] [--method NAME] [--header]\n"
                  "\n"
                  "Writes one line per pair, in pair order: 1 if the two rectangles collide\n"
                  "(touching counts), else 0. The rectangles come from --rects or --poses (one\n"
@@ -123,6 +139,12 @@ void print_collide_help(std::FILE* out) {
                  "blanks around fields, CRLF line ends and a last line without a line end are\n"
                  "accepted; blank lines and lines starting with '#' are skipped. Infinities,\n"
                  "NaNs and values beyond float range are errors; subnormals are accepted.\n"
+                 "Line 1 may be the file's header, exactly 'ulx,uly,urx,ury,lrx,lry,llx,lly',\n"
+                 "'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle', or 'i,j': it is skipped; a line 1\n"
+                 "of names only that is not the header is an error.\n"
+                 "\n"
+                 "status: on a terminal, standard error shows the progress once the run takes\n"
+                 "more than a second, and a summary at the end; elsewhere nothing.\n"
                  "\n"
                  "errors: 'obbsat: FILE:LINE: reason' on stderr and exit status 2. With --out\n"
                  "the target is replaced only on success; on standard output, verdicts written\n"
@@ -159,18 +181,27 @@ int run_collide(const arguments& args) {
     if (io::same_input(rects_file, pairs_file)) {
         throw same_input_error(input.option, input.path, pairs_path);
     }
-    verdict_writer writer(output_option(options, "out"));
+    verdict_writer writer(output_option(options, "out"), options.has("header"));
 
+    io::status_line status("obbsat collide");
+    std::string summary;
     if (input.kind == store_kind::corners) {
         const rect_records rects =
-            read_whole(rects_file, [](io::line_reader& lines) { return io::read_rect_records(lines); });
-        collide_pair_file(rects, rects_file, pairs_file, run, writer);
+            read_whole(rects_file, status, "rectangles", [](io::line_reader& lines, const io::record_progress& p) {
+                return io::read_rect_records(lines, UINT32_MAX, p);
+            });
+        const std::uint64_t pairs = collide_pair_file(rects, rects_file, pairs_file, run, writer, status);
+        summary = std::to_string(rects.size()) + " rectangles, " + std::to_string(pairs) + " pairs";
     } else {
         const pose_records poses =
-            read_whole(rects_file, [](io::line_reader& lines) { return io::read_pose_records(lines); });
-        collide_pair_file(poses, rects_file, pairs_file, run, writer);
+            read_whole(rects_file, status, "poses", [](io::line_reader& lines, const io::record_progress& p) {
+                return io::read_pose_records(lines, UINT32_MAX, p);
+            });
+        const std::uint64_t pairs = collide_pair_file(poses, rects_file, pairs_file, run, writer, status);
+        summary = std::to_string(poses.size()) + " poses, " + std::to_string(pairs) + " pairs";
     }
     writer.finish();
+    status.finish(summary);
     return exit_success;
 }
 

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "io/csv_input.hpp"
 #include "io/output_target.hpp"
+#include "io/status_line.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/error.hpp>
@@ -43,6 +44,7 @@ const std::vector<option_spec>& pairs_option_specs() {
         {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
         {"threads", "N", "cores to split the query over, 0 for all (default: 1)"},
         {"out", "FILE", "write the pairs here, all or nothing (default: standard output)"},
+        {"header", "", "start the output with the header line 'i,j'"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -91,14 +93,23 @@ bool one_stream(const io::input_file& a, const io::input_file& b) {
     return io::same_input(a, b) && !regular;
 }
 
-void read_store(const io::input_file& file, rect_records& out) {
-    io::line_reader lines(file.get(), file.name());
-    out = io::read_rect_records(lines);
+// What the status line shows while `file` is read.
+io::record_progress reading(io::status_line& status, const io::input_file& file, const char* plural) {
+    return [&status, &file, plural](std::uint64_t records) {
+        if (status.due()) {
+            status.show("reading " + file.name() + ": " + std::to_string(records) + " " + plural);
+        }
+    };
 }
 
-void read_store(const io::input_file& file, pose_records& out) {
+void read_store(const io::input_file& file, rect_records& out, io::status_line& status) {
     io::line_reader lines(file.get(), file.name());
-    out = io::read_pose_records(lines);
+    out = io::read_rect_records(lines, UINT32_MAX, reading(status, file, "rectangles"));
+}
+
+void read_store(const io::input_file& file, pose_records& out, io::status_line& status) {
+    io::line_reader lines(file.get(), file.name());
+    out = io::read_pose_records(lines, UINT32_MAX, reading(status, file, "poses"));
 }
 
 // The colliding pairs grouped by first index: row i holds the j of every
@@ -112,13 +123,21 @@ void read_store(const io::input_file& file, pose_records& out) {
 class pair_rows {
 public:
     template <class... Stores>
-    pair_rows(std::size_t row_count, const collide_options& run, const Stores&... stores)
+    pair_rows(std::size_t row_count, const collide_options& run, io::status_line& status, const Stores&... stores)
         : starts_(row_count + 1, 0) {
-        find_pairs_each(stores..., run, [this](const pair_index* pairs, std::size_t count) {
+        std::uint64_t found = 0;
+        find_pairs_each(stores..., run, [&](const pair_index* pairs, std::size_t count) {
             for (std::size_t k = 0; k < count; ++k) {
                 ++starts_[pairs[k].a + 1];
             }
+            found += count;
+            if (status.due()) {
+                status.show("finding pairs: " + std::to_string(found) + " so far");
+            }
         });
+        if (status.due()) {
+            status.show("storing " + std::to_string(found) + " pairs");
+        }
         std::partial_sum(starts_.begin(), starts_.end(), starts_.begin());
         js_.resize(starts_.back());
         std::vector<std::uint64_t> next(starts_.begin(), starts_.end() - 1);
@@ -154,27 +173,34 @@ private:
 // The colliding pairs of `first`, or across `first` and `against`; the
 // records are gone when the pairs come back.
 template <class Store>
-pair_rows pairs_of_files(const io::input_file& first, const io::input_file* against, const collide_options& run) {
+pair_rows pairs_of_files(const io::input_file& first, const io::input_file* against, const collide_options& run,
+                         io::status_line& status, std::uint64_t& records) {
     Store a;
-    read_store(first, a);
+    read_store(first, a, status);
+    records = a.size();
     if (against == nullptr) {
-        return pair_rows(a.size(), run, a);
+        return pair_rows(a.size(), run, status, a);
     }
     Store b;
-    read_store(*against, b);
-    return pair_rows(a.size(), run, a, b);
+    read_store(*against, b, status);
+    records += b.size();
+    return pair_rows(a.size(), run, status, a, b);
 }
 
 // Writes "i,j\n" per pair, formatted by to_chars into a buffer handed out a
 // megabyte at a time, "i," once per row: 20 million lines take about 0.2 s,
 // where one fprintf or two stream insertions per line take 1.2 s.
-void write_pair_lines(const pair_rows& pairs, io::output_target& out) {
+void write_pair_lines(const pair_rows& pairs, io::output_target& out, bool header) {
     constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
     constexpr std::size_t longest_line = 10 + 1 + 10 + 1;  // two 32-bit indices, ',' and '\n'
     std::vector<char> text(buffer_bytes);
     char* const begin = text.data();
     char* const end = begin + buffer_bytes;
     char* at = begin;
+    if (header) {
+        at = std::copy(io::pair_header.begin(), io::pair_header.end(), at);
+        *at++ = '\n';
+    }
     const std::uint32_t* const js = pairs.js().data();
     for (std::size_t i = 0; i < pairs.rows(); ++i) {
         char prefix[11];
@@ -201,6 +227,7 @@ void print_pairs_help(std::FILE* out) {
                  "usage: obbsat pairs (--rects FILE | --poses FILE)\n"
                  "                    [--against-rects FILE | --against-poses FILE]\n"
                  "                    [--method NAME] [--backend NAME] [--threads N] [--out FILE]\n"
+                 "                    [--header]\n"
                  "\n"
                  "Writes every pair of rectangles that collide (touching counts), one line 'i,j'\n"
                  "per pair, sorted by i then j. i and j are 0-based record numbers (blank and\n"
@@ -227,7 +254,12 @@ void print_pairs_help(std::FILE* out) {
     std::fprintf(out,
                  "\n"
                  "input: the formats of 'obbsat collide' (see 'obbsat collide --help'); poses\n"
-                 "may be 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle', mixed in one file.\n"
+                 "may be 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle', mixed in one file; a first\n"
+                 "line that is the file's header (e.g. cx,cy,hx,hy,c,s) is skipped.\n"
+                 "\n"
+                 "status: on a terminal, standard error shows what is being done once the run\n"
+                 "takes more than a second, and a summary at the end, e.g.\n"
+                 "'obbsat pairs: 1000000 poses, 1996130 pairs, 1.2 s'; elsewhere nothing.\n"
                  "\n"
                  "memory: about 140 bytes per rectangle and 4 per colliding pair at the peak:\n"
                  "a 32-byte record per rectangle (up to 64 while the record array has room to\n"
@@ -284,11 +316,19 @@ int run_pairs(const arguments& args) {
     }
     io::output_target target(out_path);
 
+    io::status_line status("obbsat pairs");
     const io::input_file* second = against_file ? &*against_file : nullptr;
-    const pair_rows pairs = input.kind == store_kind::corners ? pairs_of_files<rect_records>(first_file, second, run)
-                                                              : pairs_of_files<pose_records>(first_file, second, run);
-    write_pair_lines(pairs, target);
+    std::uint64_t records = 0;
+    const pair_rows pairs = input.kind == store_kind::corners
+                                ? pairs_of_files<rect_records>(first_file, second, run, status, records)
+                                : pairs_of_files<pose_records>(first_file, second, run, status, records);
+    if (status.due()) {
+        status.show("writing " + std::to_string(pairs.js().size()) + " pairs");
+    }
+    write_pair_lines(pairs, target, options.has("header"));
     target.commit();
+    status.finish(std::to_string(records) + (input.kind == store_kind::corners ? " rectangles, " : " poses, ") +
+                  std::to_string(pairs.js().size()) + " pairs");
     return exit_success;
 }
 

@@ -106,9 +106,49 @@ std::string field_label(std::size_t index, const char* name) {
     return "field " + std::to_string(index + 1) + " (" + name + ")";
 }
 
+// The common number, read by std::from_chars: a decimal float, or a C99 hex
+// float "0x..." ("-0x...", "0X..."), consumed whole and finite. Anything else
+// (a '+', an infinity, a NaN, a value beyond float range or one that
+// underflows, text that is not a number) returns false and takes the strtof
+// path below, which accepts and refuses exactly as before and gives the
+// precise error. On the forms both read, both round correctly to nearest, so
+// they give the same float; tests/cli/test_csv_input.cpp checks it.
+bool parse_plain_number(std::string_view field, float& out) {
+    const char* const first = field.data();
+    const char* const last = first + field.size();
+    const char* digits = first;
+    const bool negative = digits != last && *digits == '-';
+    if (negative) {
+        ++digits;
+    }
+    float value = 0.0f;
+    std::from_chars_result result{};
+    if (last - digits > 2 && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
+        // from_chars reads hex without its prefix, and would take a sign
+        // after it, which strtof refuses.
+        digits += 2;
+        if (*digits == '-' || *digits == '+') {
+            return false;
+        }
+        result = std::from_chars(digits, last, value, std::chars_format::hex);
+        value = negative ? -value : value;
+    } else {
+        result = std::from_chars(first, last, value);
+    }
+    if (result.ec != std::errc() || result.ptr != last || !std::isfinite(value)) {
+        return false;
+    }
+    out = value;
+    return true;
+}
+
 // The float in `field`, the field at 0-based `index` called `name`: every
 // number of the rectangle and pose files is read here.
 float parse_number(std::string_view field, std::size_t index, const char* name, const line_reader& where) {
+    float plain = 0.0f;
+    if (parse_plain_number(field, plain)) {
+        return plain;
+    }
     if (field.empty()) {
         where.fail(field_label(index, name) + " is empty");
     }
@@ -307,6 +347,87 @@ bool is_skipped_line(std::string_view line) {
     return content.empty() || content.front() == '#';
 }
 
+namespace {
+
+bool equals_ignoring_case(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+        if (lower(a[i]) != lower(b[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// A field that is a column name rather than a number: it starts with a
+// letter, '_' or '"' (a quoted name) and is not a word strtof reads (inf,
+// infinity, nan, nan(...)).
+bool is_name(std::string_view field) {
+    if (field.empty()) {
+        return false;
+    }
+    const char c = field.front();
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '"';
+    if (!letter) {
+        return false;
+    }
+    if (equals_ignoring_case(field, "inf") || equals_ignoring_case(field, "infinity") ||
+        equals_ignoring_case(field, "nan")) {
+        return false;
+    }
+    return !(field.size() >= 4 && equals_ignoring_case(field.substr(0, 4), "nan("));
+}
+
+// Every field of `line` is a name: it was meant as a header.
+bool is_header_attempt(std::string_view line) {
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = line.find(',', start);
+        const std::string_view field =
+            line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+        if (!is_name(trimmed(field))) {
+            return false;
+        }
+        if (comma == std::string_view::npos) {
+            return true;
+        }
+        start = comma + 1;
+    }
+}
+
+std::string header_list(std::initializer_list<std::string_view> headers) {
+    std::string out;
+    std::size_t k = 0;
+    for (const std::string_view h : headers) {
+        out += k == 0 ? "" : (k + 1 == headers.size() ? " or " : ", ");
+        out += "'" + std::string(h) + "'";
+        ++k;
+    }
+    return out;
+}
+
+}  // namespace
+
+bool is_header_line(std::string_view line, const line_reader& where, std::initializer_list<std::string_view> headers,
+                    const char* record_name) {
+    if (where.line_number() != 1) {
+        return false;
+    }
+    for (const std::string_view h : headers) {
+        if (line == h) {
+            return true;
+        }
+    }
+    if (is_header_attempt(line)) {
+        where.fail("expected the header " + header_list(headers) + " or a " + record_name + ", found " +
+                   quoted(line));
+    }
+    return false;
+}
+
 rect parse_rect_line(std::string_view line, const line_reader& where) {
     const auto fields = split_fields<coord_count>(line, where, "ulx,uly,urx,ury,lrx,lry,llx,lly");
     float v[coord_count];
@@ -368,14 +489,20 @@ pair_index parse_pair_line(std::string_view line, const line_reader& where,
 namespace {
 
 // Every record of `lines` parsed by `parse`, into a store of `Store`; `plural`
-// names the records in the error for more than `max_records` of them.
+// names the records in the error for more than `max_records` of them. A first
+// line equal to one of `headers` is skipped; `progress`, if set, hears the
+// count every progress_interval records.
 template <class Store, class Parse>
 Store read_records(line_reader& lines, std::uint64_t max_records, const std::string& plural,
-                   Parse parse) {
+                   std::initializer_list<std::string_view> headers, const char* record_name,
+                   const record_progress& progress, Parse parse) {
     Store store;
     std::string_view line;
     while (lines.next(line)) {
         if (is_skipped_line(line)) {
+            continue;
+        }
+        if (lines.line_number() == 1 && is_header_line(line, lines, headers, record_name)) {
             continue;
         }
         if (store.size() >= max_records) {
@@ -383,22 +510,28 @@ Store read_records(line_reader& lines, std::uint64_t max_records, const std::str
                        plural + " with 32-bit indices");
         }
         store.push_back(parse(line, lines));
+        if (progress && store.size() % progress_interval == 0) {
+            progress(store.size());
+        }
     }
     return store;
 }
 
 }  // namespace
 
-rect_soa read_rects(line_reader& lines, std::uint64_t max_rects) {
-    return read_records<rect_soa>(lines, max_rects, "rectangles", parse_rect_line);
+rect_soa read_rects(line_reader& lines, std::uint64_t max_rects, const record_progress& progress) {
+    return read_records<rect_soa>(lines, max_rects, "rectangles", {rect_header}, "rectangle", progress,
+                                  parse_rect_line);
 }
 
-rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects) {
-    return read_records<rect_records>(lines, max_rects, "rectangles", parse_rect_line);
+rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects, const record_progress& progress) {
+    return read_records<rect_records>(lines, max_rects, "rectangles", {rect_header}, "rectangle", progress,
+                                      parse_rect_line);
 }
 
-pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses) {
-    return read_records<pose_records>(lines, max_poses, "poses", parse_pose_line);
+pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses, const record_progress& progress) {
+    return read_records<pose_records>(lines, max_poses, "poses", {pose_header, pose_angle_header}, "pose",
+                                      progress, parse_pose_line);
 }
 
 rect_soa read_rects_file(const std::string& path) {
@@ -444,6 +577,9 @@ bool pair_reader::read_chunk(std::vector<pair_index>& out, std::size_t max_pairs
             continue;
         }
         if (is_skipped_line(line)) {
+            continue;
+        }
+        if (lines_.line_number() == 1 && is_header_line(line, lines_, {pair_header}, "pair")) {
             continue;
         }
         out.push_back(parse_pair_line(line, lines_, rect_count_, rect_file_));

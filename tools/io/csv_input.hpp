@@ -7,8 +7,14 @@
 //   - A line that is empty or holds only blanks (space, tab) is skipped, and so
 //     is a line whose first non-blank character is '#' (a comment).
 //   - Fields are separated by ','; blanks around a field are ignored.
+//   - Line 1 may be a header naming the columns, exactly one of the headers
+//     below (rect_header, pose_header, pose_angle_header, pair_header); it is
+//     skipped. A line 1 whose every field is a name (starts with a letter, '"' or
+//     '_', and is not inf, infinity, nan or nan(...)) but that is not such a
+//     header is an error naming the headers expected.
 //   - Rectangle file: 8 fields ulx,uly,urx,ury,lrx,lry,llx,lly, each a number
-//     strtof reads completely in the "C" locale (decimal or C99 hex float). A
+//     strtof reads completely in the "C" locale (decimal or C99 hex float; the
+//     common forms are read by std::from_chars, to the same float). A
 //     value that overflows float, or is an infinity or a NaN, is rejected; a
 //     value that rounds to a subnormal or to zero is accepted as rounded.
 //   - Pose file: per line either 6 fields cx,cy,hx,hy,c,s (obbsat/rect_pose.hpp)
@@ -30,12 +36,29 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace obbsat::io {
+
+/// The header line each kind of file may start with; `obbsat gen --header`,
+/// `obbsat pairs --header` and `obbsat collide --header` write them.
+inline constexpr std::string_view rect_header = "ulx,uly,urx,ury,lrx,lry,llx,lly";
+inline constexpr std::string_view pose_header = "cx,cy,hx,hy,c,s";
+/// A pose file may name its fifth column angle instead; both kinds of line
+/// may follow either header.
+inline constexpr std::string_view pose_angle_header = "cx,cy,hx,hy,angle";
+inline constexpr std::string_view pair_header = "i,j";
+/// The header of `obbsat collide --header`'s output (it is read by no reader).
+inline constexpr std::string_view verdict_header = "verdict";
+
+/// Hears how many records a reader has stored, every progress_interval records.
+using record_progress = std::function<void(std::uint64_t records)>;
+inline constexpr std::uint64_t progress_interval = std::uint64_t{1} << 16;
 
 /// A file that cannot be read as the format demands; what() is
 /// "FILE:LINE: reason", or "FILE: reason" when no single line is at fault.
@@ -127,6 +150,13 @@ private:
 /// True iff `line` is blank or a comment, so it holds no record.
 bool is_skipped_line(std::string_view line);
 
+/// True iff `line`, the record line `where` returned last, is line 1 and
+/// equals one of `headers`. Throws input_error if it is line 1 and every field
+/// is a name (a header, but not one of these), naming the headers and the
+/// `record_name` expected.
+bool is_header_line(std::string_view line, const line_reader& where, std::initializer_list<std::string_view> headers,
+                    const char* record_name);
+
 /// The rectangle on one line (8 fields); throws input_error through `where`.
 rect parse_rect_line(std::string_view line, const line_reader& where);
 
@@ -140,15 +170,18 @@ pair_index parse_pair_line(std::string_view line, const line_reader& where,
 
 /// Every rectangle of `lines`, as arrays per coordinate. More than `max_rects`
 /// rectangles is an error (pairs address rectangles with 32-bit indices).
-rect_soa read_rects(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
+rect_soa read_rects(line_reader& lines, std::uint64_t max_rects = UINT32_MAX,
+                    const record_progress& progress = {});
 
 /// Every rectangle of `lines`, as packed records (the faster store for pair
 /// lists, see rect_records.hpp); the same checks as read_rects.
-rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects = UINT32_MAX);
+rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects = UINT32_MAX,
+                               const record_progress& progress = {});
 
 /// Every pose of `lines`, as packed records; more than `max_poses` poses is an
 /// error, as for read_rects.
-pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses = UINT32_MAX);
+pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses = UINT32_MAX,
+                               const record_progress& progress = {});
 
 /// Every rectangle of the file at `path`.
 rect_soa read_rects_file(const std::string& path);

@@ -78,7 +78,7 @@ void pair_search::collect_visits(std::size_t parts) {
             const std::uint32_t high = std::max(strip_hi_[k], low);
             const bool is_near = high != low;
             const std::uint32_t key = ((low + 1) << q_bits) | q_lo_[k];
-            sorted &= (key >= last_key) | !is_near ? 1u : 0u;
+            sorted &= ((key >= last_key) | !is_near) ? 1u : 0u;
             last_key = is_near ? key : last_key;
             *(is_near ? near_keys + v : unused) = key;
             *(is_near ? near_ids + v : unused + 1) = static_cast<std::uint32_t>(k);

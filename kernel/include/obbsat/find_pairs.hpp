@@ -58,6 +58,7 @@ struct find_pairs_stats {
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
     bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
     std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls
+    bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
     double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels

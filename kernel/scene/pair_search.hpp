@@ -39,7 +39,13 @@
 // its verdict on the others is "apart" anyway), tests them, and reads the
 // answer in the caller's order through a permutation kept with them: no
 // sort, no sweep, no output sort. A rectangle that left its widened bounds makes the call a
-// full query again, which builds new candidates. Its state is kept_pairs
+// full query again, which builds new candidates. When the kept candidates
+// answered no call (a miss), keeping pauses: full queries are plain ones,
+// whose bounds pass (probe_motion) checks each box against the last call's
+// bounds widened by the margin; two calm calls in a row resume keeping. A
+// paused query builds its own grid when the last one was made for widened
+// bounds, and takes a repair of the order or a new sort, whichever it last
+// timed cheaper. Its state is kept_pairs
 // (kept_pairs.hpp); its steps are in kept_pairs.cpp (the policy, collect,
 // and keeping the candidates) and kept_answer.cpp (their test and answer).
 #pragma once

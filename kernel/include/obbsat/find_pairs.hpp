@@ -141,7 +141,13 @@ class pair_events;
 /// doubled when the kept pairs served fewer than four calls and halved when
 /// they served more than 64; a full query keeps at most four times the
 /// candidates of the last one plus one pair per box, else it answers as a
-/// plain query. The answer is always the
+/// plain query. Keeping pauses when the kept pairs served no call before a
+/// box left its widened bounds (teleports, fast tumbling, rows that change
+/// places): the calls are then plain queries (stats().kept_paused), whose
+/// bounds pass compares each box's bounds with the last call's widened by
+/// the margin (16 bytes per box; after a failed comparison the next ones
+/// wait up to 16 calls), and keeping resumes after two calls in a row whose
+/// boxes all stayed inside. The answer is always the
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding

@@ -153,8 +153,8 @@ class pair_events;
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding
 /// pairs per rectangle), one bit more per kept pair for each thread past the
 /// first, 29 per rectangle (its bounds, its key, and the repair of the
-/// order), and 8 more per rectangle that changed strips since the last full
-/// query.
+/// order), 8 more per rectangle that changed strips since the last full
+/// query, and 16 per rectangle once keeping has paused (the probe's bounds).
 ///
 /// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
 /// and its find, stats, track_events, began and ended throw invalid_input

@@ -42,6 +42,28 @@ void pair_search::widen(bounds_run& b, std::size_t count) const {
     }
 }
 
+void pair_search::probe_motion(const bounds_run& b, std::size_t first, std::size_t count, bool compare,
+                               unsigned& inside) {
+    // The margin of the next full query that keeps (widen), on this call's
+    // bounds; the comparisons are the refresh's (refresh_records), negated
+    // on the upper side, which is exact.
+    const float margin = static_cast<float>(kept_.margin_share);
+    const float typical = kept_.typical_extent;
+    signed_bounds* const last = kept_.last.data() + first;
+    unsigned in = 1;
+    for (std::size_t r = 0; r < count; ++r) {
+        const float lo_x = b.lo_x[r], lo_y = b.lo_y[r], hi_x = b.hi_x[r], hi_y = b.hi_y[r];
+        if (compare) {
+            const signed_bounds& w = last[r];
+            in &= static_cast<unsigned>(lo_x >= w.v[0]) & static_cast<unsigned>(lo_y >= w.v[1]) &
+                  static_cast<unsigned>(-hi_x >= w.v[2]) & static_cast<unsigned>(-hi_y >= w.v[3]);
+        }
+        const float m = margin * std::max(std::max(hi_x - lo_x, hi_y - lo_y), typical);
+        last[r] = signed_bounds{{lo_x - m, lo_y - m, -(hi_x + m), -(hi_y + m)}};
+    }
+    inside &= in;
+}
+
 void pair_search::input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const {
     const bounds_fn kernel = kernels_for(ran_).bounds;
     std::size_t i = begin;
@@ -66,6 +88,7 @@ void pair_search::input_bounds(const query_input& input, std::size_t begin, std:
 }
 
 void pair_search::measure_extent(const query_input& input, std::size_t parts, bool with_keys) {
+    keys_by_id_fresh_ = with_keys;
     if (with_keys) {
         key_by_id_.resize(n_);
     }
@@ -83,8 +106,19 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
     // row that fails takes no part in anything that follows.
     const bool check_a = !input.a_checked;
     const bool check_b = !input.b_checked;
+    // A paused pair_finder (kept_pairs::paused) probes the motion here, where
+    // the bounds are at hand in the caller's order: each box's bounds against
+    // the last call's widened ones, which this call's then replace.
+    const bool probe = kept_.paused && kept_.probing && !kept_.keep;
+    const bool compare = probe && same_scene_as_last() && kept_.probe_ready && kept_.last.size() == n_;
+    if (probe) {
+        kept_.probe_ready = false;  // until this pass has written every entry
+        kept_.last.resize(n_);
+    }
+    std::vector<unsigned char> inside_all(parts, 1);
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
+        unsigned probe_inside = 1;
         float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
         float height_sum = 0;
         double total = 0;
@@ -101,6 +135,9 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
                 std::uint32_t bits;
                 std::memcpy(&bits, &extent, sizeof bits);
                 extent_exponent[r] = (bits >> 23) & 0xffu;
+            }
+            if (probe) {
+                probe_motion(b, run_begin, run_end - run_begin, compare, probe_inside);
             }
             widen(b, run_end - run_begin);
             for (std::size_t i = run_begin; i < run_end; ++i) {
@@ -123,6 +160,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
             total += static_cast<double>(height_sum);
             height_sum = 0;
         }
+        inside_all[share] = static_cast<unsigned char>(probe_inside);
         partial& p = partials[share];
         p.x_low = clamp_finite(x_low);
         p.x_high = clamp_finite(x_high);
@@ -158,6 +196,17 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         if (2 * seen > n_) {
             median = e;
             break;
+        }
+    }
+    if (probe) {
+        kept_.probe_ready = true;
+        const bool calm = compare && std::find(inside_all.begin(), inside_all.end(), 0) == inside_all.end();
+        kept_.calm_calls = calm ? kept_.calm_calls + 1 : 0;
+        if (compare && !calm) {
+            kept_.probe_skip = kept_.probe_wait;
+            kept_.probe_wait = std::min(std::max<std::size_t>(1, 2 * kept_.probe_wait), max_probe_wait);
+        } else if (calm) {
+            kept_.probe_wait = 0;
         }
     }
     kept_.measured_typical_extent = median > 0 && median < 255 ? std::ldexp(1.0f, median - 127) : 0.0f;

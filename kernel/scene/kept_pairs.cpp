@@ -72,6 +72,19 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             answer_from_kept(parts);
             return pairs_;
         }
+        if (kept_.calls == 0) {
+            // A miss: the kept candidates answered no call, so keeping cost
+            // a full query that keeps and a refresh for nothing. Full
+            // queries keep nothing until the motion is calm again.
+            kept_.paused = true;
+            kept_.probe_ready = false;
+            kept_.calm_calls = 0;
+            kept_.probe_skip = 0;
+            kept_.probe_wait = 0;
+            kept_.repair_seconds = 0;
+            kept_.sort_seconds = 0;
+            kept_.paused_orders = 0;
+        }
     }
     // A full query that keeps its candidates. The margin follows the motion:
     // kept candidates that served only a few calls widen the next ones, and
@@ -89,7 +102,28 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         // The first call on a scene knows no motion yet, and pairs kept from
         // bounds not widened would serve no call after a move: it answers
         // as a plain query, and the next call keeps the pairs of widened bounds.
+        kept_.paused = false;
+        kept_.probe_ready = false;
+        kept_.calm_calls = 0;
         return answer_plainly(input);
+    }
+    if (kept_.paused) {
+        // Keeping is paused: a plain query, whose bounds pass probes the
+        // motion (probe_motion). After calm_calls_to_resume calm calls in a
+        // row the next full query keeps again.
+        kept_.probing = kept_.probe_skip == 0;
+        if (!kept_.probing) {
+            --kept_.probe_skip;
+            kept_.probe_ready = false;  // the next probe has no last bounds to compare with
+        }
+        answer_plainly(input);
+        stats_.kept_paused = true;
+        if (kept_.calm_calls >= calm_calls_to_resume) {
+            kept_.paused = false;
+            kept_.probe_ready = false;
+            kept_.calm_calls = 0;
+        }
+        return pairs_;
     }
     kept_.margin = static_cast<float>(kept_.margin_share);
     kept_.keep = true;

@@ -37,6 +37,27 @@ struct kept_pairs {
     float measured_typical_extent = 0;
     double margin_share = 1.0 / 16;     ///< margin of the next full query that follows motion
     std::size_t calls = 0;              ///< calls answered by the kept candidates
+    /// Set after a miss: kept candidates that answered no call before a box
+    /// left its widened bounds. Full queries then keep nothing (plain queries)
+    /// and probe the motion instead, until it would let keeping pay again.
+    bool paused = false;
+    /// While paused: `last` holds the last call's bounds, widened as a full
+    /// query would widen them, one entry per rectangle in the caller's order.
+    bool probe_ready = false;
+    std::size_t calm_calls = 0;         ///< paused calls in a row whose bounds lay inside the last call's widened ones
+    /// Whether this paused call probes: after a probe that failed, the next
+    /// probe_skip calls do not, and the wait doubles up to max_probe_wait,
+    /// so that a scene that never calms pays for few probes.
+    bool probing = false;
+    std::size_t probe_skip = 0;
+    std::size_t probe_wait = 0;
+    /// While paused: the last time of the bounds and order steps with a
+    /// repair of the order tried, and with the order sorted anew (0: not
+    /// measured); the cheaper is taken, the other measured again now and then.
+    double repair_seconds = 0;
+    double sort_seconds = 0;
+    std::size_t paused_orders = 0;
+    scratch_vector<signed_bounds> last; ///< (lo_x, lo_y, -hi_x, -hi_y) of the last call, widened, in the caller's order
     std::size_t last_candidates = 0;    ///< candidates of the last full query, for the budget of kept ones
 
     // The budget of a full query that keeps its candidates: the pairs it may

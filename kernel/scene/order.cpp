@@ -18,13 +18,17 @@ bool pair_search::same_scene_as_last() const {
 
 void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     // measure_extent computed the keys on the last grid when there was one.
-    const bool keep_grid = same_scene_as_last() && grid_still_fits(grid_, extent_);
+    // A grid made for widened bounds has strips too tall for bounds that
+    // are not: a query that widens nothing makes its own.
+    const bool keep_grid = same_scene_as_last() && grid_still_fits(grid_, extent_) && !grid_too_wide();
     if (!keep_grid) {
         grid_ = grid_for(extent_, n_, strip_factor);
+        grid_widened_ = kept_.keep && kept_.margin > 0.0f;
     }
     keys_.resize(n_);
     order_.resize(n_);
-    stats_.reused_order = keep_grid && repair_order(parts);
+    // The repair needs this query's keys on the last grid (measure_extent).
+    stats_.reused_order = keep_grid && keys_by_id_fresh_ && repair_order(parts);
     if (!stats_.reused_order) {
         run_parts(parts, [&](std::size_t share) {
             const auto [begin, end] = share_of(n_, share, parts);

@@ -8,6 +8,7 @@
 
 #include <obbsat/error.hpp>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -44,9 +45,30 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
     used_parts_ = parts;
     auto start = clock_type::now();
-    measure_extent(input, parts, same_scene_as_last());
+    // Keys on a grid about to be replaced (grid_too_wide) would serve no repair.
+    bool repair = same_scene_as_last() && !grid_too_wide();
+    const bool time_order = repair && kept_.paused;
+    if (time_order) {
+        // A paused pair_finder (kept_pairs::paused) sees rows move far or
+        // change places, where a repair of the order may cost more than a
+        // sort: it takes the one it last timed cheaper, timing the other
+        // every order_retime_period calls.
+        ++kept_.paused_orders;
+        if (kept_.repair_seconds == 0) {
+            repair = true;
+        } else if (kept_.sort_seconds == 0) {
+            repair = false;
+        } else {
+            const bool cheaper = kept_.repair_seconds <= kept_.sort_seconds;
+            repair = kept_.paused_orders % order_retime_period == 0 ? !cheaper : cheaper;
+        }
+    }
+    measure_extent(input, parts, repair);
     order_boxes(input, parts);
     stats_.bounds_seconds = seconds_since(start);
+    if (time_order) {
+        (repair ? kept_.repair_seconds : kept_.sort_seconds) = std::max(stats_.bounds_seconds, 1e-9);
+    }
     start = clock_type::now();
     copy_records(input, parts);
     collect_visits(parts);

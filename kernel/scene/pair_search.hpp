@@ -39,7 +39,13 @@
 // its verdict on the others is "apart" anyway), tests them, and reads the
 // answer in the caller's order through a permutation kept with them: no
 // sort, no sweep, no output sort. A rectangle that left its widened bounds makes the call a
-// full query again, which builds new candidates. Its state is kept_pairs
+// full query again, which builds new candidates. When the kept candidates
+// answered no call (a miss), keeping pauses: full queries are plain ones,
+// whose bounds pass (probe_motion) checks each box against the last call's
+// bounds widened by the margin; two calm calls in a row resume keeping. A
+// paused query builds its own grid when the last one was made for widened
+// bounds, and takes a repair of the order or a new sort, whichever it last
+// timed cheaper. Its state is kept_pairs
 // (kept_pairs.hpp); its steps are in kept_pairs.cpp (the policy, collect,
 // and keeping the candidates) and kept_answer.cpp (their test and answer).
 #pragma once
@@ -135,9 +141,15 @@ private:
     /// Widens `count` bounds by the kept candidates' margin while a query keeps them.
     void widen(bounds_run& b, std::size_t count) const;
     void measure_extent(const query_input& input, std::size_t parts, bool with_keys);
+    /// While keeping is paused: checks `count` bounds of this call, from rectangle `first` in the
+    /// caller's order, against the last call's widened ones (`compare`; clears `inside` if one
+    /// lies outside), and stores them widened for the next call (kept_pairs::last).
+    void probe_motion(const bounds_run& b, std::size_t first, std::size_t count, bool compare, unsigned& inside);
 
     // Step 2, the order (order.cpp) and the records in it (records_copy.cpp).
     bool same_scene_as_last() const;
+    /// The grid was made for widened bounds and this query widens nothing.
+    bool grid_too_wide() const { return grid_widened_ && !(kept_.keep && kept_.margin > 0.0f); }
     void order_boxes(const query_input& input, std::size_t parts);
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
@@ -187,6 +199,7 @@ private:
 
     // The grid and the order of the last query, for the next one.
     strip_grid grid_;
+    bool grid_widened_ = false;  ///< grid_ was made for bounds widened by a margin
     bool have_order_ = false;
     std::size_t ordered_n_ = 0;
     std::size_t ordered_a_count_ = 0;
@@ -195,6 +208,7 @@ private:
 
     bounds_extent extent_{};
     scratch_vector<std::uint32_t> key_by_id_;  ///< on the last grid, in the caller's order (repeat queries)
+    bool keys_by_id_fresh_ = false;            ///< key_by_id_ holds this query's keys, so the order may be repaired
 
     // The query's order: keys_ sorted, order_[k] the caller's index of rectangle k.
     scratch_vector<std::uint32_t> keys_, order_;

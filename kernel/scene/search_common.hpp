@@ -22,6 +22,16 @@ static_assert(candidate_block <= pair_blocks::block_pairs, "a block of candidate
 /// widened bounds would give more is answered as a plain query.
 constexpr std::size_t kept_budget_factor = 4;
 
+/// A pair_finder whose keeping is paused (kept_pairs::paused) keeps again
+/// after this many calls in a row whose bounds all lay inside the last
+/// call's bounds widened by the margin a full query would use.
+constexpr std::size_t calm_calls_to_resume = 2;
+/// The most calls a paused pair_finder lets pass without probing after a failed probe.
+constexpr std::size_t max_probe_wait = 16;
+/// A paused pair_finder times the order step the other way (repaired or
+/// sorted anew) than the cheaper one every this many calls.
+constexpr std::size_t order_retime_period = 8;
+
 /// The most found pairs a part of a streaming query holds, and so hands to
 /// the sink at once (find_pairs.hpp).
 constexpr std::size_t emit_block = 4096;

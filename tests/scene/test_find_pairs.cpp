@@ -555,7 +555,7 @@ TEST(pair_finder, a_repaired_order_with_boxes_that_changed_strips_answers_as_a_f
             const obbsat::pose_records store(poses);
             const std::vector<pair_index> got = finder.find(store);
             EXPECT_SAME_PAIRS(got, obbsat::find_pairs(store, options_for(method::exact))) << "frame " << frame;
-            if (frame >= 5) {
+            if (frame >= 1) {
                 full += finder.stats().reused_candidates ? 0u : 1u;
                 repaired += finder.stats().reused_order ? 1u : 0u;
             }
@@ -564,8 +564,11 @@ TEST(pair_finder, a_repaired_order_with_boxes_that_changed_strips_answers_as_a_f
                 p.center.y += random.uniform(-1.5f, 1.5f);
             }
         }
-        EXPECT_EQ(full, 5u);
-        EXPECT_EQ(repaired, 5u);
+        // Every frame is a full query. The second call (which keeps) and the
+        // third (the miss that pauses keeping) repair the order; later paused
+        // calls take a repair or a new sort, whichever they timed cheaper.
+        EXPECT_EQ(full, 9u);
+        EXPECT_GE(repaired, 2u);
     }
 }
 
@@ -590,6 +593,10 @@ TEST(pair_finder, kept_candidates_answer_as_a_fresh_query_in_every_scene_and_met
                     rebuilt += finder.stats().reused_candidates ? 0u : 1u;
                     if (f == 0) {
                         // The first call answers as a plain query and keeps nothing.
+                        EXPECT_FALSE(finder.stats().reused_candidates);
+                        EXPECT_EQ(finder.stats().kept_candidates, 0u);
+                    } else if (finder.stats().kept_paused) {
+                        // Keeping paused after a miss: a plain query that keeps nothing.
                         EXPECT_FALSE(finder.stats().reused_candidates);
                         EXPECT_EQ(finder.stats().kept_candidates, 0u);
                     } else {

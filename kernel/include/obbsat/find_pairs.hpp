@@ -58,6 +58,7 @@ struct find_pairs_stats {
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
     bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
     std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls
+    bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
     double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
@@ -140,14 +141,20 @@ class pair_events;
 /// doubled when the kept pairs served fewer than four calls and halved when
 /// they served more than 64; a full query keeps at most four times the
 /// candidates of the last one plus one pair per box, else it answers as a
-/// plain query. The answer is always the
+/// plain query. Keeping pauses when the kept pairs served no call before a
+/// box left its widened bounds (teleports, fast tumbling, rows that change
+/// places): the calls are then plain queries (stats().kept_paused), whose
+/// bounds pass compares each box's bounds with the last call's widened by
+/// the margin (16 bytes per box; after a failed comparison the next ones
+/// wait up to 16 calls), and keeping resumes after two calls in a row whose
+/// boxes all stayed inside. The answer is always the
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding
 /// pairs per rectangle), one bit more per kept pair for each thread past the
 /// first, 29 per rectangle (its bounds, its key, and the repair of the
-/// order), and 8 more per rectangle that changed strips since the last full
-/// query.
+/// order), 8 more per rectangle that changed strips since the last full
+/// query, and 16 per rectangle once keeping has paused (the probe's bounds).
 ///
 /// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
 /// and its find, stats, track_events, began and ended throw invalid_input

@@ -76,14 +76,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             // A miss: the kept candidates answered no call, so keeping cost
             // a full query that keeps and a refresh for nothing. Full
             // queries keep nothing until the motion is calm again.
-            kept_.paused = true;
-            kept_.probe_ready = false;
-            kept_.calm_calls = 0;
-            kept_.probe_skip = 0;
-            kept_.probe_wait = 0;
-            kept_.repair_seconds = 0;
-            kept_.sort_seconds = 0;
-            kept_.paused_orders = 0;
+            kept_.pause();
         }
     }
     // A full query that keeps its candidates. The margin follows the motion:
@@ -102,9 +95,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         // The first call on a scene knows no motion yet, and pairs kept from
         // bounds not widened would serve no call after a move: it answers
         // as a plain query, and the next call keeps the pairs of widened bounds.
-        kept_.paused = false;
-        kept_.probe_ready = false;
-        kept_.calm_calls = 0;
+        kept_.resume();
         return answer_plainly(input);
     }
     if (kept_.paused) {
@@ -119,9 +110,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         answer_plainly(input);
         stats_.kept_paused = true;
         if (kept_.calm_calls >= calm_calls_to_resume) {
-            kept_.paused = false;
-            kept_.probe_ready = false;
-            kept_.calm_calls = 0;
+            kept_.resume();
         }
         return pairs_;
     }

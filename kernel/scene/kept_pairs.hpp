@@ -58,6 +58,24 @@ struct kept_pairs {
     double sort_seconds = 0;
     std::size_t paused_orders = 0;
     scratch_vector<signed_bounds> last; ///< (lo_x, lo_y, -hi_x, -hi_y) of the last call, widened, in the caller's order
+
+    /// After a miss: keeping pauses, with no probe, wait or order timing yet.
+    void pause() {
+        paused = true;
+        probe_ready = false;
+        calm_calls = 0;
+        probe_skip = 0;
+        probe_wait = 0;
+        repair_seconds = 0;
+        sort_seconds = 0;
+        paused_orders = 0;
+    }
+    /// The next full query keeps again (calm motion, or a new scene).
+    void resume() {
+        paused = false;
+        probe_ready = false;
+        calm_calls = 0;
+    }
     std::size_t last_candidates = 0;    ///< candidates of the last full query, for the budget of kept ones
 
     // The budget of a full query that keeps its candidates: the pairs it may

@@ -34,6 +34,7 @@ array([ True, False])
 array([ True, False])
 """
 
+import operator as _operator
 import numpy as _np
 
 from . import _core, testing
@@ -79,8 +80,13 @@ def _backend(backend):
 
 
 def _threads(threads):
-    """``threads`` as an int, refused (``ValueError``) outside 0 .. 2**32 - 1."""
-    value = int(threads)
+    """``threads`` as an int: a whole number (``TypeError`` for a float or a
+    string, as the compiled calls refuse them), refused (``ValueError``)
+    outside 0 .. 2**32 - 1."""
+    try:
+        value = _operator.index(threads)
+    except TypeError:
+        raise TypeError(f"threads must be a whole number, not {type(threads).__name__}") from None
     if not 0 <= value <= _MAX_THREADS:
         raise ValueError(f"threads must be >= 0 and <= {_MAX_THREADS} (0 means every core), not {value}")
     return value

@@ -135,6 +135,18 @@ def test_threads_out_of_range_are_refused(call, threads):
     assert (out == 0xA5).all()
 
 
+@pytest.mark.parametrize("threads", [2.0, 2.5, "2"])
+@pytest.mark.parametrize("call", sorted(threads_calls()))
+def test_threads_that_are_not_whole_numbers_are_refused(call, threads):
+    out = np.full(len(PAIRS), 0xA5, dtype=np.uint8)
+    with pytest.raises(TypeError, match="threads must be a whole number"):
+        if call == "collide":
+            obbsat.collide(RECTS, PAIRS, threads=threads, out=out)
+        else:
+            threads_calls()[call](threads)
+    assert (out == 0xA5).all()
+
+
 @pytest.mark.parametrize("threads", OUT_OF_RANGE)
 def test_threads_out_of_range_are_refused_by_obbsat_dask(threads):
     da, odask = dask_modules()

@@ -5,7 +5,10 @@
 // calling thread runs part 0; a run started while another holds the pool (a
 // part that runs a batch of its own, or a second thread) runs its parts one
 // after another on the calling thread. The header asks that a task not throw:
-// nothing is promised for one that does, so nothing is tested.
+// nothing is promised for one that does, so nothing is tested. Workers a run
+// does not use are neither woken nor left polling by it, and a worker that
+// ran a part goes to sleep soon after (the pool's counters of wake-ups and
+// polls, and of workers awake).
 #include "support/thread_pool.hpp"
 
 #include <gtest/gtest.h>

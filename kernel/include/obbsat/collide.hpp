@@ -27,10 +27,10 @@ namespace obbsat {
 struct collide_options {
     method test = method::sat4;           ///< which collision test
     backend use = backend::automatic;     ///< which instruction set (see backend.hpp)
-    /// Threads to split one call over; 0 means one per hardware thread. Each
-    /// parallel step cuts its work into a few units per thread, and each
-    /// thread takes the next unit as it comes free, so a thread on a busy core
-    /// takes fewer. With an executor: how many threads its units are cut for.
+    /// Threads to split one call over; 0 means one per hardware thread. The
+    /// steps that split finely cut their work into a few units per thread,
+    /// each taken by the next thread free, so a thread on a busy core takes
+    /// fewer. With an executor: how many threads its units are cut for.
     unsigned threads = 1;
     /// When set, receives how many pairs were decided on the exact slow path
     /// (method exact only; 0 for the others).

@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
     try {
         obbsat_bench::register_scene_benchmarks();
         obbsat_bench::register_floor_benchmarks();
+        obbsat_bench::register_busy_core_benchmarks();
         obbsat_bench::register_engine_benchmarks();
         obbsat_bench::register_grid_scene_peer();
 #if OBBSAT_BENCH_WITH_BOX2D

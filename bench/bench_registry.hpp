@@ -41,6 +41,10 @@ void register_engine_benchmarks();
 /// the answer written out, on the scene of scene/exact/poses (bench_engine.cpp).
 void register_floor_benchmarks();
 
+/// busy_core/local/poses/boxes:1000000/sizes:uniform/threads:<1|2>/spinner:<off|on>:
+/// find_pairs with and without a thread spinning on one core (bench_busy_core.cpp).
+void register_busy_core_benchmarks();
+
 /// peer_scene/grid/<tail> and peer_frame/grid/<tail>: a uniform grid, then obbsat's exact narrowphase.
 void register_grid_scene_peer();
 

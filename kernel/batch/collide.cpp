@@ -3,6 +3,7 @@
 #include "store/finite_check.hpp"
 #include "methods/method_check.hpp"
 #include "store/pose_record.hpp"
+#include "support/executor_scope.hpp"
 #include "support/work_shares.hpp"
 
 #include <obbsat/collide.hpp>
@@ -22,13 +23,18 @@ namespace {
 // saves (a wake-up is a few microseconds; a pair is a few nanoseconds).
 constexpr std::size_t min_pairs_per_part = 8192;
 
-// Parts start on multiples of this, so every part but the last fills whole
+// Below this many pairs, a unit taken as it comes costs more (its share of
+// the counter and of the cache lines at its ends) than it could save.
+constexpr std::size_t min_pairs_per_unit = 4096;
+
+// Units start on multiples of this, so every unit but the last fills whole
 // vectors of the widest backend.
 constexpr std::size_t part_alignment = 64;
 
-/// Runs body(begin, end) over [0, count) split into aligned ranges, one per
-/// part; body returns how many pairs it settled exactly, and the sum is
-/// reported through options.slow_path_pairs.
+/// Runs body(begin, end) over [0, count) split into aligned units, a few per
+/// thread, each taken by the next thread free (work_shares.hpp); body returns
+/// how many pairs it settled exactly, and the sum is reported through
+/// options.slow_path_pairs. With an executor the units run on it.
 template <class Body>
 void split_over_threads(std::size_t count, const collide_options& options, const Body& body) {
     const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
@@ -36,14 +42,16 @@ void split_over_threads(std::size_t count, const collide_options& options, const
     if (parts <= 1) {
         settled = body(std::size_t{0}, count);  // no vector of one: a small batch allocates nothing
     } else {
-        std::vector<std::size_t> settled_per_part(parts, 0);
-        detail::run_parts(parts, [&](std::size_t part) {
-            const auto [begin, end] = detail::aligned_share_of(count, part, parts, part_alignment);
+        const detail::executor_scope scope(options.executor);
+        const std::size_t units = detail::units_for(count, parts, min_pairs_per_unit);
+        std::vector<std::size_t> settled_per_unit(units, 0);
+        detail::run_units(units, parts, [&](std::size_t unit) {
+            const auto [begin, end] = detail::aligned_share_of(count, unit, units, part_alignment);
             if (begin < end) {
-                settled_per_part[part] = body(begin, end);
+                settled_per_unit[unit] = body(begin, end);
             }
         });
-        for (const std::size_t s : settled_per_part) {
+        for (const std::size_t s : settled_per_unit) {
             settled += s;
         }
     }
@@ -63,6 +71,7 @@ void check_indices(backend ran, std::size_t rect_count, const pair_index* pairs,
     if (parts <= 1) {
         largest = largest_index(pairs, count);
     } else {
+        const detail::executor_scope scope(options.executor);
         std::vector<std::uint32_t> part_largest(parts, 0);
         detail::run_parts(parts, [&](std::size_t part) {
             const auto [begin, end] = detail::share_of(count, part, parts);
@@ -139,6 +148,7 @@ void require_all_finite(const rect* rects, std::size_t count, const collide_opti
     if (parts <= 1) {
         finite = all_finite(rects, 0, count);
     } else {
+        const detail::executor_scope scope(options.executor);
         std::vector<unsigned char> part_finite(parts, 1);
         detail::run_parts(parts, [&](std::size_t part) {
             const auto [begin, end] = detail::share_of(count, part, parts);

@@ -101,7 +101,10 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
         std::array<std::uint32_t, 256> exponents{};  ///< of the boxes' larger extents, before widening
     };
-    std::vector<partial> partials(parts);
+    // Units taken as they come (work_shares.hpp); each keeps its own partial
+    // results, combined in unit order, so none depends on the threads.
+    const std::size_t units = units_for(n_, parts, min_boxes_per_unit);
+    std::vector<partial> partials(units);
     // Rows the caller's memory holds are checked here, as they are read; a
     // row that fails takes no part in anything that follows.
     const bool check_a = !input.a_checked;
@@ -115,15 +118,15 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         kept_.probe_ready = false;  // until this pass has written every entry
         kept_.last.resize(n_);
     }
-    std::vector<unsigned char> inside_all(parts, 1);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    std::vector<unsigned char> inside_all(units, 1);
+    run_units(units, parts, [&](std::size_t unit) {
+        const auto [begin, end] = share_of(n_, unit, units);
         unsigned probe_inside = 1;
         float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
         float height_sum = 0;
         double total = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
-        std::array<std::uint32_t, 256>& exponents = partials[share].exponents;
+        std::array<std::uint32_t, 256>& exponents = partials[unit].exponents;
         // Heights are summed in float over runs and in double across them.
         bounds_run b;
         std::uint32_t extent_exponent[bounds_run::size];
@@ -160,8 +163,8 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
             total += static_cast<double>(height_sum);
             height_sum = 0;
         }
-        inside_all[share] = static_cast<unsigned char>(probe_inside);
-        partial& p = partials[share];
+        inside_all[unit] = static_cast<unsigned char>(probe_inside);
+        partial& p = partials[unit];
         p.x_low = clamp_finite(x_low);
         p.x_high = clamp_finite(x_high);
         p.y_low = clamp_finite(y_low);
@@ -171,7 +174,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
     });
     for (const partial& p : partials) {
         if (p.first_bad != std::numeric_limits<std::size_t>::max()) {
-            refuse_row(input, p.first_bad);  // parts are in order: the first bad row of all
+            refuse_row(input, p.first_bad);  // units are in order: the first bad row of all
         }
     }
     partial all;

@@ -1,5 +1,6 @@
 #include "scene/pair_events.hpp"
 #include "scene/pair_search.hpp"
+#include "support/executor_scope.hpp"
 
 #include <obbsat/error.hpp>
 #include <obbsat/find_pairs.hpp>
@@ -61,21 +62,25 @@ detail::query_input input_of(const box_view& a, const box_view* b) {
 }  // namespace
 
 std::vector<pair_index> find_pairs(box_view boxes, const collide_options& options) {
+    const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
     return search.collect_once(input_of(boxes, nullptr));
 }
 
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options) {
+    const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
     return search.collect_once(input_of(a, &b));
 }
 
 void find_pairs_each(box_view boxes, const collide_options& options, const pair_chunk_sink& sink) {
+    const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
     search.run(input_of(boxes, nullptr), sink);
 }
 
 void find_pairs_each(box_view a, box_view b, const collide_options& options, const pair_chunk_sink& sink) {
+    const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
     search.run(input_of(a, &b), sink);
 }
@@ -101,7 +106,9 @@ detail::pair_search& engine_of(const std::unique_ptr<detail::pair_search>& searc
 }  // namespace
 
 const std::vector<pair_index>& pair_finder::find(box_view boxes) {
-    const std::vector<pair_index>& found = engine_of(search_, "find").collect(input_of(boxes, nullptr));
+    detail::pair_search& search = engine_of(search_, "find");
+    const detail::executor_scope scope(search.caller_executor());
+    const std::vector<pair_index>& found = search.collect(input_of(boxes, nullptr));
     if (events_) {
         events_->update(found, false);
     }
@@ -109,7 +116,9 @@ const std::vector<pair_index>& pair_finder::find(box_view boxes) {
 }
 
 const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
-    const std::vector<pair_index>& found = engine_of(search_, "find").collect(input_of(a, &b));
+    detail::pair_search& search = engine_of(search_, "find");
+    const detail::executor_scope scope(search.caller_executor());
+    const std::vector<pair_index>& found = search.collect(input_of(a, &b));
     if (events_) {
         events_->update(found, true);
     }

@@ -3,6 +3,7 @@
 
 #include "scene/search_common.hpp"
 #include "sort/pair_sort.hpp"
+#include "support/work_shares.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -12,11 +13,17 @@ namespace obbsat::detail {
 
 void pair_search::sort_found() {
     const auto start = clock_type::now();
-    std::vector<pair_source<pair_index>> sources;
+    // The sweep's units, in unit order, as one source per thread: sort_pairs
+    // runs one share of its scatter per source. Pairs are unique, so the
+    // sorted answer does not depend on how units are grouped.
+    const std::size_t parts =
+        std::max<std::size_t>(1, std::min(used_parts_, parts_for(n_, options_.threads, min_boxes_per_part)));
+    std::vector<pair_source<pair_index>> sources(parts);
     for (std::size_t i = 0; i < used_parts_; ++i) {
-        sources.push_back(parts_[i].found.spans());
+        const pair_source<pair_index> spans = parts_[i].found.spans();
+        pair_source<pair_index>& into = sources[i * parts / used_parts_];
+        into.insert(into.end(), spans.begin(), spans.end());
     }
-    const std::size_t parts = std::max<std::size_t>(1, sources.size());
     if (sort_scratch_.size() < parts) {
         sort_scratch_.resize(parts);
     }

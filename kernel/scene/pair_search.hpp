@@ -92,6 +92,10 @@ public:
 
     const find_pairs_stats& stats() const { return stats_; }
 
+    /// The caller's executor (collide_options::executor), or nullptr; the
+    /// public entry points put it in scope (support/executor_scope.hpp).
+    const executor* caller_executor() const { return options_.executor; }
+
 private:
     /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
     friend struct pair_search_test_access;
@@ -99,7 +103,9 @@ private:
     struct record {
         float v[8];
     };
-    /// One thread's share of the sweep and its working memory.
+    /// One unit of the sweep (a run of strips, work_shares.hpp), what it
+    /// found and its working memory; for a query that keeps its candidates,
+    /// one thread's share.
     struct part {
         std::uint32_t first_strip = 0;
         std::uint32_t end_strip = 0;
@@ -232,7 +238,7 @@ private:
     scratch_vector<std::uint32_t> near_keys_, near_ids_;  ///< visits to the strip above, before the merge (when there are far ones)
 
     std::vector<part> parts_;
-    std::size_t used_parts_ = 0;  ///< parts of the last query; their found pairs are its answer
+    std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 

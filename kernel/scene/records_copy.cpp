@@ -24,8 +24,9 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
         kept_.now.resize(n_);
     }
     const bounds_fn bounds = kernels_for(ran_).bounds;
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    const std::size_t units = units_for(n_, parts, min_boxes_per_unit);  // taken as they come
+    run_units(units, parts, [&](std::size_t unit) {
+        const auto [begin, end] = share_of(n_, unit, units);
         constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
         for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {

@@ -40,6 +40,12 @@ static_assert(candidate_block <= emit_block, "a flush of candidates fits in a ch
 /// Below this many rectangles per part, a second core costs more than it saves.
 constexpr std::size_t min_boxes_per_part = 16384;
 
+/// Below this many rectangles (or strip entries) per unit taken as it comes
+/// (work_shares.hpp), a unit's setup (its buffers, its strips' edges, its
+/// counter) costs more than the balance it buys.
+constexpr std::size_t min_boxes_per_unit = 4096;
+constexpr std::size_t min_entries_per_unit = min_boxes_per_unit;
+
 using clock_type = std::chrono::steady_clock;
 
 inline double seconds_since(clock_type::time_point start) {

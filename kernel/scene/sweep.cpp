@@ -165,18 +165,25 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& af
 }
 
 void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
-    // Strips split so that each part has about the same number of entries.
+    // The strips are cut into units of about the same number of entries, a
+    // few per thread, each taken by the next thread free (work_shares.hpp):
+    // a thread slowed by other work on its core sweeps fewer. Each unit
+    // keeps what it finds (parts_[unit]), so nothing depends on which thread
+    // swept it. A query that keeps its candidates (pair_finder) keeps them
+    // per thread's share (kept_share), one unit a share.
     const std::uint32_t strips = grid_.strips;
     const std::size_t entries = n_ + stats_.visits;
-    if (parts_.size() < parts) {
-        parts_.resize(parts);
+    const std::size_t units = kept_.keep ? parts : units_for(entries, parts, min_entries_per_unit);
+    if (parts_.size() < units) {
+        parts_.resize(units);
     }
+    used_parts_ = units;
     std::uint32_t s = 0;
-    for (std::size_t i = 0; i < parts; ++i) {
+    for (std::size_t i = 0; i < units; ++i) {
         part& p = parts_[i];
         p.first_strip = s;
-        const std::size_t target = entries * (i + 1) / parts;
-        while (s < strips && (i + 1 == parts || own_begin_[s] + visit_begin_[s] < target)) {
+        const std::size_t target = entries * (i + 1) / units;
+        while (s < strips && (i + 1 == units || own_begin_[s] + visit_begin_[s] < target)) {
             ++s;
         }
         p.end_strip = s;
@@ -193,13 +200,13 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
         p.kernel_seconds = 0;
     }
     kept_.capture_budget = kept_.margin > 0.0f
-                               ? kept_budget_factor * kept_.last_candidates + n_ + parts * candidate_block
+                               ? kept_budget_factor * kept_.last_candidates + n_ + units * candidate_block
                                : std::numeric_limits<std::size_t>::max();
     kept_.captured_all.store(0, std::memory_order_relaxed);
     std::mutex emit_mutex;
-    std::vector<std::exception_ptr> failures(parts);
+    std::vector<std::exception_ptr> failures(units);
     std::atomic<bool> failed{false};
-    run_parts(parts, [&](std::size_t index) {
+    run_units(units, parts, [&](std::size_t index) {
         part& p = parts_[index];
         try {
             // Pairs are found only by a flush, at most candidate_block at a
@@ -235,7 +242,7 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
             std::rethrow_exception(failure);
         }
     }
-    for (std::size_t i = 0; i < parts; ++i) {
+    for (std::size_t i = 0; i < units; ++i) {
         stats_.candidates += parts_[i].tested;
         stats_.slow_path_pairs += parts_[i].slow_path;
         stats_.kernel_seconds += parts_[i].kernel_seconds;

@@ -2,7 +2,7 @@
 
 #include "support/bit_width.hpp"
 #include "support/huge_pages.hpp"
-#include "support/thread_pool.hpp"
+#include "support/work_shares.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -103,7 +103,7 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
         if (parts <= 1) {
             task(0);
         } else {
-            thread_pool::shared().run(parts, task);
+            run_parts(parts, task);
         }
     };
     const unsigned a_bits = bits_for(a_count > 0 ? a_count - 1 : 0);

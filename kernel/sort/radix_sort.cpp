@@ -1,6 +1,6 @@
 #include "sort/radix_sort.hpp"
 
-#include "support/thread_pool.hpp"
+#include "support/work_shares.hpp"
 
 #include <algorithm>
 #include <array>
@@ -34,7 +34,7 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         if (parts == 1) {
             task(0);
         } else {
-            thread_pool::shared().run(parts, task);
+            run_parts(parts, task);
         }
     };
     const auto begin_of = [n, parts](std::size_t part) { return n * part / parts; };
@@ -141,7 +141,7 @@ void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, st
         std::copy(b_keys + j, b_keys + j_end, out_keys + out);
         std::copy(b_values + j, b_values + j_end, out_values + out);
     };
-    thread_pool::shared().run(shares, merge_share);  // on this thread alone for one share
+    run_parts(shares, merge_share);  // on this thread alone for one share
 }
 
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,

@@ -1,15 +1,16 @@
 #include "support/thread_pool.hpp"
 
 #include <chrono>
+#include <limits>
 
 namespace obbsat::detail {
 
 namespace {
 
-// How long a worker keeps polling for the next batch, and the caller for the
-// end of this one, before sleeping.
-constexpr std::chrono::microseconds worker_spin{500};
-constexpr std::chrono::microseconds caller_spin{2000};
+// How long a worker that has just run a part keeps polling for the next
+// batch, and the caller for the end of this one, before sleeping.
+constexpr std::chrono::microseconds worker_poll{300};
+constexpr std::chrono::microseconds caller_poll{2000};
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -17,20 +18,28 @@ inline void relax() {
 #endif
 }
 
-// Polls `done` until it holds or `budget` has passed; true if it holds.
+// Polls `done` until it holds or `budget` has passed; true if it holds. Every
+// few dozen polls it yields, so that on a core shared with other work (more
+// threads than cores) the poll takes little from the thread it waits for.
 template <class Done>
-bool spin_until(const Done& done, std::chrono::microseconds budget) {
+bool poll_until(const Done& done, std::chrono::microseconds budget) {
     const auto deadline = std::chrono::steady_clock::now() + budget;
-    for (unsigned k = 0;; ++k) {
+    for (unsigned k = 1;; ++k) {
         if (done()) {
             return true;
         }
-        if ((k & 63u) == 0 && std::chrono::steady_clock::now() > deadline) {
-            return done();
+        if ((k & 63u) == 0) {
+            if (std::chrono::steady_clock::now() > deadline) {
+                return done();
+            }
+            std::this_thread::yield();
         }
         relax();
     }
 }
+
+constexpr std::uint64_t generation_of(std::uint64_t batch) { return batch >> 32; }
+constexpr std::uint64_t parts_of(std::uint64_t batch) { return batch & 0xffffffffu; }
 
 // True on a thread while it runs a part of a batch (a worker, always; the
 // caller, during its part 0). A run started there runs its parts in turn on
@@ -49,39 +58,80 @@ thread_pool::~thread_pool() {
     {
         std::lock_guard<std::mutex> lock(state_);
         stopping_.store(true, std::memory_order_release);
+        for (auto& w : workers_) {
+            w->wake.notify_one();
+        }
     }
-    wake_.notify_all();
     for (auto& w : workers_) {
-        w.join();
+        w->thread.join();
     }
+}
+
+std::size_t thread_pool::workers() const {
+    std::lock_guard<std::mutex> lock(state_);
+    return workers_.size();
 }
 
 void thread_pool::grow_to(std::size_t workers) {
+    // Under state_, before the next batch is published: a new worker has
+    // seen every batch so far, none of which had a part for it.
+    const std::uint64_t seen = generation_of(batch_.load(std::memory_order_relaxed));
     while (workers_.size() < workers) {
         const std::size_t part = workers_.size() + 1;  // part 0 is the caller's
-        workers_.emplace_back([this, part] { worker_loop(part); });
+        workers_.push_back(std::make_unique<worker>());
+        worker& w = *workers_.back();
+        awake_.fetch_add(1);
+        w.thread = std::thread([this, &w, part, seen] { worker_loop(w, part, seen); });
     }
 }
 
-void thread_pool::worker_loop(std::size_t part) {
+void thread_pool::worker_loop(worker& self, std::size_t part, std::uint64_t seen) {
     running_a_part = true;
-    std::uint64_t seen = 0;
+    bool just_ran = false;
     for (;;) {
-        auto new_batch = [&] {
-            return stopping_.load(std::memory_order_acquire) ||
-                   generation_.load(std::memory_order_acquire) != seen;
+        // True once a batch has started since the last one seen (or the
+        // pool stops); has_part says whether it has a part for this worker.
+        bool has_part = false;
+        const auto news = [&] {
+            if (stopping_.load(std::memory_order_acquire)) {
+                return true;
+            }
+            const std::uint64_t batch = batch_.load(std::memory_order_acquire);
+            if (generation_of(batch) == seen) {
+                return false;
+            }
+            seen = generation_of(batch);
+            has_part = part < parts_of(batch);
+            return true;
         };
-        if (!spin_until(new_batch, worker_spin)) {
+        // Only a worker that took part in the last batch polls for the next:
+        // one the batches have stopped using sleeps at once, and is woken
+        // only by a batch with a part for it.
+        bool ready = false;
+        if (just_ran) {
+            polls_started_.fetch_add(1, std::memory_order_relaxed);
+            ready = poll_until(news, worker_poll);
+        }
+        if (!ready) {
             std::unique_lock<std::mutex> lock(state_);
-            wake_.wait(lock, new_batch);
+            self.asleep = true;
+            awake_.fetch_sub(1);
+            self.wake.wait(lock, news);
+            self.asleep = false;
+            awake_.fetch_add(1);
         }
         if (stopping_.load(std::memory_order_acquire)) {
+            awake_.fetch_sub(1);
             return;
         }
-        seen = generation_.load(std::memory_order_acquire);
-        if (part >= parts_.load(std::memory_order_relaxed)) {
+        just_ran = has_part;
+        if (!has_part) {
             continue;
         }
+        if (!ready) {
+            wake_ups_.fetch_add(1, std::memory_order_relaxed);
+        }
+        // This batch cannot end before this part has: task_ is still its own.
         (*task_.load(std::memory_order_relaxed))(part);
         if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
             // Taking the lock orders this notify after a caller that found
@@ -94,7 +144,7 @@ void thread_pool::worker_loop(std::size_t part) {
 
 void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>& task) {
     std::unique_lock<std::mutex> owner;
-    if (parts > 1 && !running_a_part) {
+    if (parts > 1 && !running_a_part && parts <= std::numeric_limits<std::uint32_t>::max()) {
         owner = std::unique_lock<std::mutex>(batch_owner_, std::try_to_lock);
     }
     if (!owner.owns_lock()) {
@@ -107,16 +157,21 @@ void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>&
         std::lock_guard<std::mutex> lock(state_);
         grow_to(parts - 1);
         task_.store(&task, std::memory_order_relaxed);
-        parts_.store(parts, std::memory_order_relaxed);
         unfinished_.store(parts - 1, std::memory_order_relaxed);
-        generation_.fetch_add(1, std::memory_order_release);
+        const std::uint64_t generation = generation_of(batch_.load(std::memory_order_relaxed)) + 1;
+        batch_.store((generation << 32) | parts, std::memory_order_release);
+        // Only the workers with a part are woken; a polling one sees the batch itself.
+        for (std::size_t w = 0; w + 1 < parts; ++w) {
+            if (workers_[w]->asleep) {
+                workers_[w]->wake.notify_one();
+            }
+        }
     }
-    wake_.notify_all();
     running_a_part = true;
     task(0);
     running_a_part = false;
     auto all_done = [&] { return unfinished_.load(std::memory_order_acquire) == 0; };
-    if (!spin_until(all_done, caller_spin)) {
+    if (!poll_until(all_done, caller_poll)) {
         std::unique_lock<std::mutex> lock(state_);
         finished_.wait(lock, all_done);
     }

@@ -5,7 +5,10 @@
 // calling thread runs part 0; a run started while another holds the pool (a
 // part that runs a batch of its own, or a second thread) runs its parts one
 // after another on the calling thread. The header asks that a task not throw:
-// nothing is promised for one that does, so nothing is tested.
+// nothing is promised for one that does, so nothing is tested. Workers a run
+// does not use are neither woken nor left polling by it, and a worker that
+// ran a part goes to sleep soon after (the pool's counters of wake-ups and
+// polls, and of workers awake).
 #include "support/thread_pool.hpp"
 
 #include <gtest/gtest.h>
@@ -174,12 +177,49 @@ TEST(thread_pool, shared_is_one_pool) {
     EXPECT_EQ(from_other_thread, &thread_pool::shared());
 }
 
-// Last: the pool keeps every worker it ever started, and many spinning
-// workers would slow the tests after this one when they share its process.
 TEST(thread_pool, many_more_parts_than_cores_run_every_part_once) {
     for (const std::size_t parts : {16u, 64u, 3u, 64u}) {
         expect_each_part_once(parts, "many parts");
     }
+}
+
+/// Waits (at most ten seconds) until every worker of the pool sleeps; true if they all do.
+bool all_workers_asleep_within_ten_seconds() {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (thread_pool::shared().awake_workers() != 0) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return true;
+}
+
+TEST(thread_pool, after_a_run_on_many_threads_a_run_on_two_wakes_and_polls_with_one_worker_only) {
+    // The pool keeps every worker it ever started; those the later, smaller
+    // runs do not use must neither be woken by them nor poll for them, or a
+    // process that once ran on 64 threads keeps 63 of them busy on 2 cores.
+    thread_pool& pool = thread_pool::shared();
+    expect_each_part_once(64, "the wide run");
+    ASSERT_GE(pool.workers(), 63u);
+    ASSERT_TRUE(all_workers_asleep_within_ten_seconds()) << pool.awake_workers() << " workers still awake";
+    const std::uint64_t polls = pool.polls_started();
+    const std::uint64_t wakes = pool.wake_ups();
+    for (int round = 0; round < 10; ++round) {
+        expect_each_part_once(2, "a narrow run after the wide one");
+    }
+    // Idle workers sleep soon: polling is bounded.
+    ASSERT_TRUE(all_workers_asleep_within_ten_seconds()) << pool.awake_workers() << " workers still awake";
+    // Ten runs of two parts: worker 0 (part 1) at most wakes or polls once per run.
+    EXPECT_LE(pool.wake_ups() - wakes, 10u);
+    EXPECT_LE(pool.polls_started() - polls, 10u);
+}
+
+TEST(thread_pool, a_worker_that_ran_a_part_sleeps_soon_after) {
+    thread_pool& pool = thread_pool::shared();
+    expect_each_part_once(4, "a run");
+    ASSERT_TRUE(all_workers_asleep_within_ten_seconds()) << pool.awake_workers() << " workers still awake";
+    EXPECT_EQ(pool.awake_workers(), 0u);
 }
 
 }  // namespace

@@ -3,12 +3,14 @@
 // These are the checked entry points. They reject out-of-range indices and
 // unequal batch lengths with invalid_input (rect_soa already guarantees finite
 // coordinates), resolve the backend once per call, and split the batch over
-// `threads` cores. Verdicts never depend on the backend or the thread count.
+// `threads` cores, or over the caller's executor (obbsat/executor.hpp).
+// Verdicts never depend on the backend, the thread count or the executor.
 // A pair-list call whose verdict buffer shares memory with its pairs (or with
 // the rects or poses it reads in place) throws invalid_input naming both.
 #pragma once
 
 #include <obbsat/backend.hpp>
+#include <obbsat/executor.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/pose_soa.hpp>
@@ -25,10 +27,19 @@ namespace obbsat {
 struct collide_options {
     method test = method::sat4;           ///< which collision test
     backend use = backend::automatic;     ///< which instruction set (see backend.hpp)
-    unsigned threads = 1;                 ///< cores to split one batch over; 0 means all
+    /// Threads to split one call over; 0 means one per hardware thread. The
+    /// steps that split finely cut their work into a few units per thread,
+    /// each taken by the next thread free, so a thread on a busy core takes
+    /// fewer. With an executor: how many threads its units are cut for.
+    unsigned threads = 1;
     /// When set, receives how many pairs were decided on the exact slow path
     /// (method exact only; 0 for the others).
     std::size_t* slow_path_pairs = nullptr;
+    /// When set, the engine's job system that runs the call's parallel steps
+    /// (obbsat/executor.hpp); the call then starts no thread of its own. It
+    /// must outlive the call (for pair_finder, every call). nullptr: obbsat's
+    /// own pool of threads.
+    const obbsat::executor* executor = nullptr;
 };
 
 /// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0,

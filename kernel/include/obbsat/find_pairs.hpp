@@ -13,7 +13,8 @@
 // bounds are apart is not reported (they do not touch). For the float methods
 // (sat4, sat4_centered, sat4_double, local) the same holds: a false positive
 // between rectangles whose bounds are apart is absent; every other verdict is
-// the method's own, the same on every backend and thread count.
+// the method's own, the same on every backend, thread count and executor
+// (collide_options::executor).
 //
 // The rectangles come as a box_view: a store (pose_records, rect_records;
 // checked when it was built) or rows in the caller's memory (rect_pose or
@@ -116,7 +117,8 @@ std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options
 /// Receives the colliding pairs in chunks of at most 4096 pairs, never from
 /// two threads at once, in no particular order (each pair once, i < j for
 /// one store, i in a and j in b for two); the pointer is valid only during
-/// the call.
+/// the call. It may be called on any thread running the query: the caller's,
+/// the pool's, or the executor's (collide_options::executor).
 using pair_chunk_sink = std::function<void(const pair_index* pairs, std::size_t count)>;
 
 /// Streams the pairs of find_pairs to `sink` without holding them all.

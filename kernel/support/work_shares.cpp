@@ -117,9 +117,12 @@ void run_on_executor(const executor& given, unit_run& units) {
 void run_unit_list(std::size_t units, std::size_t threads, const std::function<void(std::size_t)>& task) {
     unit_run run(units, task);
     const executor* const given = executor_scope::current();
-    if (given != nullptr && !running_executor_units) {
+    // On a thread running an executor's units, executor_scope::current() is
+    // that thread's own (usually none), so the flag is asked first: work
+    // started inside a unit stays on its thread, never on the pool.
+    if (!running_executor_units && given != nullptr) {
         run_on_executor(*given, run);
-    } else if (given != nullptr || threads <= 1) {
+    } else if (running_executor_units || threads <= 1) {
         for (std::size_t unit = 0; unit < units; ++unit) {
             run.run(unit);
         }

@@ -13,10 +13,11 @@
 // An array that is not given takes its default for every rectangle:
 //   category all ones (~0), mask all ones (~0), group 0,
 // so a rectangle left at the defaults pairs with every rectangle whose own
-// category and mask are not zero (all ones meets any bit); with no array
-// given on either side every pair counts, as with no filters, and the
-// query costs what it costs without filters. The three arrays are given
-// independently (categories alone, groups alone, ...).
+// category and mask are not zero (all ones meets any bit). The three arrays
+// are given independently (categories alone, groups alone, ...). A query
+// whose sets give no array at all takes the plain path: it costs what a
+// query cost before filters existed. In a query across two sets each set
+// has its own filters, and a group number names one body on both sides.
 //
 // Filtered pairs cost nothing in the narrowphase: the broadphase drops them
 // as it finds them, before the method's kernel, and find_pairs_stats::

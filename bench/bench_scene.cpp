@@ -13,6 +13,15 @@
 //       The motion itself is not timed. Counter
 //       reused_candidates: the share of frames answered from kept candidates.
 //
+//   filters/exact/poses/.../filtered:<0|1>  obbsat::find_pairs on the
+//       as-generated uniform scene, without pair filters (0) and with them (1):
+//       about 71% of the boxes are "debris" (category 2) that collide only
+//       with "solid" boxes (mask 1), so about half the overlapping pairs, the
+//       debris-debris ones, are dropped before the method. Both rows check
+//       their answer against the unfiltered one filtered afterwards (up to
+//       check_limit boxes). Counters: pairs_per_box, candidates_per_box,
+//       filtered_share (of the unfiltered pairs).
+//
 // The peers' rows (peer_scene/, peer_frame/) answer the same question on the
 // same scenes; scene_harness.hpp says how every row is timed and checked.
 #include "bench_registry.hpp"
@@ -22,6 +31,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
+#include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect_records.hpp>
 
@@ -237,6 +247,83 @@ void run_drift_row(benchmark::State& state, obbsat::method test, std::size_t box
     }
 }
 
+/// The filters of the filters/ rows for a scene of `boxes`: each box debris
+/// (category 2, colliding with category 1 only) with probability 1/sqrt(2),
+/// else solid (category 1, colliding with everything); no groups.
+struct debris_filters {
+    std::vector<std::uint64_t> categories, masks;
+
+    explicit debris_filters(std::size_t boxes) {
+        obbsat::seeded_random random(777);
+        for (std::size_t i = 0; i < boxes; ++i) {
+            const bool debris = random.uniform(0.0f, 1.0f) < 0.70710678f;
+            categories.push_back(debris ? 2u : 1u);
+            masks.push_back(debris ? 1u : ~std::uint64_t{0});
+        }
+    }
+    obbsat::pair_filters view() const {
+        obbsat::pair_filters f;
+        f.categories = categories.data();
+        f.masks = masks.data();
+        return f;
+    }
+    bool passes(const obbsat::pair_index& p) const {
+        return (categories[p.a] & masks[p.b]) != 0 && (categories[p.b] & masks[p.a]) != 0;
+    }
+};
+
+void run_filter_row(benchmark::State& state, std::size_t boxes, bool filtered) {
+    try {
+        scene_workload& w = scene_workload_for(boxes, obbsat::scene_sizes::uniform);
+        const obbsat::pose_records& poses = w.poses(scene_frame::as_generated);
+        const debris_filters filters(boxes);
+        const obbsat::box_view view =
+            filtered ? obbsat::box_view(poses).with_filters(filters.view()) : obbsat::box_view(poses);
+        const obbsat::collide_options options = options_for(obbsat::method::exact, 1);
+        // Candidates from a pair_finder's first call, which answers as find_pairs does.
+        obbsat::pair_finder counter(options);
+        const std::vector<obbsat::pair_index> got = counter.find(view);
+        const std::size_t candidates = counter.stats().candidates;
+        const std::vector<obbsat::pair_index> all = obbsat::find_pairs(poses, options);
+        std::size_t passing = 0;
+        for (const obbsat::pair_index& p : all) {
+            passing += filters.passes(p) ? 1u : 0u;
+        }
+        if (boxes <= check_limit) {
+            std::vector<obbsat::pair_index> want;
+            for (const obbsat::pair_index& p : all) {
+                if (!filtered || filters.passes(p)) {
+                    want.push_back(p);
+                }
+            }
+            const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
+                return x.a == y.a && x.b == y.b;
+            };
+            if (got.size() != want.size() || !std::equal(got.begin(), got.end(), want.begin(), same)) {
+                state.SkipWithError("the filtered pairs differ from the unfiltered ones filtered afterwards");
+                return;
+            }
+        }
+        double pairs = 0;
+        for (auto _ : state) {
+            const std::vector<obbsat::pair_index> found = obbsat::find_pairs(view, options);
+            benchmark::DoNotOptimize(found.data());
+            pairs += static_cast<double>(found.size());
+        }
+        const auto n = static_cast<double>(boxes);
+        state.counters["ns_per_box"] =
+            benchmark::Counter(n * 1e-9, static_cast<benchmark::Counter::Flags>(
+                                             benchmark::Counter::kIsIterationInvariantRate |
+                                             benchmark::Counter::kInvert));
+        state.counters["pairs_per_box"] = benchmark::Counter(pairs / n, benchmark::Counter::kAvgIterations);
+        state.counters["candidates_per_box"] = static_cast<double>(candidates) / n;
+        state.counters["filtered_share"] =
+            all.empty() ? 0.0 : 1.0 - static_cast<double>(passing) / static_cast<double>(all.size());
+    } catch (const std::exception& e) {
+        state.SkipWithError(e.what());
+    }
+}
+
 }  // namespace
 
 void register_scene_benchmarks() {
@@ -266,6 +353,19 @@ void register_scene_benchmarks() {
                         ->Unit(benchmark::kMillisecond);
                 }
             }
+        }
+    }
+    // With and without pair filters, side by side on one scene.
+    for (const std::size_t boxes : scene_box_counts_to_register()) {
+        for (const bool filtered : {false, true}) {
+            const std::string name = "filters/exact/poses/" + scene_name_tail(boxes, obbsat::scene_sizes::uniform, 1) +
+                                     "/filtered:" + (filtered ? "1" : "0");
+            benchmark::RegisterBenchmark(name.c_str(),
+                                         [boxes, filtered](benchmark::State& state) {
+                                             run_filter_row(state, boxes, filtered);
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond);
         }
     }
 }

@@ -45,6 +45,7 @@ detail::query_input input_of(const box_view& a, const box_view* b) {
     in.a_count = a.size();
     in.a_stride = a.stride();
     in.a_checked = a.checked();
+    in.a_filters = a.filters();
     if (b != nullptr) {
         if (b->kind() != a.kind()) {
             throw invalid_input(std::string("a scene query compares one kind of rectangle: a holds ") +
@@ -55,6 +56,7 @@ detail::query_input input_of(const box_view& a, const box_view* b) {
         in.b_count = b->size();
         in.b_stride = b->stride();
         in.b_checked = b->checked();
+        in.b_filters = b->filters();
     }
     return in;
 }

@@ -49,6 +49,10 @@ void finish_streams() {
 const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     set_query(input);
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
+    if (kept_.ready && !kept_filters_.same_as(input)) {
+        // Kept candidates hold only the pairs their filters let through (kept_filters.hpp).
+        kept_.ready = false;
+    }
     if (kept_.ready && same_scene_as_last() && n_ >= 2) {
         const auto start = clock_type::now();
         // An exact method calls a pair colliding only if the two rectangles
@@ -141,6 +145,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         return answer_plainly(input);
     }
     keep_candidates(used_parts_);
+    kept_filters_.take(input);
     kept_.ready = true;
     test_kept(used_parts_, false);
     kept_.last_candidates = stats_.candidates;

@@ -28,6 +28,7 @@ void pair_search::set_query(const query_input& input) {
         throw invalid_input("a scene query takes at most 4294967295 rectangles, not " + std::to_string(n_));
     }
     stats_.boxes = n_;
+    filtered_ = input.filtered();
 }
 
 void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {

@@ -21,6 +21,11 @@
 //      bounds. A pair is taken in the strip holding the larger of its two
 //      lo_y (the first strip both touch), i.e. never between two visitors,
 //      so each pair whose bounds overlap is found exactly once. [sweep.cpp]
+//      With pair filters (obbsat/pair_filters.hpp), the candidates each
+//      call of the sweep kernel finds are filtered at once, over the
+//      filters copied into the query's order with the records, so a
+//      filtered pair never reaches step 5; a query with no filters takes
+//      none of this (filtered_, chosen once per query). [sweep.cpp]
 //   5. Candidates go to the method's indexed kernel in blocks, over the
 //      reordered records; the colliding ones are mapped back. [sweep.cpp]
 //   6. The answer: the found pairs streamed to the caller's sink as they
@@ -50,6 +55,8 @@
 // and keeping the candidates) and kept_answer.cpp (their test and answer).
 #pragma once
 
+#include "scene/filter_values.hpp"
+#include "scene/kept_filters.hpp"
 #include "scene/kept_pairs.hpp"
 #include "scene/pair_blocks.hpp"
 #include "scene/query_input.hpp"
@@ -170,6 +177,9 @@ private:
     template <class AfterFlush>
     void sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const;
     void flush_candidates(part& p) const;
+    /// Drops from `count` candidates those the pair filters refuse, keeping
+    /// the others in order at the front; returns how many are left.
+    std::size_t drop_filtered(pair_index* candidates, std::size_t count) const;
     /// Pair `q` of the query's order in the caller's indices (in a query
     /// across two sets, b counted from the second set's first rectangle).
     pair_index caller_pair(pair_index q) const {
@@ -229,6 +239,10 @@ private:
     scratch_vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
     scratch_vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
     scratch_vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store
+    /// The query carries pair filters (query_input::filtered): filters_ holds
+    /// each rectangle's, and the sweep drops the pairs they refuse.
+    bool filtered_ = false;
+    scratch_vector<filter_values> filters_;
 
     // Strips: own_begin_[s] is the first rectangle whose lowest strip is s;
     // visits sorted by (strip, q_lo), visit_begin_[s] the first visit of s.
@@ -243,6 +257,7 @@ private:
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 
     kept_pairs kept_;  ///< pair_finder's kept candidates and the policy that keeps them
+    kept_filters kept_filters_;  ///< the pair filters kept_ was built with (kept_filters.hpp)
 };
 
 }  // namespace obbsat::detail

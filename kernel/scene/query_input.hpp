@@ -3,10 +3,12 @@
 // every step that reads the input. Internal to the library, baseline ISA.
 #pragma once
 
+#include "scene/filter_values.hpp"
 #include "store/finite_check.hpp"
 #include "store/pose_record.hpp"
 
 #include <obbsat/method.hpp>
+#include <obbsat/pair_filters.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/ref/bounds.hpp>
@@ -30,11 +32,23 @@ struct query_input {
     std::size_t b_count = 0;
     std::size_t b_stride = 8;
     bool b_checked = true;
+    pair_filters a_filters;  ///< the first set's pair filters (obbsat/pair_filters.hpp)
+    pair_filters b_filters;  ///< the second set's; unused within one set
+
+    /// True iff some set of the query carries pair filters: the query then
+    /// takes the filtered path, chosen once (pair_search::filtered_).
+    bool filtered() const { return a_filters.any() || (b != nullptr && b_filters.any()); }
 };
 
 /// Row `id` of the query: of the first set below a_count, else of the second.
 inline const float* record_at(const query_input& input, std::size_t id) {
     return id < input.a_count ? input.a + input.a_stride * id : input.b + input.b_stride * (id - input.a_count);
+}
+
+/// The filters of row `id` of the query, defaults where its set gives none.
+inline filter_values filter_of(const query_input& input, std::size_t id) {
+    return id < input.a_count ? filter_values_of(input.a_filters, id)
+                              : filter_values_of(input.b_filters, id - input.a_count);
 }
 
 inline std::size_t stride_of(const query_input& input, std::size_t id) {

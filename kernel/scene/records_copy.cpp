@@ -20,6 +20,9 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     q_hi_.resize(n_);
     strip_hi_.resize(n_);
     side_.resize(n_);
+    if (filtered_) {
+        filters_.resize(n_);
+    }
     if (kept_.keep) {
         kept_.now.resize(n_);
     }
@@ -38,6 +41,13 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                 const std::uint32_t id = order_[k];
                 copy_row(input, id, records_[k].v);
                 side_[k] = id >= a_count_ && !self_ ? 1 : 0;
+            }
+            if (filtered_) {
+                // Beside the records, in the same order: the sweep reads a
+                // candidate's two entries where it reads their bounds.
+                for (std::size_t k = run_begin; k < run_end; ++k) {
+                    filters_[k] = filter_of(input, order_[k]);
+                }
             }
             // The same function on the same floats as the extent pass: the bounds of step 1.
             bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);

@@ -79,6 +79,22 @@ void pair_search::flush_candidates(part& p) const {
     p.candidate_count = 0;
 }
 
+static_assert(candidate_block / 4 >= strip_padding,
+              "a block left untested keeps room enough for the sweep kernel to go on (strip_view.hpp)");
+
+std::size_t pair_search::drop_filtered(pair_index* candidates, std::size_t count) const {
+    // Kept or not as the filters say, with no branch on it: each candidate
+    // is written where the next kept one goes.
+    const filter_values* const filters = filters_.data();
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const pair_index c = candidates[i];
+        candidates[kept] = c;
+        kept += filters_pass(filters[c.a], filters[c.b]);
+    }
+    return kept;
+}
+
 template <class AfterFlush>
 void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const {
     // Merge the rectangles starting in this strip with its visitors, by
@@ -151,9 +167,13 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& af
     sweep_cursor cursor;
     while (cursor.e + 1 < m) {
         const std::size_t before = p.candidate_count;
-        p.candidate_count +=
-            sweep_kernel(view, cursor, p.candidates.data() + before, candidate_block - before);
-        if (cursor.e + 1 < m) {
+        const std::size_t found = sweep_kernel(view, cursor, p.candidates.data() + before, candidate_block - before);
+        p.candidate_count += filtered_ ? drop_filtered(p.candidates.data() + before, found) : found;
+        // The kernel stops inside the strip only when fewer than a vector's
+        // width of slots are left; with filters it may have stopped there and
+        // then dropped many, so the block is tested only once it is at least
+        // three quarters full, and the sweep goes on filling it otherwise.
+        if (cursor.e + 1 < m && candidate_block - p.candidate_count < candidate_block / 4) {
             // A full block inside the strip: tested now, and the pairs found
             // handed on, however many the strip holds.
             flush_candidates(p);

@@ -490,7 +490,8 @@ def _scene(boxes, against):
     return form, boxes, against
 
 
-def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1):
+def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1, categories=None, masks=None,
+               groups=None, against_categories=None, against_masks=None, against_groups=None):
     """Every pair of rectangles that collides, with no pair list: the
     library's scene query (``obbsat::find_pairs``).
 
@@ -522,6 +523,22 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
     backend, threads
         As in :func:`collide`; the answer never depends on them. The GIL is
         released during the query.
+    categories, masks : array_like of integers, shape (N,), optional
+        Pair filters as Box2D's ``b2Filter``: each box's category bits and
+        the categories it collides with (up to 64 bits). A pair (i, j) is
+        reported only if ``categories[i] & masks[j]`` and ``categories[j] &
+        masks[i]`` are both non-zero. Not given: every bit set (the box
+        pairs with everything). Any integer dtype; uint64 C-contiguous is
+        read in place, others are converted; a negative value is a
+        ValueError.
+    groups : array_like of integers, shape (N,), optional
+        Each box's group; two boxes of one group other than 0 (say the
+        pieces of one compound body) never pair. Not given: all 0. Values
+        must fit in int32 (int32 is read in place).
+    against_categories, against_masks, against_groups : optional
+        The same for the rows of ``against`` (only with it). A group number
+        means one body on both sides. Filtered pairs are dropped in the
+        broadphase, before the method tests them, at no narrowphase cost.
 
     Returns
     -------
@@ -538,8 +555,10 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
         unknown or does not run on the form, a backend unknown, ``threads``
         outside 0 .. 2**32 - 1, or the backend cannot run here
         (``UnsupportedBackendError``).
+        A filter array has another length than its rows (the message names
+        the argument and both lengths) or a value out of its range.
     TypeError
-        A dtype is not numeric.
+        A dtype is not numeric, or a filter array's is not integer.
 
     >>> poses = np.array([[0, 0, 1, 1, 1, 0],       # the square [-1, 1]^2
     ...                   [2, 0, 1, 1, 0, 1],       # touching it along x = 1
@@ -552,12 +571,17 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
     >>> obbsat.find_pairs(poses[:2], poses[2:], method="exact")
     array([[0, 1],
            [1, 1]], dtype=uint32)
+    >>> obbsat.find_pairs(poses, groups=np.array([1, 0, 0, 1]))   # 0 and 3 are one body
+    array([[0, 1],
+           [1, 3]], dtype=uint32)
     """
     method = _SCENE_METHOD if method is None else method
     threads = _threads(threads)
     form, boxes, against = _scene(boxes, against)
     query = _core.find_pairs_poses if form == "poses" else _core.find_pairs_corners
-    return query(boxes, against, method, _backend(backend), threads)
+    return query(boxes, against, method, _backend(backend), threads, categories=categories, masks=masks,
+                 groups=groups, against_categories=against_categories, against_masks=against_masks,
+                 against_groups=against_groups)
 
 
 class PairFinder:
@@ -628,12 +652,18 @@ class PairFinder:
         events = ", events=True" if self._events else ""
         return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads}{events})"
 
-    def find(self, boxes, against=None):
-        """The pairs of ``find_pairs(boxes, against)`` with the finder's
-        settings: uint32 (K, 2), sorted, a new array."""
+    def find(self, boxes, against=None, *, categories=None, masks=None, groups=None, against_categories=None,
+             against_masks=None, against_groups=None):
+        """The pairs of ``find_pairs(boxes, against, ...)`` with the finder's
+        settings and the same pair filters: uint32 (K, 2), sorted, a new
+        array. Filters that differ from the last call's in any value make
+        the call a full query (the kept candidates hold only the pairs the
+        filters they were kept with let through)."""
         form, boxes, against = _scene(boxes, against)
         find = self._query.find_poses if form == "poses" else self._query.find_corners
-        pairs = find(boxes, against)
+        pairs = find(boxes, against, categories=categories, masks=masks, groups=groups,
+                     against_categories=against_categories, against_masks=against_masks,
+                     against_groups=against_groups)
         self._ran = True
         return pairs
 

@@ -54,6 +54,12 @@ def find_pairs(
     method: str | None = ...,
     backend: str | None = ...,
     threads: int = ...,
+    categories: npt.ArrayLike | None = ...,
+    masks: npt.ArrayLike | None = ...,
+    groups: npt.ArrayLike | None = ...,
+    against_categories: npt.ArrayLike | None = ...,
+    against_masks: npt.ArrayLike | None = ...,
+    against_groups: npt.ArrayLike | None = ...,
 ) -> npt.NDArray[np.uint32]: ...
 
 class PairFinder:
@@ -64,6 +70,13 @@ class PairFinder:
         self,
         boxes: npt.ArrayLike | RectRecords | PoseRecords,
         against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+        *,
+        categories: npt.ArrayLike | None = ...,
+        masks: npt.ArrayLike | None = ...,
+        groups: npt.ArrayLike | None = ...,
+        against_categories: npt.ArrayLike | None = ...,
+        against_masks: npt.ArrayLike | None = ...,
+        against_groups: npt.ArrayLike | None = ...,
     ) -> npt.NDArray[np.uint32]: ...
     @property
     def stats(self) -> FindPairsStats: ...

@@ -14,7 +14,10 @@
 // Scene queries (find_pairs, PairFinder) take one or two sets of one kind:
 // a RectRecords or PoseRecords passed in, or the rows of an array, which the
 // library's scene query reads in place (obbsat::box_view) and checks in the
-// pass that computes the bounds. The pairs come back
+// pass that computes the bounds. Each side may carry pair filters
+// (obbsat/pair_filters.hpp): categories and masks as uint64, groups as
+// int32, read in place when they already are, else converted here without
+// loss (a value that does not fit is a ValueError). The pairs come back
 // in the vector the library filled, owned by the numpy array (no copy), or,
 // from a PairFinder, copied out of the finder's reused buffer (its begin/end
 // events too).
@@ -489,6 +492,121 @@ obbsat::box_view view_of(const scene_side<Store>& side) {
     return obbsat::box_view(side.rows, side.count);
 }
 
+/// The rows of one side of a scene query.
+template <class Store>
+std::size_t rows_of(const scene_side<Store>& side) {
+    return side.store != nullptr ? side.store->size() : side.count;
+}
+
+/// A filter array of `what` as the library reads it: an array of T (uint64
+/// for categories and masks, int32 for groups), one value per row; None
+/// stays None (not given). Any integer dtype is taken when every
+/// value fits in T; the result is `given` itself when it is already T and
+/// contiguous, so it is read in place.
+template <class T>
+py::object filter_array(const py::object& given, const std::string& name, std::size_t rows, const char* side) {
+    using converted = py::array_t<T, py::array::c_style | py::array::forcecast>;
+    if (given.is_none()) {
+        return py::none();
+    }
+    py::array a = py::array::ensure(given);
+    if (!a) {
+        throw py::type_error(name + ": expected an array of integers");
+    }
+    const char kind = a.dtype().kind();
+    if (kind != 'i' && kind != 'u') {
+        throw py::type_error(name + ": expected integers, got dtype " + std::string(py::str(a.dtype())));
+    }
+    if (a.ndim() != 1) {
+        throw py::value_error(name + ": expected one value per row (a 1-D array), got " + std::to_string(a.ndim()) +
+                              " dimensions");
+    }
+    if (static_cast<std::size_t>(a.shape(0)) != rows) {
+        throw py::value_error(name + ": " + std::to_string(a.shape(0)) + " values for the " + std::to_string(rows) +
+                              " rows of " + side);
+    }
+    // Read as the widest type of its sign (no loss), then checked against T's range.
+    constexpr auto lowest = static_cast<long long>(std::numeric_limits<T>::min());
+    constexpr auto highest = std::numeric_limits<T>::max();
+    if (kind == 'u') {
+        const auto wide = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+        const std::uint64_t* v = wide.data();
+        for (std::size_t i = 0; i < rows; ++i) {
+            if (v[i] > static_cast<std::uint64_t>(highest)) {
+                throw py::value_error(name + "[" + std::to_string(i) + "] = " + std::to_string(v[i]) +
+                                      " does not fit in " + (sizeof(T) == 4 ? "int32" : "uint64"));
+            }
+        }
+    } else {
+        const auto wide = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+        const std::int64_t* v = wide.data();
+        for (std::size_t i = 0; i < rows; ++i) {
+            if (v[i] < lowest || (v[i] > 0 && static_cast<std::uint64_t>(v[i]) > static_cast<std::uint64_t>(highest))) {
+                throw py::value_error(name + "[" + std::to_string(i) + "] = " + std::to_string(v[i]) +
+                                      (lowest == 0 ? " is negative: categories and masks are bit sets"
+                                                   : " does not fit in int32"));
+            }
+        }
+    }
+    return converted::ensure(a);
+}
+
+/// The pair filters of one side: the arrays, kept alive for the query, and
+/// the library's view of them.
+struct side_filters {
+    py::object categories = py::none(), masks = py::none(), groups = py::none();
+
+    obbsat::pair_filters view() const {
+        obbsat::pair_filters f;
+        f.categories = values_of<std::uint64_t>(categories);
+        f.masks = values_of<std::uint64_t>(masks);
+        f.groups = values_of<std::int32_t>(groups);
+        return f;
+    }
+
+private:
+    /// The values of an array of filter_array, nullptr for None.
+    template <class T>
+    static const T* values_of(const py::object& given) {
+        return given.is_none() ? nullptr : static_cast<const T*>(py::reinterpret_borrow<py::array>(given).data());
+    }
+};
+
+/// The filters a scene query was given from Python, for `boxes` and for
+/// `against` (whose arrays are named against_categories, ...).
+struct filter_args {
+    py::object categories, masks, groups, against_categories, against_masks, against_groups;
+};
+
+template <class Store>
+side_filters filters_of(const scene_side<Store>& side, const py::object& categories, const py::object& masks,
+                        const py::object& groups, const std::string& prefix) {
+    const std::size_t rows = rows_of(side);
+    side_filters f;
+    f.categories = filter_array<std::uint64_t>(categories, prefix + "categories", rows, side.what);
+    f.masks = filter_array<std::uint64_t>(masks, prefix + "masks", rows, side.what);
+    f.groups = filter_array<std::int32_t>(groups, prefix + "groups", rows, side.what);
+    return f;
+}
+
+/// The filters of both sides; those of `against` must come with it.
+template <class Store>
+std::pair<side_filters, side_filters> filters_of(const filter_args& args, const scene_side<Store>& a,
+                                                 const scene_side<Store>* b) {
+    if (b == nullptr) {
+        for (const auto& [value, name] : {std::make_pair(&args.against_categories, "against_categories"),
+                                          std::make_pair(&args.against_masks, "against_masks"),
+                                          std::make_pair(&args.against_groups, "against_groups")}) {
+            if (!value->is_none()) {
+                throw py::value_error(std::string(name) + " given without against");
+            }
+        }
+        return {filters_of(a, args.categories, args.masks, args.groups, ""), side_filters{}};
+    }
+    return {filters_of(a, args.categories, args.masks, args.groups, ""),
+            filters_of(*b, args.against_categories, args.against_masks, args.against_groups, "against_")};
+}
+
 /// Runs `query`; a bad row of a cross query, which the library names "a: ..."
 /// or "b: ...", is named "boxes: ..." or "against: ..." as Python calls them.
 template <class Query>
@@ -524,15 +642,25 @@ py::array_t<std::uint32_t> pair_array(std::vector<obbsat::pair_index>&& pairs) {
 /// `against`, both of the store kind Store, sorted.
 template <class Store>
 py::array_t<std::uint32_t> find_pairs_of(const py::object& boxes, const py::object& against,
-                                         const std::string& method, const std::string& backend, long long threads) {
+                                         const std::string& method, const std::string& backend, long long threads,
+                                         const py::object& categories, const py::object& masks,
+                                         const py::object& groups, const py::object& against_categories,
+                                         const py::object& against_masks, const py::object& against_groups) {
     const obbsat::collide_options options = options_of(method, backend, threads);
     const bool cross = !against.is_none();
     const scene_side<Store> a = side_of<Store>(boxes, "boxes");
     const scene_side<Store> b = cross ? side_of<Store>(against, "against") : scene_side<Store>{};
+    const std::pair<side_filters, side_filters> filters = filters_of(
+        filter_args{categories, masks, groups, against_categories, against_masks, against_groups}, a,
+        cross ? &b : nullptr);
+    const obbsat::pair_filters fa = filters.first.view();
+    const obbsat::pair_filters fb = filters.second.view();
     return pair_array(without_gil([&] {
         require_runs_on(options, store_traits<Store>::kind);
+        const obbsat::box_view va = view_of(a).with_filters(fa);
         return with_side_names([&] {
-            return cross ? obbsat::find_pairs(view_of(a), view_of(b), options) : obbsat::find_pairs(view_of(a), options);
+            return cross ? obbsat::find_pairs(va, view_of(b).with_filters(fb), options)
+                         : obbsat::find_pairs(va, options);
         });
     }));
 }
@@ -545,16 +673,25 @@ public:
     explicit scene_finder(const obbsat::collide_options& options) : options_(options), finder_(options) {}
 
     template <class Store>
-    py::array_t<std::uint32_t> find(const py::object& boxes, const py::object& against) {
+    py::array_t<std::uint32_t> find(const py::object& boxes, const py::object& against,
+                                    const py::object& categories, const py::object& masks, const py::object& groups,
+                                    const py::object& against_categories, const py::object& against_masks,
+                                    const py::object& against_groups) {
         const bool cross = !against.is_none();
         const scene_side<Store> a = side_of<Store>(boxes, "boxes");
         const scene_side<Store> b = cross ? side_of<Store>(against, "against") : scene_side<Store>{};
+        const std::pair<side_filters, side_filters> filters = filters_of(
+            filter_args{categories, masks, groups, against_categories, against_masks, against_groups}, a,
+            cross ? &b : nullptr);
+        const obbsat::pair_filters fa = filters.first.view();
+        const obbsat::pair_filters fb = filters.second.view();
         return pair_array(without_gil([&] {
             const std::lock_guard<std::mutex> lock(mutex_);
             require_runs_on(options_, store_traits<Store>::kind);
+            const obbsat::box_view va = view_of(a).with_filters(fa);
             return with_side_names([&] {
                 const std::vector<obbsat::pair_index>& found =
-                    cross ? finder_.find(view_of(a), view_of(b)) : finder_.find(view_of(a));
+                    cross ? finder_.find(va, view_of(b).with_filters(fb)) : finder_.find(va);
                 return std::vector<obbsat::pair_index>(found);
             });
         }));
@@ -808,10 +945,16 @@ PYBIND11_MODULE(_core, m) {
           "The corners of a PoseRecords store written to out, float32 (N, 4, 2); returns the backend that ran.");
     m.def("find_pairs_corners", &find_pairs_of<obbsat::rect_records>, py::arg("boxes"), py::arg("against"),
           py::arg("method"), py::arg("backend"), py::arg("threads"),
+          py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+          py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+          py::arg("against_groups") = py::none(),
           "Every colliding pair of corner boxes (float32 (N, 8) or (N, 4, 2), copied into records, or a "
           "RectRecords), or across boxes and against: uint32 (K, 2) sorted by (i, j).");
     m.def("find_pairs_poses", &find_pairs_of<obbsat::pose_records>, py::arg("boxes"), py::arg("against"),
           py::arg("method"), py::arg("backend"), py::arg("threads"),
+          py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+          py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+          py::arg("against_groups") = py::none(),
           "Every colliding pair of poses (float32 (N, 6), copied into records, or a PoseRecords), or across "
           "boxes and against: uint32 (K, 2) sorted by (i, j).");
     py::class_<obbsat::find_pairs_stats>(m, "FindPairsStats", "What one scene query did (obbsat::find_pairs_stats).")
@@ -863,8 +1006,14 @@ PYBIND11_MODULE(_core, m) {
                              "obbsat::pair_finder: a scene query that keeps its order and buffers between calls.")
         .def(py::init(&make_scene_finder), py::arg("method"), py::arg("backend"), py::arg("threads"))
         .def("find_corners", &scene_finder::find<obbsat::rect_records>, py::arg("boxes"), py::arg("against"),
+             py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
              "find_pairs_corners through the finder; the pairs are a copy of its buffer.")
         .def("find_poses", &scene_finder::find<obbsat::pose_records>, py::arg("boxes"), py::arg("against"),
+             py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
              "find_pairs_poses through the finder; the pairs are a copy of its buffer.")
         .def_property_readonly("stats", &scene_finder::stats, "What the last query did.")
         .def("track_events", &scene_finder::track_events, py::arg("on"),

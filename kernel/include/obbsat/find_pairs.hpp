@@ -25,6 +25,13 @@
 // rotation vector is refused with invalid_input naming the row and the field,
 // prefixed "a: " or "b: " in a query across two sets; no pair is reported then.
 //
+// Pair filters (obbsat/pair_filters.hpp): a box_view may carry a category,
+// a collide-with mask and a group per rectangle (box_view::with_filters),
+// each side of a cross query its own; a pair the filters refuse is dropped
+// by the broadphase before the method sees it, and so never reported. They
+// cost 24 bytes per rectangle while the pairs are found, and nothing when
+// no view carries any.
+//
 // Memory: about 100 bytes per rectangle while the pairs are found (one copy
 // of the records in the query's own order, its bounds, order and strips)
 // and 8 bytes per reported pair; find_pairs releases the per-rectangle
@@ -36,6 +43,7 @@
 #pragma once
 
 #include <obbsat/collide.hpp>
+#include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
@@ -53,7 +61,7 @@ struct find_pairs_stats {
     std::size_t boxes = 0;       ///< rectangles in the query (both stores for a cross query)
     std::size_t strips = 0;      ///< horizontal strips of the sweep
     std::size_t visits = 0;      ///< extra strip entries of rectangles taller than their strip
-    std::size_t candidates = 0;  ///< pairs handed to the method: those whose bounds overlap (pair_finder, method exact, from kept candidates: every kept one)
+    std::size_t candidates = 0;  ///< pairs handed to the method: those whose bounds overlap and that the pair filters let through (pair_finder, method exact, from kept candidates: every kept one)
     std::size_t pairs = 0;       ///< pairs reported
     std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
@@ -96,12 +104,24 @@ public:
     /// True for a store (checked when built), false for rows checked by each query.
     bool checked() const { return checked_; }
 
+    /// The same rectangles with pair filters (obbsat/pair_filters.hpp): each
+    /// array given holds size() values and must outlive the queries; they
+    /// replace the filters this view carried.
+    box_view with_filters(const pair_filters& filters) const {
+        box_view view = *this;
+        view.filters_ = filters;
+        return view;
+    }
+    /// The pair filters of the rectangles; none given by default.
+    const pair_filters& filters() const { return filters_; }
+
 private:
     const float* floats_ = nullptr;
     std::size_t count_ = 0;
     std::size_t stride_ = 0;  ///< floats from one rectangle to the next
     store_kind kind_ = store_kind::poses;
     bool checked_ = false;
+    pair_filters filters_;  ///< nullptr arrays: the defaults
 };
 
 /// Every pair (i, j), i < j, of `boxes` that collides under options.test,
@@ -157,6 +177,14 @@ class pair_events;
 /// first, 29 per rectangle (its bounds, its key, and the repair of the
 /// order), 8 more per rectangle that changed strips since the last full
 /// query, and 16 per rectangle once keeping has paused (the probe's bounds).
+///
+/// Pair filters (box_view::with_filters): the kept candidates hold only the
+/// pairs the filters of the full query that kept them let through, so a call
+/// whose filters differ from those in any value (or gives an array they did
+/// not, or leaves out one they gave) is a full query that keeps anew: each
+/// call with filters compares them with a copy of the kept ones (up to 20
+/// bytes per rectangle, read in order). The answer is still always that of
+/// find_pairs with the same filters.
 ///
 /// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
 /// and its find, stats, track_events, began and ended throw invalid_input

@@ -7,6 +7,7 @@
 // exact in double, so that a pair meant to touch does touch.
 #pragma once
 
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose64.hpp>
 #include <obbsat/scene.hpp>
 
@@ -179,6 +180,37 @@ inline pose_pair64 scaled_rotation_pair(seeded_random& random) {
         const int k = integer_in(random, -200, 200);
         p->rotation = point64{std::ldexp(p->rotation.x, k), std::ldexp(p->rotation.y, k)};
         p->half_extents = point64{std::ldexp(p->half_extents.x, -k), std::ldexp(p->half_extents.y, -k)};
+    }
+    return pair;
+}
+
+/// The corners UL, UR, LR, LL of a pose, each coordinate rounded to double
+/// (exact for the dyadic makes above).
+inline rect64 corners64(const rect_pose64& p) {
+    const double hx = p.half_extents.x, hy = p.half_extents.y;
+    return rect64{pose_point(p, -hx, hy), pose_point(p, hx, hy), pose_point(p, hx, -hy), pose_point(p, -hx, -hy)};
+}
+
+struct rect_pair64 {
+    rect64 a;
+    rect64 b;
+};
+
+/// The corners of a pose pair of `make`.
+template <pose_pair64 (*make)(seeded_random&)>
+rect_pair64 corner_pair(seeded_random& random) {
+    const pose_pair64 pair = make(random);
+    return rect_pair64{corners64(pair.a), corners64(pair.b)};
+}
+
+/// Corners of a contact or sliver pair with every coordinate of one quad moved by
+/// up to 3 ulps either way: thin quads turn concave or cross themselves.
+inline rect_pair64 nudged_corner_pair(seeded_random& random) {
+    rect_pair64 pair = random.below(2) == 0 ? corner_pair<sliver_pair>(random) : corner_pair<utm_contact_pair>(random);
+    rect64& moved = random.below(2) == 0 ? pair.a : pair.b;
+    for (point64* p : {&moved.ul, &moved.ur, &moved.lr, &moved.ll}) {
+        p->x = nudged64(p->x, integer_in(random, -3, 3));
+        p->y = nudged64(p->y, integer_in(random, -3, 3));
     }
     return pair;
 }

@@ -27,8 +27,9 @@
 //   - conservative never reports a colliding pair apart (no false negative);
 //   - it reports a separated pair as colliding only when no axis's exact gap
 //     exceeds margin_X + E < 2·margin_X, i.e. the rectangles are within about
-//     2^-47·T*·RX (in X's rotation units) of touching along every axis: at UTM
-//     coordinates near 1e6 m with unit rotations, a few nanometres.
+//     2^-47·T*·RX (in X's rotation units) of touching along every axis, T*
+//     the pair's own size (center distance plus extents), not its distance
+//     from the origin: with unit rotations and T* = 100 m, below a picometre.
 // Products of doubles are not exact in double (unlike products of floats), so
 // every product counts one rounding here, and a product below 2^-1022 errs by
 // up to 2^-1075 absolutely; Ra, Rb >= 2^-500 let the relative margin cover

@@ -1,6 +1,8 @@
-// Pair lists over the double stores: the scalar references of scalar_ref/
-// (the *64 files) over a pair list, split over threads. No kernel table: no
-// SIMD kernel for doubles exists yet, so there is nothing to dispatch to.
+// Pair lists over the double stores, split over threads: on double poses the
+// backend's double lanes (dispatch/double_kernel_table.hpp), or the scalar
+// references of scalar_ref/ (the *64 files) on the scalar backend; on double
+// corners always the scalar references (no lanes yet).
+#include "dispatch/double_kernel_table.hpp"
 #include "support/work_shares.hpp"
 
 #include <obbsat/collide64.hpp>
@@ -44,7 +46,7 @@ void require_method_on_doubles(const collide_options& options, store_kind store)
 void require_scalar_backend(const collide_options& options) {
     if (options.use != backend::automatic && options.use != backend::scalar) {
         throw invalid_input(std::string("backend ") + backend_name(options.use) +
-                            " has no kernels for double stores: they run on the scalar backend "
+                            " has no kernels for double corners: they run on the scalar backend "
                             "(pass backend::automatic or backend::scalar)");
     }
 }
@@ -67,13 +69,39 @@ void require_indices(std::size_t size, const pair_index* pairs, std::size_t coun
     }
 }
 
-/// The checks every entry point makes, in order, before anything is written.
-void require_call(std::size_t size, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts,
-                  const collide_options& options, store_kind store) {
+/// The checks every entry point makes, in order, before anything is written;
+/// returns the backend that will run.
+backend require_call(std::size_t size, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts,
+                     const collide_options& options, store_kind store) {
     require_verdicts_apart(verdicts, pairs, count);
     require_method_on_doubles(options, store);
-    require_scalar_backend(options);
+    backend ran = backend::scalar;
+    if (store == store_kind::poses) {
+        ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
+    } else {
+        require_scalar_backend(options);
+    }
     require_indices(size, pairs, count);
+    return ran;
+}
+
+/// The backend's lanes for options.test on double poses.
+detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m) {
+    switch (m) {
+        case method::exact: return table.exact;
+        case method::conservative: return table.conservative;
+        default: return table.local;  // require_call admitted nothing else
+    }
+}
+
+void report_settled(const std::vector<std::size_t>& settled, const collide_options& options) {
+    if (options.slow_path_pairs != nullptr) {
+        std::size_t total = 0;
+        for (const std::size_t s : settled) {
+            total += s;
+        }
+        *options.slow_path_pairs = total;
+    }
 }
 
 /// method exact on one pair: the certified path, else the oracle; `settled`
@@ -101,20 +129,30 @@ void decide_pairs(const Store& store, const pair_index* pairs, std::size_t count
             verdicts[i] = decide(store[pairs[i].a], store[pairs[i].b], settled[part]) ? 1 : 0;
         }
     });
-    if (options.slow_path_pairs != nullptr) {
-        std::size_t total = 0;
-        for (const std::size_t s : settled) {
-            total += s;
-        }
-        *options.slow_path_pairs = total;
-    }
+    report_settled(settled, options);
+}
+
+/// verdicts over [0, count) by a backend's lanes, split over threads.
+void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
+               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
+    std::vector<std::size_t> settled(parts, 0);
+    detail::run_parts(parts, [&](std::size_t part) {
+        const auto [begin, end] = detail::share_of(count, part, parts);
+        settled[part] = kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+    });
+    report_settled(settled, options);
 }
 
 }  // namespace
 
 backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
-    require_call(poses.size(), pairs, count, verdicts, options, store_kind::poses);
+    const backend ran = require_call(poses.size(), pairs, count, verdicts, options, store_kind::poses);
+    if (const detail::double_kernel_table* table = detail::double_kernels_for(ran)) {
+        run_lanes(pose_kernel_of(*table, options.test), poses, pairs, count, verdicts, options);
+        return ran;
+    }
     using pose64 = rect_pose64;
     switch (options.test) {
         case method::exact:

@@ -8,14 +8,16 @@
 // double corners conservative and exact (conservative64.hpp, exact64.hpp).
 // Any other method is refused with invalid_input naming those that run.
 //
-// They run on the scalar backend, one pair at a time, split over
-// options.threads cores: backend::automatic and backend::scalar run it, and an
-// explicit SIMD backend (sse2, avx2, avx512) is refused with invalid_input, since
-// no SIMD kernel for doubles exists yet. Verdicts never depend on the thread
-// count. Indices are checked first (invalid_input naming the first bad pair),
-// and a verdict buffer that shares memory with the pairs is refused; nothing
-// is written then. For exact, options.slow_path_pairs receives how many pairs
-// the double oracle settled.
+// On double poses every backend runs them, one pair per lane of doubles (2 per
+// SSE2 vector, 4 per AVX2, 8 per AVX-512), bit for bit the scalar references;
+// options.use picks the backend as for float stores (unsupported_backend for
+// one this CPU cannot run). Double corners have no SIMD lanes yet: they run on
+// the scalar backend, and an explicit SIMD backend is refused with
+// invalid_input. Either way the batch is split over options.threads cores, and
+// verdicts never depend on the backend or the thread count. Indices are checked
+// first (invalid_input naming the first bad pair), and a verdict buffer that
+// shares memory with the pairs is refused; nothing is written then. For exact,
+// options.slow_path_pairs receives how many pairs the double oracle settled.
 #pragma once
 
 #include <obbsat/backend.hpp>
@@ -39,7 +41,7 @@ bool runs_on_doubles(method m, store_kind s);
 std::vector<method> methods_on_doubles(store_kind s);
 
 /// verdicts[i] = 1 if poses[pairs[i].a] and poses[pairs[i].b] collide, else 0, for
-/// i < count; returns backend::scalar. Throws invalid_input (nothing written) as stated above.
+/// i < count; returns the backend that ran. Throws invalid_input (nothing written) as stated above.
 backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options);
 

@@ -1,5 +1,6 @@
-// collide64/<method>/<store>/pairs:<N>/threads:<T>: collide_pairs over the
-// double stores (obbsat/collide64.hpp) on the typical scene of the collide
+// collide64/<method>/<store>/<backend>/pairs:<N>/threads:<T>: collide_pairs over the
+// double stores (poses on the scalar backend and on the best this CPU runs,
+// corners on the scalar backend, the only one they have) (obbsat/collide64.hpp) on the typical scene of the collide
 // rows, its poses widened to double and moved to UTM-like coordinates
 // (500000.125, 5712345.5), every value exact. Each row first checks its
 // verdicts against the double scalar references, pair by pair, then times.
@@ -8,6 +9,7 @@
 #include "bench_registry.hpp"
 #include "bench_workload.hpp"
 
+#include <obbsat/backend.hpp>
 #include <obbsat/collide64.hpp>
 #include <obbsat/ref/conservative64.hpp>
 #include <obbsat/ref/exact64.hpp>
@@ -75,9 +77,10 @@ bool reference(obbsat::method m, const obbsat::rect64& a, const obbsat::rect64& 
 
 template <class Store>
 void run_case(benchmark::State& state, const Store& store, const std::vector<obbsat::pair_index>& pairs,
-              obbsat::method m, unsigned threads) {
+              obbsat::method m, obbsat::backend use, unsigned threads) {
     obbsat::collide_options options;
     options.test = m;
+    options.use = use;
     options.threads = threads;
     std::size_t slow = 0;
     options.slow_path_pairs = &slow;
@@ -100,22 +103,35 @@ void run_case(benchmark::State& state, const Store& store, const std::vector<obb
 }  // namespace
 
 void register_collide64_benchmarks() {
+    auto row = [](obbsat::method m, const char* store, obbsat::backend use, unsigned threads) {
+        return std::string("collide64/") + obbsat::method_name(m) + "/" + store + "/" + obbsat::backend_name(use) +
+               "/pairs:" + std::to_string(double_pairs) + "/threads:" + std::to_string(threads);
+    };
+    std::vector<obbsat::backend> pose_backends{obbsat::backend::scalar};
+    if (obbsat::best_supported_backend() != obbsat::backend::scalar) {
+        pose_backends.push_back(obbsat::best_supported_backend());
+    }
     for (const unsigned threads : {1u, 2u}) {
         for (const obbsat::method m : obbsat::methods_on_doubles(obbsat::store_kind::poses)) {
-            const std::string name = std::string("collide64/") + obbsat::method_name(m) + "/poses/pairs:" +
-                                     std::to_string(double_pairs) + "/threads:" + std::to_string(threads);
-            benchmark::RegisterBenchmark(name.c_str(), [m, threads](benchmark::State& state) {
-                double_workload& w = double_workload_of();
-                run_case(state, w.poses, *w.pairs, m, threads);
-            })->UseRealTime()->Unit(benchmark::kMicrosecond);
+            for (const obbsat::backend use : pose_backends) {
+                benchmark::RegisterBenchmark(row(m, "poses", use, threads).c_str(),
+                                             [m, use, threads](benchmark::State& state) {
+                                                 double_workload& w = double_workload_of();
+                                                 run_case(state, w.poses, *w.pairs, m, use, threads);
+                                             })
+                    ->UseRealTime()
+                    ->Unit(benchmark::kMicrosecond);
+            }
         }
         for (const obbsat::method m : obbsat::methods_on_doubles(obbsat::store_kind::corners)) {
-            const std::string name = std::string("collide64/") + obbsat::method_name(m) + "/corners/pairs:" +
-                                     std::to_string(double_pairs) + "/threads:" + std::to_string(threads);
-            benchmark::RegisterBenchmark(name.c_str(), [m, threads](benchmark::State& state) {
-                double_workload& w = double_workload_of();
-                run_case(state, w.corners, *w.pairs, m, threads);
-            })->UseRealTime()->Unit(benchmark::kMicrosecond);
+            const obbsat::backend use = obbsat::backend::scalar;
+            benchmark::RegisterBenchmark(row(m, "corners", use, threads).c_str(),
+                                         [m, use, threads](benchmark::State& state) {
+                                             double_workload& w = double_workload_of();
+                                             run_case(state, w.corners, *w.pairs, m, use, threads);
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMicrosecond);
         }
     }
 }

@@ -1,6 +1,6 @@
 // The kernel table of the double stores: the entry points one SIMD backend
 // offers for pair lists over pose_records64 (one double pose per lane),
-// defined by kernel/lanes/double_isa.cpp compiled once per SIMD backend, and
+// defined by kernel/lanes/backend_isa.cpp compiled once per SIMD backend, and
 // found at the baseline by double_kernels_for. Corners in double have no lanes
 // yet: they run on the scalar references. Internal to the library.
 #pragma once
@@ -27,7 +27,7 @@ struct double_kernel_table {
 };
 
 /// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in
-/// its per-ISA object.
+/// its per-ISA object (lanes/backend_isa.cpp).
 template <class Backend>
 const double_kernel_table& double_kernels_of();
 

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
                                 obbsat::backend_name(obbsat::best_supported_backend()));
 
     obbsat_bench::register_collide_benchmarks(std::cerr);
+    obbsat_bench::register_collide64_benchmarks();
     obbsat_bench::register_convert_benchmarks();
 #if OBBSAT_BENCH_WITH_BOX2D
     obbsat_bench::register_box2d_peers();

@@ -2,9 +2,11 @@
 // SIMD row of backend_catalogue.hpp (see cmake/obbsat_isa.cmake) with
 // OBBSAT_ISA_NAME set to the backend's name and with that ISA's compiler
 // flags; it defines kernels_of<that backend>(), one row per method of
-// method_catalogue.hpp. Everything else here is private to this object
+// method_catalogue.hpp, and double_kernels_of<that backend>() for the double
+// poses (dispatch/double_kernel_table.hpp). Everything else here is private to this object
 // (README.md).
 #include "dispatch/backend_catalogue.hpp"
+#include "dispatch/double_kernel_table.hpp"
 #include "dispatch/kernel_table.hpp"
 #include "lanes/batch_kernel.hpp"
 #include "lanes/bounds_lanes.hpp"
@@ -15,6 +17,7 @@
 #include "lanes/pose_batch.hpp"
 #include "lanes/pose_corner_lanes.hpp"
 #include "lanes/pose_lanes.hpp"
+#include "lanes/pose64_lanes.hpp"
 #include "lanes/sat4_centered_lanes.hpp"
 #include "lanes/sat4_double_lanes.hpp"
 #include "lanes/sat4_lanes.hpp"
@@ -108,6 +111,16 @@ const kernel_table& kernels_of<this_backend>() {
     static_assert(!__builtin_constant_p(follows_catalogue(table, method_catalogue{})) ||
                       follows_catalogue(table, method_catalogue{}),
                   "the table holds the catalogue's rows");
+    return table;
+}
+
+// The double-pose lanes live in this object too: a second object per ISA would
+// instantiate the same xsimd templates for the same architecture (README.md).
+template <>
+const double_kernel_table& double_kernels_of<this_backend>() {
+    static constexpr double_kernel_table table{pose64_indexed_batch<isa_arch, pose_exact64_lanes>,
+                                               pose64_indexed_batch<isa_arch, pose_conservative64_lanes>,
+                                               pose64_indexed_batch<isa_arch, local64_lanes>};
     return table;
 }
 

@@ -3,6 +3,7 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
+#include <obbsat/collide64.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_pairs.hpp>
@@ -10,11 +11,13 @@
 #include <obbsat/pose.hpp>
 #include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/pose_soa.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 #include <obbsat/rect_soa.hpp>
 #include <obbsat/ref/bounds.hpp>
 #include <obbsat/ref/certified.hpp>

@@ -1,0 +1,139 @@
+// collide64/<method>/<store>/<backend>/pairs:<N>/threads:<T>: collide_pairs over the
+// double stores (poses on the scalar backend and on the best this CPU runs,
+// corners on the scalar backend, the only one they have) (obbsat/collide64.hpp) on the typical scene of the collide
+// rows, its poses widened to double and moved to UTM-like coordinates
+// (500000.125, 5712345.5), every value exact. Each row first checks its
+// verdicts against the double scalar references, pair by pair, then times.
+// The float rows collide/<method>/indexed_sorted/.../poses are the same pairs
+// in float32.
+#include "bench_registry.hpp"
+#include "bench_workload.hpp"
+
+#include <obbsat/backend.hpp>
+#include <obbsat/collide64.hpp>
+#include <obbsat/ref/conservative64.hpp>
+#include <obbsat/ref/exact64.hpp>
+#include <obbsat/ref/local64.hpp>
+#include <obbsat/ref/pose_conservative64.hpp>
+#include <obbsat/ref/pose_exact64.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace obbsat_bench {
+
+namespace {
+
+constexpr std::size_t double_pairs = 262144;
+
+struct double_workload {
+    obbsat::pose_records64 poses;
+    obbsat::rect_records64 corners;
+    const std::vector<obbsat::pair_index>* pairs;
+};
+
+obbsat::rect64 corners_of(const obbsat::rect_pose64& p) {
+    const double c = p.rotation.x, s = p.rotation.y, hx = p.half_extents.x, hy = p.half_extents.y;
+    auto at = [&](double a, double b) {
+        return obbsat::point64{p.center.x + a * c - b * s, p.center.y + a * s + b * c};
+    };
+    return obbsat::rect64{at(-hx, hy), at(hx, hy), at(hx, -hy), at(-hx, -hy)};
+}
+
+double_workload& double_workload_of() {
+    static std::unique_ptr<double_workload> built;
+    if (!built) {
+        workload& w = workload_for(double_pairs, obbsat::scene_density::typical);
+        const obbsat::pose_records& poses = w.poses();
+        std::vector<obbsat::rect_pose64> wide;
+        std::vector<obbsat::rect64> corners;
+        for (std::size_t i = 0; i < poses.size(); ++i) {
+            const obbsat::rect_pose p = poses[i];
+            const obbsat::rect_pose64 q{{500000.125 + p.center.x, 5712345.5 + p.center.y},
+                                        {p.half_extents.x, p.half_extents.y},
+                                        {p.rotation.x, p.rotation.y}};
+            wide.push_back(q);
+            corners.push_back(corners_of(q));
+        }
+        built.reset(new double_workload{obbsat::pose_records64(wide), obbsat::rect_records64(corners),
+                                        &w.sorted_pairs()});
+    }
+    return *built;
+}
+
+bool reference(obbsat::method m, const obbsat::rect_pose64& a, const obbsat::rect_pose64& b) {
+    switch (m) {
+        case obbsat::method::exact: return obbsat::ref::exact(a, b);
+        case obbsat::method::conservative: return obbsat::ref::conservative(a, b);
+        default: return obbsat::ref::local(a, b);
+    }
+}
+
+bool reference(obbsat::method m, const obbsat::rect64& a, const obbsat::rect64& b) {
+    return m == obbsat::method::exact ? obbsat::ref::exact(a, b) : obbsat::ref::conservative(a, b);
+}
+
+template <class Store>
+void run_case(benchmark::State& state, const Store& store, const std::vector<obbsat::pair_index>& pairs,
+              obbsat::method m, obbsat::backend use, unsigned threads) {
+    obbsat::collide_options options;
+    options.test = m;
+    options.use = use;
+    options.threads = threads;
+    std::size_t slow = 0;
+    options.slow_path_pairs = &slow;
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), options);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        if (verdicts[i] != (reference(m, store[pairs[i].a], store[pairs[i].b]) ? 1 : 0)) {
+            state.SkipWithError(("pair " + std::to_string(i) + " differs from the double reference").c_str());
+            return;
+        }
+    }
+    for (auto _ : state) {
+        obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), options);
+        benchmark::DoNotOptimize(verdicts.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(pairs.size()));
+    state.counters["slow_path_pairs"] = static_cast<double>(slow);
+}
+
+}  // namespace
+
+void register_collide64_benchmarks() {
+    auto row = [](obbsat::method m, const char* store, obbsat::backend use, unsigned threads) {
+        return std::string("collide64/") + obbsat::method_name(m) + "/" + store + "/" + obbsat::backend_name(use) +
+               "/pairs:" + std::to_string(double_pairs) + "/threads:" + std::to_string(threads);
+    };
+    std::vector<obbsat::backend> pose_backends{obbsat::backend::scalar};
+    if (obbsat::best_supported_backend() != obbsat::backend::scalar) {
+        pose_backends.push_back(obbsat::best_supported_backend());
+    }
+    for (const unsigned threads : {1u, 2u}) {
+        for (const obbsat::method m : obbsat::methods_on_doubles(obbsat::store_kind::poses)) {
+            for (const obbsat::backend use : pose_backends) {
+                benchmark::RegisterBenchmark(row(m, "poses", use, threads).c_str(),
+                                             [m, use, threads](benchmark::State& state) {
+                                                 double_workload& w = double_workload_of();
+                                                 run_case(state, w.poses, *w.pairs, m, use, threads);
+                                             })
+                    ->UseRealTime()
+                    ->Unit(benchmark::kMicrosecond);
+            }
+        }
+        for (const obbsat::method m : obbsat::methods_on_doubles(obbsat::store_kind::corners)) {
+            const obbsat::backend use = obbsat::backend::scalar;
+            benchmark::RegisterBenchmark(row(m, "corners", use, threads).c_str(),
+                                         [m, use, threads](benchmark::State& state) {
+                                             double_workload& w = double_workload_of();
+                                             run_case(state, w.corners, *w.pairs, m, use, threads);
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMicrosecond);
+        }
+    }
+}
+
+}  // namespace obbsat_bench

@@ -1,0 +1,201 @@
+// Pair lists over the double stores, split over threads: on double poses the
+// backend's double lanes (dispatch/double_kernel_table.hpp), or the scalar
+// references of scalar_ref/ (the *64 files) on the scalar backend; on double
+// corners always the scalar references (no lanes yet).
+#include "dispatch/double_kernel_table.hpp"
+#include "support/work_shares.hpp"
+
+#include <obbsat/collide64.hpp>
+#include <obbsat/error.hpp>
+#include <obbsat/oracle/contact64.hpp>
+#include <obbsat/oracle/pose_contact64.hpp>
+#include <obbsat/ref/certified64.hpp>
+#include <obbsat/ref/conservative64.hpp>
+#include <obbsat/ref/local64.hpp>
+#include <obbsat/ref/pose_conservative64.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace obbsat {
+
+namespace {
+
+// A pair costs tens of nanoseconds here (more on the exact slow path), so a
+// part is worth a core from fewer pairs than in the SIMD batch.
+constexpr std::size_t min_pairs_per_part = 2048;
+
+const char* store_description(store_kind s) { return s == store_kind::poses ? "double poses" : "double corners"; }
+
+void require_method_on_doubles(const collide_options& options, store_kind store) {
+    if (!is_method(options.test)) {
+        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
+                            ", which names no method");
+    }
+    if (!runs_on_doubles(options.test, store)) {
+        std::string offered;
+        for (const method m : methods_on_doubles(store)) {
+            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
+        }
+        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on " +
+                            store_description(store) + " (they take " + offered + ")");
+    }
+}
+
+void require_scalar_backend(const collide_options& options) {
+    if (options.use != backend::automatic && options.use != backend::scalar) {
+        throw invalid_input(std::string("backend ") + backend_name(options.use) +
+                            " has no kernels for double corners: they run on the scalar backend "
+                            "(pass backend::automatic or backend::scalar)");
+    }
+}
+
+void require_verdicts_apart(const std::uint8_t* verdicts, const pair_index* pairs, std::size_t count) {
+    const auto v = reinterpret_cast<std::uintptr_t>(verdicts);
+    const auto p = reinterpret_cast<std::uintptr_t>(pairs);
+    if (count != 0 && v < p + count * sizeof(pair_index) && p < v + count) {
+        throw invalid_input("verdicts and pairs share memory: the verdict buffer must not overlap pairs");
+    }
+}
+
+void require_indices(std::size_t size, const pair_index* pairs, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool a_bad = pairs[i].a >= size;
+        if (a_bad || pairs[i].b >= size) {
+            throw invalid_input("pair " + std::to_string(i) + ": index " + std::to_string(a_bad ? pairs[i].a : pairs[i].b) +
+                                " is out of range (" + std::to_string(size) + " rectangles)");
+        }
+    }
+}
+
+/// The checks every entry point makes, in order, before anything is written;
+/// returns the backend that will run.
+backend require_call(std::size_t size, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts,
+                     const collide_options& options, store_kind store) {
+    require_verdicts_apart(verdicts, pairs, count);
+    require_method_on_doubles(options, store);
+    backend ran = backend::scalar;
+    if (store == store_kind::poses) {
+        ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
+    } else {
+        require_scalar_backend(options);
+    }
+    require_indices(size, pairs, count);
+    return ran;
+}
+
+/// The backend's lanes for options.test on double poses.
+detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m) {
+    switch (m) {
+        case method::exact: return table.exact;
+        case method::conservative: return table.conservative;
+        default: return table.local;  // require_call admitted nothing else
+    }
+}
+
+void report_settled(const std::vector<std::size_t>& settled, const collide_options& options) {
+    if (options.slow_path_pairs != nullptr) {
+        std::size_t total = 0;
+        for (const std::size_t s : settled) {
+            total += s;
+        }
+        *options.slow_path_pairs = total;
+    }
+}
+
+/// method exact on one pair: the certified path, else the oracle; `settled`
+/// counts the pairs the oracle answered.
+template <class Item>
+bool exact_counted(const Item& a, const Item& b, std::size_t& settled) {
+    const ref::certified_verdict fast = ref::certify(a, b);
+    if (fast.separated || fast.intersecting) {
+        return fast.intersecting;
+    }
+    ++settled;
+    return oracle::intersects(a, b);
+}
+
+/// verdicts over [0, count) of `decide(a, b, settled)`, split over threads; the
+/// slow-path count goes to options.slow_path_pairs.
+template <class Store, class Decide>
+void decide_pairs(const Store& store, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts,
+                  const collide_options& options, const Decide& decide) {
+    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
+    std::vector<std::size_t> settled(parts, 0);
+    detail::run_parts(parts, [&](std::size_t part) {
+        const auto [begin, end] = detail::share_of(count, part, parts);
+        for (std::size_t i = begin; i < end; ++i) {
+            verdicts[i] = decide(store[pairs[i].a], store[pairs[i].b], settled[part]) ? 1 : 0;
+        }
+    });
+    report_settled(settled, options);
+}
+
+/// verdicts over [0, count) by a backend's lanes, split over threads.
+void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
+               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
+    std::vector<std::size_t> settled(parts, 0);
+    detail::run_parts(parts, [&](std::size_t part) {
+        const auto [begin, end] = detail::share_of(count, part, parts);
+        settled[part] = kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+    });
+    report_settled(settled, options);
+}
+
+}  // namespace
+
+backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options) {
+    const backend ran = require_call(poses.size(), pairs, count, verdicts, options, store_kind::poses);
+    if (const detail::double_kernel_table* table = detail::double_kernels_for(ran)) {
+        run_lanes(pose_kernel_of(*table, options.test), poses, pairs, count, verdicts, options);
+        return ran;
+    }
+    using pose64 = rect_pose64;
+    switch (options.test) {
+        case method::exact:
+            decide_pairs(poses, pairs, count, verdicts, options,
+                         [](const pose64& a, const pose64& b, std::size_t& settled) { return exact_counted(a, b, settled); });
+            break;
+        case method::conservative:
+            decide_pairs(poses, pairs, count, verdicts, options,
+                         [](const pose64& a, const pose64& b, std::size_t&) { return ref::conservative(a, b); });
+            break;
+        default:  // local: require_call admitted nothing else
+            decide_pairs(poses, pairs, count, verdicts, options,
+                         [](const pose64& a, const pose64& b, std::size_t&) { return ref::local(a, b); });
+            break;
+    }
+    return backend::scalar;
+}
+
+std::vector<std::uint8_t> collide_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), options);
+    return verdicts;
+}
+
+backend collide_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,
+                      std::uint8_t* verdicts, const collide_options& options) {
+    require_call(rects.size(), pairs, count, verdicts, options, store_kind::corners);
+    if (options.test == method::exact) {
+        decide_pairs(rects, pairs, count, verdicts, options,
+                     [](const rect64& a, const rect64& b, std::size_t& settled) { return exact_counted(a, b, settled); });
+    } else {  // conservative: require_call admitted nothing else
+        decide_pairs(rects, pairs, count, verdicts, options,
+                     [](const rect64& a, const rect64& b, std::size_t&) { return ref::conservative(a, b); });
+    }
+    return backend::scalar;
+}
+
+std::vector<std::uint8_t> collide_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
+                                        const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), options);
+    return verdicts;
+}
+
+}  // namespace obbsat

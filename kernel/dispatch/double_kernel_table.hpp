@@ -1,0 +1,38 @@
+// The kernel table of the double stores: the entry points one SIMD backend
+// offers for pair lists over pose_records64 (one double pose per lane),
+// defined by kernel/lanes/backend_isa.cpp compiled once per SIMD backend, and
+// found at the baseline by double_kernels_for. Corners in double have no lanes
+// yet: they run on the scalar references. Internal to the library.
+#pragma once
+
+#include <obbsat/backend.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace obbsat::detail {
+
+/// verdicts[i] = the method's verdict on records[pairs[i].a] and records[pairs[i].b]
+/// (pose_records64 records, 8 doubles each) for i < count; returns how many pairs
+/// the exact slow path settled (0 but for exact).
+using pose64_indexed_fn = std::size_t (*)(const double* records, const pair_index* pairs, std::size_t count,
+                                          std::uint8_t* verdicts);
+
+/// The entry points of one backend on double poses, one per method that runs there.
+struct double_kernel_table {
+    pose64_indexed_fn exact;
+    pose64_indexed_fn conservative;
+    pose64_indexed_fn local;
+};
+
+/// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in
+/// its per-ISA object (lanes/backend_isa.cpp).
+template <class Backend>
+const double_kernel_table& double_kernels_of();
+
+/// The table of `resolved` (a backend this CPU runs), or nullptr for the scalar
+/// backend and for a backend not compiled into this build.
+const double_kernel_table* double_kernels_for(backend resolved);
+
+}  // namespace obbsat::detail

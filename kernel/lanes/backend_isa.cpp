@@ -10,6 +10,7 @@
 #include "lanes/bounds_lanes.hpp"
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
+#include "lanes/contact_lanes.hpp"
 #include "lanes/fused_multiply_add.hpp"
 #include "lanes/largest_index_lanes.hpp"
 #include "lanes/pose_batch.hpp"
@@ -108,6 +109,12 @@ const kernel_table& kernels_of<this_backend>() {
     static_assert(!__builtin_constant_p(follows_catalogue(table, method_catalogue{})) ||
                       follows_catalogue(table, method_catalogue{}),
                   "the table holds the catalogue's rows");
+    return table;
+}
+
+template <>
+const contact_kernel_table& contact_kernels_of<this_backend>() {
+    static constexpr contact_kernel_table table = contact_table_of<isa_arch>();
     return table;
 }
 

@@ -1,0 +1,332 @@
+// Contacts in lanes, one pair per lane: obbsat/ref/contact.hpp's steps written
+// once over the xsimd architecture, without branches (every choice a select,
+// every argmax a fold of strict compares, so ties go to the lowest index as in
+// the reference), and the batch driver that gathers each lane's two boxes and
+// scatters its contact. Private to each per-ISA object (README.md).
+#pragma once
+
+#include "dispatch/contact_kernel_table.hpp"
+#include "lanes/lanes.hpp"
+
+#include <obbsat/contact_manifold.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace obbsat::detail {
+namespace {
+
+/// A box per lane: vertices relative to the origin and outward face normals.
+template <class Arch>
+struct contact_box_lanes {
+    lanes<Arch> vx[4], vy[4], nx[4], ny[4];
+};
+
+/// The pose box of the reference: fields cx, cy, hx, hy, c, s; origin (ox0, oy0).
+template <class Arch>
+OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f, const lanes<Arch>& origin_x,
+                                                              const lanes<Arch>& origin_y) {
+    using batch = lanes<Arch>;
+    const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
+    const batch c = f[4], s = f[5];
+    const batch ux = f[2] * c, uy = f[2] * s;
+    const batch wx = f[3] * s, wy = f[3] * c;
+    contact_box_lanes<Arch> box;
+    box.vx[0] = (ox - ux) - wx;
+    box.vy[0] = (oy - uy) + wy;
+    box.vx[1] = (ox + ux) - wx;
+    box.vy[1] = (oy + uy) + wy;
+    box.vx[2] = (ox + ux) + wx;
+    box.vy[2] = (oy + uy) - wy;
+    box.vx[3] = (ox - ux) + wx;
+    box.vy[3] = (oy - uy) - wy;
+    box.nx[0] = -s;
+    box.ny[0] = c;
+    box.nx[1] = c;
+    box.ny[1] = s;
+    box.nx[2] = s;
+    box.ny[2] = -c;
+    box.nx[3] = -c;
+    box.ny[3] = -s;
+    return box;
+}
+
+/// The corner box of the reference: fields the corners UL, UR, LR, LL (x, y each).
+template <class Arch>
+OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_corner_box(const lanes<Arch>* f, const lanes<Arch>& origin_x,
+                                                                const lanes<Arch>& origin_y) {
+    using batch = lanes<Arch>;
+    batch ex[4], ey[4];
+    for (int k = 0; k < 4; ++k) {
+        const int next = (k + 1) & 3;
+        ex[k] = f[2 * next] - f[2 * k];
+        ey[k] = f[2 * next + 1] - f[2 * k + 1];
+    }
+    const auto clockwise = ((ex[0] * ey[1]) - (ey[0] * ex[1])) < batch(0.0f);
+    contact_box_lanes<Arch> box;
+    for (int k = 0; k < 4; ++k) {
+        box.vx[k] = f[2 * k] - origin_x;
+        box.vy[k] = f[2 * k + 1] - origin_y;
+        box.nx[k] = xsimd::select(clockwise, -ey[k], ey[k]);
+        box.ny[k] = xsimd::select(clockwise, ex[k], -ex[k]);
+    }
+    return box;
+}
+
+/// The contact of each lane's pair, as the reference's fields (feature keys
+/// coded index_a + 4·type_a + 16·index_b + 64·type_b, exact small floats).
+template <class Arch>
+struct contact_out_lanes {
+    lanes<Arch> nx, ny, depth, count;
+    lanes<Arch> x[2], y[2], separation[2], feature[2];
+};
+
+/// Step 1 and 2 for one box's faces against the other's vertices, and the
+/// argmax fold: the separation, index, normal, normal length and face ends of
+/// the best face.
+template <class Arch>
+struct best_face_lanes {
+    lanes<Arch> sep, index, nx, ny, len, x1, y1, x2, y2;
+};
+
+template <class Arch>
+OBBSAT_LANE_INLINE void face_lengths_lanes(const contact_box_lanes<Arch>& box, lanes<Arch>* len) {
+    for (int k = 0; k < 4; ++k) {
+        len[k] = xsimd::sqrt((box.nx[k] * box.nx[k]) + (box.ny[k] * box.ny[k]));
+    }
+}
+
+template <class Arch>
+OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_lanes<Arch>& faces,
+                                                             const lanes<Arch>* len,
+                                                             const contact_box_lanes<Arch>& other) {
+    using batch = lanes<Arch>;
+    best_face_lanes<Arch> best;
+    for (int k = 0; k < 4; ++k) {
+        batch least = (faces.nx[k] * (other.vx[0] - faces.vx[k])) + (faces.ny[k] * (other.vy[0] - faces.vy[k]));
+        for (int j = 1; j < 4; ++j) {
+            least = min_pick((faces.nx[k] * (other.vx[j] - faces.vx[k])) + (faces.ny[k] * (other.vy[j] - faces.vy[k])),
+                             least);
+        }
+        const batch sep = least / len[k];
+        const int next = (k + 1) & 3;
+        if (k == 0) {
+            best = best_face_lanes<Arch>{sep,         batch(0.0f),    faces.nx[0],    faces.ny[0], len[0],
+                                         faces.vx[0], faces.vy[0], faces.vx[next], faces.vy[next]};
+        } else {
+            const auto better = sep > best.sep;
+            best.sep = xsimd::select(better, sep, best.sep);
+            best.index = xsimd::select(better, batch(static_cast<float>(k)), best.index);
+            best.nx = xsimd::select(better, faces.nx[k], best.nx);
+            best.ny = xsimd::select(better, faces.ny[k], best.ny);
+            best.len = xsimd::select(better, len[k], best.len);
+            best.x1 = xsimd::select(better, faces.vx[k], best.x1);
+            best.y1 = xsimd::select(better, faces.vy[k], best.y1);
+            best.x2 = xsimd::select(better, faces.vx[next], best.x2);
+            best.y2 = xsimd::select(better, faces.vy[next], best.y2);
+        }
+    }
+    return best;
+}
+
+/// Step 3's span of a box.
+template <class Arch>
+OBBSAT_LANE_INLINE lanes<Arch> span_lanes(const contact_box_lanes<Arch>& box) {
+    lanes<Arch> lo_x = box.vx[0], hi_x = box.vx[0], lo_y = box.vy[0], hi_y = box.vy[0];
+    for (int j = 1; j < 4; ++j) {
+        lo_x = min_pick(box.vx[j], lo_x);
+        hi_x = max_pick(box.vx[j], hi_x);
+        lo_y = min_pick(box.vy[j], lo_y);
+        hi_y = max_pick(box.vy[j], hi_y);
+    }
+    return max_pick(hi_x - lo_x, hi_y - lo_y);
+}
+
+/// Steps 1 to 8 of the reference for boxes a and b, relative to the origin.
+template <class Arch>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_lanes<Arch>& a,
+                                                            const contact_box_lanes<Arch>& b,
+                                                            const lanes<Arch>& origin_x,
+                                                            const lanes<Arch>& origin_y, float margin_value) {
+    using batch = lanes<Arch>;
+    const batch zero(0.0f), one(1.0f), four(4.0f), sixteen(16.0f), margin(margin_value);
+
+    // Steps 1 and 2.
+    batch len_a[4], len_b[4];
+    face_lengths_lanes<Arch>(a, len_a);
+    face_lengths_lanes<Arch>(b, len_b);
+    const best_face_lanes<Arch> fa = best_face_lanes_of<Arch>(a, len_a, b);
+    const best_face_lanes<Arch> fb = best_face_lanes_of<Arch>(b, len_b, a);
+
+    // Step 3.
+    const batch tol = batch(0x1p-10f) * min_pick(span_lanes<Arch>(a), span_lanes<Arch>(b));
+    const auto flip = fb.sep > (fa.sep + tol);
+
+    // Step 4.
+    const batch r = xsimd::select(flip, fb.index, fa.index);
+    const batch sr = xsimd::select(flip, fb.sep, fa.sep);
+    const batch len_r = xsimd::select(flip, fb.len, fa.len);
+    const batch ux = xsimd::select(flip, fb.nx, fa.nx) / len_r;
+    const batch uy = xsimd::select(flip, fb.ny, fa.ny) / len_r;
+    const batch q1x = xsimd::select(flip, fb.x1, fa.x1), q1y = xsimd::select(flip, fb.y1, fa.y1);
+    const batch q2x = xsimd::select(flip, fb.x2, fa.x2), q2y = xsimd::select(flip, fb.y2, fa.y2);
+    contact_out_lanes<Arch> out;
+    out.nx = xsimd::select(flip, -ux, ux);
+    out.ny = xsimd::select(flip, -uy, uy);
+    out.depth = zero - sr;
+
+    // Step 5: the incident face of the other box.
+    batch k, most_against, p1x, p1y, p2x, p2y;
+    for (int f = 0; f < 4; ++f) {
+        const int next = (f + 1) & 3;
+        const batch nx = xsimd::select(flip, a.nx[f], b.nx[f]), ny = xsimd::select(flip, a.ny[f], b.ny[f]);
+        const batch len = xsimd::select(flip, len_a[f], len_b[f]);
+        const batch along = ((nx * ux) + (ny * uy)) / len;
+        const batch x1 = xsimd::select(flip, a.vx[f], b.vx[f]), y1 = xsimd::select(flip, a.vy[f], b.vy[f]);
+        const batch x2 = xsimd::select(flip, a.vx[next], b.vx[next]);
+        const batch y2 = xsimd::select(flip, a.vy[next], b.vy[next]);
+        if (f == 0) {
+            k = zero;
+            most_against = along;
+            p1x = x1, p1y = y1, p2x = x2, p2y = y2;
+        } else {
+            const auto better = along < most_against;
+            most_against = xsimd::select(better, along, most_against);
+            k = xsimd::select(better, batch(static_cast<float>(f)), k);
+            p1x = xsimd::select(better, x1, p1x);
+            p1y = xsimd::select(better, y1, p1y);
+            p2x = xsimd::select(better, x2, p2x);
+            p2y = xsimd::select(better, y2, p2y);
+        }
+    }
+
+    // Step 6: clip to the side planes.
+    const batch tx = q2x - q1x, ty = q2y - q1y;
+    const batch T = (tx * tx) + (ty * ty);
+    const batch tau[2] = {((p1x - q1x) * tx) + ((p1y - q1y) * ty), ((p2x - q1x) * tx) + ((p2y - q1y) * ty)};
+    const auto clipped_away = ((tau[0] < zero) & (tau[1] < zero)) | ((tau[0] > T) & (tau[1] > T));
+    const auto in_reach = !((fa.sep > margin) | (fb.sep > margin) | clipped_away);
+    const batch den = tau[0] - tau[1];
+    const batch lambda_low = tau[0] / den, lambda_high = (tau[0] - T) / den;
+    const batch along_x = p2x - p1x, along_y = p2y - p1y;
+    const batch r_next = xsimd::select((r + one) == four, zero, r + one);
+    const batch k_next = xsimd::select((k + one) == four, zero, k + one);
+    const batch ex[2] = {p1x, p2x}, ey[2] = {p1y, p2y};
+    const batch vertex_of_incident[2] = {k, k_next};
+
+    batch px[2], py[2], sep[2], feature[2];
+    lane_mask<Arch> keep[2];
+    for (int e = 0; e < 2; ++e) {
+        const auto below = tau[e] < zero;
+        const auto moved = below | (tau[e] > T);
+        const batch lambda = xsimd::select(below, lambda_low, lambda_high);
+        px[e] = xsimd::select(moved, p1x + (lambda * along_x), ex[e]);
+        py[e] = xsimd::select(moved, p1y + (lambda * along_y), ey[e]);
+        // Step 8: feature codes, index + 4·type, face type 1.
+        const batch ref_code = xsimd::select(moved, xsimd::select(below, r, r_next), r + four);
+        const batch inc_code = xsimd::select(moved, k + four, vertex_of_incident[e]);
+        feature[e] = xsimd::select(flip, inc_code + (sixteen * ref_code), ref_code + (sixteen * inc_code));
+        // Step 7.
+        sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
+        keep[e] = in_reach & (sep[e] <= margin);
+    }
+    // The second point only when it is not the first again.
+    keep[1] = keep[1] & !(keep[0] & (px[1] == px[0]) & (py[1] == py[0]));
+    // Kept points first, unused slots zero.
+    const auto first_from_second = (!keep[0]) & keep[1];
+    const auto second_kept = keep[0] & keep[1];
+    const auto first_kept = keep[0] | keep[1];
+    for (int e = 0; e < 2; ++e) {
+        px[e] = origin_x + px[e];
+        py[e] = origin_y + py[e];
+    }
+    out.x[0] = xsimd::select(first_kept, xsimd::select(first_from_second, px[1], px[0]), zero);
+    out.y[0] = xsimd::select(first_kept, xsimd::select(first_from_second, py[1], py[0]), zero);
+    out.separation[0] = xsimd::select(first_kept, xsimd::select(first_from_second, sep[1], sep[0]), zero);
+    out.feature[0] = xsimd::select(first_kept, xsimd::select(first_from_second, feature[1], feature[0]), zero);
+    out.x[1] = xsimd::select(second_kept, px[1], zero);
+    out.y[1] = xsimd::select(second_kept, py[1], zero);
+    out.separation[1] = xsimd::select(second_kept, sep[1], zero);
+    out.feature[1] = xsimd::select(second_kept, feature[1], zero);
+    out.count = xsimd::select(keep[0], one, zero) + xsimd::select(keep[1], one, zero);
+    return out;
+}
+
+/// A feature key from its code index_a + 4·type_a + 16·index_b + 64·type_b.
+inline contact_feature feature_from_code(float code) {
+    const auto c = static_cast<unsigned>(code);
+    return contact_feature{static_cast<std::uint8_t>(c & 3u), static_cast<feature_type>((c >> 2) & 1u),
+                           static_cast<std::uint8_t>((c >> 4) & 3u), static_cast<feature_type>((c >> 6) & 1u)};
+}
+
+/// The batch driver: out[i] = contact of box a(i) and box b(i) (see contact_fn),
+/// Fields floats read from each record, Box building the lanes' boxes, the
+/// origin being A's fields 0 and 1 (a pose's center, a quad's UL). The last,
+/// partial vector repeats its last pair in the unused lanes.
+template <class Arch, std::size_t Fields, bool Corners>
+void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                   const pair_index* pairs, std::size_t count, float margin, contact* out) {
+    using batch = lanes<Arch>;
+    constexpr std::size_t width = batch::size;
+    for (std::size_t i = 0; i < count; i += width) {
+        const std::size_t valid = count - i < width ? count - i : width;
+        alignas(64) float staged_a[Fields][width];
+        alignas(64) float staged_b[Fields][width];
+        for (std::size_t lane = 0; lane < width; ++lane) {
+            const std::size_t pair = i + (lane < valid ? lane : valid - 1);
+            const std::size_t ia = pairs != nullptr ? pairs[pair].a : pair;
+            const std::size_t ib = pairs != nullptr ? pairs[pair].b : pair;
+            const float* ra = a + a_stride * ia;
+            const float* rb = b + b_stride * ib;
+            for (std::size_t f = 0; f < Fields; ++f) {
+                staged_a[f][lane] = ra[f];
+                staged_b[f][lane] = rb[f];
+            }
+        }
+        batch fa[Fields], fb[Fields];
+        for (std::size_t f = 0; f < Fields; ++f) {
+            fa[f] = batch::load_aligned(staged_a[f]);
+            fb[f] = batch::load_aligned(staged_b[f]);
+        }
+        const batch origin_x = fa[0], origin_y = fa[1];
+        contact_out_lanes<Arch> c;
+        if constexpr (Corners) {
+            c = contact_lanes_of<Arch>(contact_corner_box<Arch>(fa, origin_x, origin_y),
+                                       contact_corner_box<Arch>(fb, origin_x, origin_y), origin_x, origin_y, margin);
+        } else {
+            c = contact_lanes_of<Arch>(contact_pose_box<Arch>(fa, origin_x, origin_y),
+                                       contact_pose_box<Arch>(fb, origin_x, origin_y), origin_x, origin_y, margin);
+        }
+        constexpr int fields_out = 12;
+        alignas(64) float staged_out[fields_out][width];
+        const batch* columns[fields_out] = {&c.nx,           &c.ny,         &c.depth,    &c.count,
+                                            &c.x[0],         &c.y[0],       &c.separation[0], &c.feature[0],
+                                            &c.x[1],         &c.y[1],       &c.separation[1], &c.feature[1]};
+        for (int f = 0; f < fields_out; ++f) {
+            columns[f]->store_aligned(staged_out[f]);
+        }
+        for (std::size_t lane = 0; lane < valid; ++lane) {
+            contact& o = out[i + lane];
+            o.nx = staged_out[0][lane];
+            o.ny = staged_out[1][lane];
+            o.depth = staged_out[2][lane];
+            o.point_count = static_cast<std::uint32_t>(staged_out[3][lane]);
+            for (int p = 0; p < 2; ++p) {
+                o.points[p].x = staged_out[4 + 4 * p][lane];
+                o.points[p].y = staged_out[5 + 4 * p][lane];
+                o.points[p].separation = staged_out[6 + 4 * p][lane];
+                o.points[p].feature = feature_from_code(staged_out[7 + 4 * p][lane]);
+            }
+        }
+    }
+}
+
+/// The contact table of this ISA.
+template <class Arch>
+constexpr contact_kernel_table contact_table_of() {
+    return contact_kernel_table{contact_batch<Arch, 6, false>, contact_batch<Arch, 8, true>};
+}
+
+}  // namespace
+}  // namespace obbsat::detail

@@ -1,0 +1,208 @@
+#include <obbsat/ref/contact.hpp>
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+
+namespace obbsat::ref {
+
+namespace {
+
+float dot(point p, point q) { return (p.x * q.x) + (p.y * q.y); }
+float cross(point p, point q) { return (p.x * q.y) - (p.y * q.x); }
+point minus(point p, point q) { return point{p.x - q.x, p.y - q.y}; }
+float min_of(float u, float v) { return u < v ? u : v; }
+float max_of(float u, float v) { return u > v ? u : v; }
+
+const point& corner(const rect& r, int k) {
+    const point* corners[4] = {&r.ul, &r.ur, &r.lr, &r.ll};
+    return *corners[k];
+}
+
+/// Edge k of the quad as given: corner (k + 1) − corner k.
+point edge(const rect& r, int k) { return minus(corner(r, (k + 1) & 3), corner(r, k)); }
+
+bool normal_finite(float x) { return std::isfinite(x) && x >= FLT_MIN; }
+
+/// Step 1: the length of every face normal.
+void face_lengths(const contact_box& box, float len[4]) {
+    for (int k = 0; k < 4; ++k) {
+        len[k] = std::sqrt(dot(box.n[k], box.n[k]));
+    }
+}
+
+/// Step 2 for one box's faces against the other's vertices.
+void face_separations(const contact_box& faces, const float len[4], const contact_box& other, float sep[4]) {
+    for (int k = 0; k < 4; ++k) {
+        float least = dot(faces.n[k], minus(other.v[0], faces.v[k]));
+        for (int j = 1; j < 4; ++j) {
+            least = min_of(dot(faces.n[k], minus(other.v[j], faces.v[k])), least);
+        }
+        sep[k] = least / len[k];
+    }
+}
+
+/// The first index of the largest of four values.
+int argmax(const float value[4]) {
+    int best = 0;
+    for (int k = 1; k < 4; ++k) {
+        if (value[k] > value[best]) {
+            best = k;
+        }
+    }
+    return best;
+}
+
+/// Step 3: the larger side of the box's bounds.
+float span(const contact_box& box) {
+    float lo_x = box.v[0].x, hi_x = box.v[0].x, lo_y = box.v[0].y, hi_y = box.v[0].y;
+    for (int j = 1; j < 4; ++j) {
+        lo_x = min_of(box.v[j].x, lo_x);
+        hi_x = max_of(box.v[j].x, hi_x);
+        lo_y = min_of(box.v[j].y, lo_y);
+        hi_y = max_of(box.v[j].y, hi_y);
+    }
+    return max_of(hi_x - lo_x, hi_y - lo_y);
+}
+
+contact_feature feature_of(bool flip, int ref_index, feature_type ref_type, int inc_index, feature_type inc_type) {
+    const auto r = static_cast<std::uint8_t>(ref_index);
+    const auto i = static_cast<std::uint8_t>(inc_index);
+    return flip ? contact_feature{i, inc_type, r, ref_type} : contact_feature{r, ref_type, i, inc_type};
+}
+
+}  // namespace
+
+contact_box contact_box_of(const rect_pose& p, point origin) {
+    const float ox = p.center.x - origin.x, oy = p.center.y - origin.y;
+    const float c = p.rotation.x, s = p.rotation.y;
+    const float ux = p.half_extents.x * c, uy = p.half_extents.x * s;
+    const float wx = p.half_extents.y * s, wy = p.half_extents.y * c;
+    contact_box box;
+    box.v[0] = point{(ox - ux) - wx, (oy - uy) + wy};
+    box.v[1] = point{(ox + ux) - wx, (oy + uy) + wy};
+    box.v[2] = point{(ox + ux) + wx, (oy + uy) - wy};
+    box.v[3] = point{(ox - ux) + wx, (oy - uy) - wy};
+    box.n[0] = point{-s, c};
+    box.n[1] = point{c, s};
+    box.n[2] = point{s, -c};
+    box.n[3] = point{-c, -s};
+    return box;
+}
+
+contact_box contact_box_of(const rect& r, point origin) {
+    const bool clockwise = cross(edge(r, 0), edge(r, 1)) < 0.0f;
+    contact_box box;
+    for (int k = 0; k < 4; ++k) {
+        box.v[k] = minus(corner(r, k), origin);
+        const point e = edge(r, k);
+        box.n[k] = clockwise ? point{-e.y, e.x} : point{e.y, -e.x};
+    }
+    return box;
+}
+
+bool corners_accepted(const rect& r) {
+    int left = 0, right = 0;
+    for (int k = 0; k < 4; ++k) {
+        const point e = edge(r, k);
+        if (!normal_finite(dot(e, e))) {
+            return false;
+        }
+        const float turn = cross(e, edge(r, (k + 1) & 3));
+        left += turn > 0.0f ? 1 : 0;
+        right += turn < 0.0f ? 1 : 0;
+    }
+    return left == 4 || right == 4;
+}
+
+bool pose_accepted(const rect_pose& p) { return normal_finite(dot(p.rotation, p.rotation)); }
+
+contact contact_of_boxes(const contact_box& a, const contact_box& b, point origin, float margin) {
+    // Steps 1 and 2: the separation of every face, the best face of each box.
+    float len_a[4], len_b[4], sep_a[4], sep_b[4];
+    face_lengths(a, len_a);
+    face_lengths(b, len_b);
+    face_separations(a, len_a, b, sep_a);
+    face_separations(b, len_b, a, sep_b);
+    const int ia = argmax(sep_a), ib = argmax(sep_b);
+    const float sa = sep_a[ia], sb = sep_b[ib];
+
+    // Step 3: A's face unless B's separates clearly more.
+    const float tol = 0x1p-10f * min_of(span(a), span(b));
+    const bool flip = sb > (sa + tol);
+
+    // Step 4: the reference face and the normal.
+    const contact_box& ref = flip ? b : a;
+    const contact_box& inc = flip ? a : b;
+    const float* inc_len = flip ? len_a : len_b;
+    const int r = flip ? ib : ia;
+    const float sr = flip ? sb : sa;
+    const point u{ref.n[r].x / (flip ? len_b : len_a)[r], ref.n[r].y / (flip ? len_b : len_a)[r]};
+
+    contact out;
+    std::memset(&out, 0, sizeof out);
+    out.nx = flip ? -u.x : u.x;
+    out.ny = flip ? -u.y : u.y;
+    out.depth = 0.0f - sr;
+
+    // Step 5: the incident edge, the face of I most against u.
+    int k = 0;
+    float most_against = dot(inc.n[0], u) / inc_len[0];
+    for (int f = 1; f < 4; ++f) {
+        const float along = dot(inc.n[f], u) / inc_len[f];
+        if (along < most_against) {
+            most_against = along;
+            k = f;
+        }
+    }
+    const point p1 = inc.v[k], p2 = inc.v[(k + 1) & 3];
+
+    // Step 6: clip the edge to the reference face's side planes.
+    const point q1 = ref.v[r], q2 = ref.v[(r + 1) & 3];
+    const point t = minus(q2, q1);
+    const float T = dot(t, t);
+    const float tau[2] = {dot(minus(p1, q1), t), dot(minus(p2, q1), t)};
+    const bool clipped_away = (tau[0] < 0.0f && tau[1] < 0.0f) || (tau[0] > T && tau[1] > T);
+    if (sa > margin || sb > margin || clipped_away) {
+        return out;
+    }
+    const float den = tau[0] - tau[1];
+    const point along = minus(p2, p1);
+    const point ends[2] = {p1, p2};
+    point kept_at[2] = {};
+    for (int e = 0; e < 2; ++e) {
+        point p = ends[e];
+        contact_feature feature = feature_of(flip, r, feature_type::face, (k + e) & 3, feature_type::vertex);
+        if (tau[e] < 0.0f || tau[e] > T) {
+            const bool below = tau[e] < 0.0f;
+            const float lambda = below ? tau[0] / den : (tau[0] - T) / den;
+            p = point{p1.x + (lambda * along.x), p1.y + (lambda * along.y)};
+            feature = feature_of(flip, below ? r : (r + 1) & 3, feature_type::vertex, k, feature_type::face);
+        }
+        // Step 7: keep the point when it is within the margin and not the
+        // point already kept.
+        const float separation = dot(minus(p, q1), u);
+        const bool repeats = out.point_count == 1 && p.x == kept_at[0].x && p.y == kept_at[0].y;
+        if (separation <= margin && !repeats) {
+            kept_at[out.point_count] = p;
+            contact_point& kept = out.points[out.point_count++];
+            kept.x = origin.x + p.x;
+            kept.y = origin.y + p.y;
+            kept.separation = separation;
+            kept.feature = feature;
+        }
+    }
+    return out;
+}
+
+contact contact_of(const rect_pose& a, const rect_pose& b, float margin) {
+    const point origin = a.center;
+    return contact_of_boxes(contact_box_of(a, origin), contact_box_of(b, origin), origin, margin);
+}
+
+contact contact_of(const rect& a, const rect& b, float margin) {
+    const point origin = a.ul;
+    return contact_of_boxes(contact_box_of(a, origin), contact_box_of(b, origin), origin, margin);
+}
+
+}  // namespace obbsat::ref

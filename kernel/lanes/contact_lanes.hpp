@@ -17,6 +17,14 @@
 namespace obbsat::detail {
 namespace {
 
+/// -x, the sign bit flipped as the reference's negation flips it. Not
+/// xsimd's unary minus: for AVX-512, xsimd 8.1 computes it as 0 - x, which
+/// turns -(+0) into +0 where the reference gives -0.
+template <class Arch>
+OBBSAT_LANE_INLINE lanes<Arch> negated(const lanes<Arch>& x) {
+    return xsimd::bitwise_xor(x, lanes<Arch>(-0.0f));
+}
+
 /// A box per lane: vertices relative to the origin and outward face normals.
 template <class Arch>
 struct contact_box_lanes {
@@ -41,14 +49,14 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f
     box.vy[2] = (oy + uy) - wy;
     box.vx[3] = (ox - ux) + wx;
     box.vy[3] = (oy - uy) - wy;
-    box.nx[0] = -s;
+    box.nx[0] = negated<Arch>(s);
     box.ny[0] = c;
     box.nx[1] = c;
     box.ny[1] = s;
     box.nx[2] = s;
-    box.ny[2] = -c;
-    box.nx[3] = -c;
-    box.ny[3] = -s;
+    box.ny[2] = negated<Arch>(c);
+    box.nx[3] = negated<Arch>(c);
+    box.ny[3] = negated<Arch>(s);
     return box;
 }
 
@@ -68,8 +76,8 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_corner_box(const lanes<Arch>*
     for (int k = 0; k < 4; ++k) {
         box.vx[k] = f[2 * k] - origin_x;
         box.vy[k] = f[2 * k + 1] - origin_y;
-        box.nx[k] = xsimd::select(clockwise, -ey[k], ey[k]);
-        box.ny[k] = xsimd::select(clockwise, ex[k], -ex[k]);
+        box.nx[k] = xsimd::select(clockwise, negated<Arch>(ey[k]), ey[k]);
+        box.ny[k] = xsimd::select(clockwise, ex[k], negated<Arch>(ex[k]));
     }
     return box;
 }
@@ -172,8 +180,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     const batch q1x = xsimd::select(flip, fb.x1, fa.x1), q1y = xsimd::select(flip, fb.y1, fa.y1);
     const batch q2x = xsimd::select(flip, fb.x2, fa.x2), q2y = xsimd::select(flip, fb.y2, fa.y2);
     contact_out_lanes<Arch> out;
-    out.nx = xsimd::select(flip, -ux, ux);
-    out.ny = xsimd::select(flip, -uy, uy);
+    out.nx = xsimd::select(flip, negated<Arch>(ux), ux);
+    out.ny = xsimd::select(flip, negated<Arch>(uy), uy);
     out.depth = zero - sr;
 
     // Step 5: the incident face of the other box.

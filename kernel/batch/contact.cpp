@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
 namespace obbsat {
@@ -29,16 +30,22 @@ constexpr std::size_t pose_row_floats = sizeof(rect_pose) / sizeof(float);
 constexpr std::size_t rect_floats = sizeof(rect) / sizeof(float);
 static_assert(pose_row_floats == 6 && rect_floats == 8, "rows are packed floats");
 
+/// A float as the messages show it: its shortest round-trip-ish decimal form.
+std::string shown(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+    return text;
+}
+
 void require_margin(const contact_options& options) {
     if (!std::isfinite(options.margin) || !(options.margin >= 0.0f)) {
-        throw invalid_input("contact margin " + std::to_string(options.margin) + " must be finite and >= 0");
+        throw invalid_input("contact margin is " + shown(options.margin) + ": it must be finite and >= 0");
     }
 }
 
 void require_pose_accepted(const rect_pose& p, std::size_t index) {
     if (!ref::pose_accepted(p)) {
-        throw invalid_input("pose " + std::to_string(index) + ": rotation (" + std::to_string(p.rotation.x) + ", " +
-                            std::to_string(p.rotation.y) +
+        throw invalid_input("pose " + std::to_string(index) + ": rotation (" + shown(p.rotation.x) + ", " + shown(p.rotation.y) +
                             ") is too short or too long for contacts (c*c + s*s must be a normal float)");
     }
 }

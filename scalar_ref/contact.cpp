@@ -24,21 +24,21 @@ point edge(const rect& r, int k) { return minus(corner(r, (k + 1) & 3), corner(r
 
 bool normal_finite(float x) { return std::isfinite(x) && x >= FLT_MIN; }
 
-/// Step 1: the length of every face normal.
-void face_lengths(const contact_box& box, float len[4]) {
+/// Step 1: the reciprocal length of every face normal.
+void inverse_lengths(const contact_box& box, float inv[4]) {
     for (int k = 0; k < 4; ++k) {
-        len[k] = std::sqrt(dot(box.n[k], box.n[k]));
+        inv[k] = 1.0f / std::sqrt(dot(box.n[k], box.n[k]));
     }
 }
 
 /// Step 2 for one box's faces against the other's vertices.
-void face_separations(const contact_box& faces, const float len[4], const contact_box& other, float sep[4]) {
+void face_separations(const contact_box& faces, const float inv[4], const contact_box& other, float sep[4]) {
     for (int k = 0; k < 4; ++k) {
         float least = dot(faces.n[k], minus(other.v[0], faces.v[k]));
         for (int j = 1; j < 4; ++j) {
             least = min_of(dot(faces.n[k], minus(other.v[j], faces.v[k])), least);
         }
-        sep[k] = least / len[k];
+        sep[k] = least * inv[k];
     }
 }
 
@@ -119,11 +119,11 @@ bool pose_accepted(const rect_pose& p) { return normal_finite(dot(p.rotation, p.
 
 contact contact_of_boxes(const contact_box& a, const contact_box& b, point origin, float margin) {
     // Steps 1 and 2: the separation of every face, the best face of each box.
-    float len_a[4], len_b[4], sep_a[4], sep_b[4];
-    face_lengths(a, len_a);
-    face_lengths(b, len_b);
-    face_separations(a, len_a, b, sep_a);
-    face_separations(b, len_b, a, sep_b);
+    float inv_a[4], inv_b[4], sep_a[4], sep_b[4];
+    inverse_lengths(a, inv_a);
+    inverse_lengths(b, inv_b);
+    face_separations(a, inv_a, b, sep_a);
+    face_separations(b, inv_b, a, sep_b);
     const int ia = argmax(sep_a), ib = argmax(sep_b);
     const float sa = sep_a[ia], sb = sep_b[ib];
 
@@ -134,10 +134,11 @@ contact contact_of_boxes(const contact_box& a, const contact_box& b, point origi
     // Step 4: the reference face and the normal.
     const contact_box& ref = flip ? b : a;
     const contact_box& inc = flip ? a : b;
-    const float* inc_len = flip ? len_a : len_b;
+    const float* inc_inv = flip ? inv_a : inv_b;
+    const float* ref_inv = flip ? inv_b : inv_a;
     const int r = flip ? ib : ia;
     const float sr = flip ? sb : sa;
-    const point u{ref.n[r].x / (flip ? len_b : len_a)[r], ref.n[r].y / (flip ? len_b : len_a)[r]};
+    const point u{ref.n[r].x * ref_inv[r], ref.n[r].y * ref_inv[r]};
 
     contact out;
     std::memset(&out, 0, sizeof out);
@@ -147,9 +148,9 @@ contact contact_of_boxes(const contact_box& a, const contact_box& b, point origi
 
     // Step 5: the incident edge, the face of I most against u.
     int k = 0;
-    float most_against = dot(inc.n[0], u) / inc_len[0];
+    float most_against = dot(inc.n[0], u) * inc_inv[0];
     for (int f = 1; f < 4; ++f) {
-        const float along = dot(inc.n[f], u) / inc_len[f];
+        const float along = dot(inc.n[f], u) * inc_inv[f];
         if (along < most_against) {
             most_against = along;
             k = f;
@@ -166,7 +167,7 @@ contact contact_of_boxes(const contact_box& a, const contact_box& b, point origi
     if (sa > margin || sb > margin || clipped_away) {
         return out;
     }
-    const float den = tau[0] - tau[1];
+    const float g = 1.0f / (tau[0] - tau[1]);
     const point along = minus(p2, p1);
     const point ends[2] = {p1, p2};
     point kept_at[2] = {};
@@ -175,7 +176,7 @@ contact contact_of_boxes(const contact_box& a, const contact_box& b, point origi
         contact_feature feature = feature_of(flip, r, feature_type::face, (k + e) & 3, feature_type::vertex);
         if (tau[e] < 0.0f || tau[e] > T) {
             const bool below = tau[e] < 0.0f;
-            const float lambda = below ? tau[0] / den : (tau[0] - T) / den;
+            const float lambda = below ? tau[0] * g : (tau[0] - T) * g;
             p = point{p1.x + (lambda * along.x), p1.y + (lambda * along.y)};
             feature = feature_of(flip, below ? r : (r + 1) & 3, feature_type::vertex, k, feature_type::face);
         }

@@ -7,6 +7,7 @@
 
 #include "dispatch/contact_kernel_table.hpp"
 #include "lanes/lanes.hpp"
+#include "lanes/record_transpose.hpp"
 
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/rect.hpp>
@@ -29,6 +30,7 @@ OBBSAT_LANE_INLINE lanes<Arch> negated(const lanes<Arch>& x) {
 template <class Arch>
 struct contact_box_lanes {
     lanes<Arch> vx[4], vy[4], nx[4], ny[4];
+    lanes<Arch> inv[4];  ///< step 1: the reciprocal length of each face normal
 };
 
 /// The pose box of the reference: fields cx, cy, hx, hy, c, s; origin (ox0, oy0).
@@ -57,6 +59,12 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f
     box.ny[2] = negated<Arch>(c);
     box.nx[3] = negated<Arch>(c);
     box.ny[3] = negated<Arch>(s);
+    // The four faces' dot(n, n) are (s·s) + (c·c) in some order of the same
+    // two exact squares: one value, one square root and one division.
+    const batch inv = batch(1.0f) / xsimd::sqrt((c * c) + (s * s));
+    for (int k = 0; k < 4; ++k) {
+        box.inv[k] = inv;
+    }
     return box;
 }
 
@@ -78,6 +86,7 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_corner_box(const lanes<Arch>*
         box.vy[k] = f[2 * k + 1] - origin_y;
         box.nx[k] = xsimd::select(clockwise, negated<Arch>(ey[k]), ey[k]);
         box.ny[k] = xsimd::select(clockwise, ex[k], negated<Arch>(ex[k]));
+        box.inv[k] = batch(1.0f) / xsimd::sqrt((box.nx[k] * box.nx[k]) + (box.ny[k] * box.ny[k]));
     }
     return box;
 }
@@ -90,24 +99,16 @@ struct contact_out_lanes {
     lanes<Arch> x[2], y[2], separation[2], feature[2];
 };
 
-/// Step 1 and 2 for one box's faces against the other's vertices, and the
-/// argmax fold: the separation, index, normal, normal length and face ends of
-/// the best face.
+/// Step 2 for one box's faces against the other's vertices, and the argmax
+/// fold: the separation, index, normal, its reciprocal length and the face's
+/// ends of the best face.
 template <class Arch>
 struct best_face_lanes {
-    lanes<Arch> sep, index, nx, ny, len, x1, y1, x2, y2;
+    lanes<Arch> sep, index, nx, ny, inv, x1, y1, x2, y2;
 };
 
 template <class Arch>
-OBBSAT_LANE_INLINE void face_lengths_lanes(const contact_box_lanes<Arch>& box, lanes<Arch>* len) {
-    for (int k = 0; k < 4; ++k) {
-        len[k] = xsimd::sqrt((box.nx[k] * box.nx[k]) + (box.ny[k] * box.ny[k]));
-    }
-}
-
-template <class Arch>
 OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_lanes<Arch>& faces,
-                                                             const lanes<Arch>* len,
                                                              const contact_box_lanes<Arch>& other) {
     using batch = lanes<Arch>;
     best_face_lanes<Arch> best;
@@ -117,10 +118,10 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_la
             least = min_pick((faces.nx[k] * (other.vx[j] - faces.vx[k])) + (faces.ny[k] * (other.vy[j] - faces.vy[k])),
                              least);
         }
-        const batch sep = least / len[k];
+        const batch sep = least * faces.inv[k];
         const int next = (k + 1) & 3;
         if (k == 0) {
-            best = best_face_lanes<Arch>{sep,         batch(0.0f),    faces.nx[0],    faces.ny[0], len[0],
+            best = best_face_lanes<Arch>{sep,         batch(0.0f),    faces.nx[0],    faces.ny[0], faces.inv[0],
                                          faces.vx[0], faces.vy[0], faces.vx[next], faces.vy[next]};
         } else {
             const auto better = sep > best.sep;
@@ -128,7 +129,7 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_la
             best.index = xsimd::select(better, batch(static_cast<float>(k)), best.index);
             best.nx = xsimd::select(better, faces.nx[k], best.nx);
             best.ny = xsimd::select(better, faces.ny[k], best.ny);
-            best.len = xsimd::select(better, len[k], best.len);
+            best.inv = xsimd::select(better, faces.inv[k], best.inv);
             best.x1 = xsimd::select(better, faces.vx[k], best.x1);
             best.y1 = xsimd::select(better, faces.vy[k], best.y1);
             best.x2 = xsimd::select(better, faces.vx[next], best.x2);
@@ -160,12 +161,9 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     using batch = lanes<Arch>;
     const batch zero(0.0f), one(1.0f), four(4.0f), sixteen(16.0f), margin(margin_value);
 
-    // Steps 1 and 2.
-    batch len_a[4], len_b[4];
-    face_lengths_lanes<Arch>(a, len_a);
-    face_lengths_lanes<Arch>(b, len_b);
-    const best_face_lanes<Arch> fa = best_face_lanes_of<Arch>(a, len_a, b);
-    const best_face_lanes<Arch> fb = best_face_lanes_of<Arch>(b, len_b, a);
+    // Step 2 (step 1 is the boxes' inv).
+    const best_face_lanes<Arch> fa = best_face_lanes_of<Arch>(a, b);
+    const best_face_lanes<Arch> fb = best_face_lanes_of<Arch>(b, a);
 
     // Step 3.
     const batch tol = batch(0x1p-10f) * min_pick(span_lanes<Arch>(a), span_lanes<Arch>(b));
@@ -174,9 +172,9 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     // Step 4.
     const batch r = xsimd::select(flip, fb.index, fa.index);
     const batch sr = xsimd::select(flip, fb.sep, fa.sep);
-    const batch len_r = xsimd::select(flip, fb.len, fa.len);
-    const batch ux = xsimd::select(flip, fb.nx, fa.nx) / len_r;
-    const batch uy = xsimd::select(flip, fb.ny, fa.ny) / len_r;
+    const batch inv_r = xsimd::select(flip, fb.inv, fa.inv);
+    const batch ux = xsimd::select(flip, fb.nx, fa.nx) * inv_r;
+    const batch uy = xsimd::select(flip, fb.ny, fa.ny) * inv_r;
     const batch q1x = xsimd::select(flip, fb.x1, fa.x1), q1y = xsimd::select(flip, fb.y1, fa.y1);
     const batch q2x = xsimd::select(flip, fb.x2, fa.x2), q2y = xsimd::select(flip, fb.y2, fa.y2);
     contact_out_lanes<Arch> out;
@@ -189,8 +187,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     for (int f = 0; f < 4; ++f) {
         const int next = (f + 1) & 3;
         const batch nx = xsimd::select(flip, a.nx[f], b.nx[f]), ny = xsimd::select(flip, a.ny[f], b.ny[f]);
-        const batch len = xsimd::select(flip, len_a[f], len_b[f]);
-        const batch along = ((nx * ux) + (ny * uy)) / len;
+        const batch inv = xsimd::select(flip, a.inv[f], b.inv[f]);
+        const batch along = ((nx * ux) + (ny * uy)) * inv;
         const batch x1 = xsimd::select(flip, a.vx[f], b.vx[f]), y1 = xsimd::select(flip, a.vy[f], b.vy[f]);
         const batch x2 = xsimd::select(flip, a.vx[next], b.vx[next]);
         const batch y2 = xsimd::select(flip, a.vy[next], b.vy[next]);
@@ -215,8 +213,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     const batch tau[2] = {((p1x - q1x) * tx) + ((p1y - q1y) * ty), ((p2x - q1x) * tx) + ((p2y - q1y) * ty)};
     const auto clipped_away = ((tau[0] < zero) & (tau[1] < zero)) | ((tau[0] > T) & (tau[1] > T));
     const auto in_reach = !((fa.sep > margin) | (fb.sep > margin) | clipped_away);
-    const batch den = tau[0] - tau[1];
-    const batch lambda_low = tau[0] / den, lambda_high = (tau[0] - T) / den;
+    const batch g = one / (tau[0] - tau[1]);
+    const batch lambda_low = tau[0] * g, lambda_high = (tau[0] - T) * g;
     const batch along_x = p2x - p1x, along_y = p2y - p1y;
     const batch r_next = xsimd::select((r + one) == four, zero, r + one);
     const batch k_next = xsimd::select((k + one) == four, zero, k + one);

@@ -6,7 +6,9 @@
 //
 // A box is four vertices v[0..3] (UL, UR, LR, LL) and four outward face
 // normals n[0..3], face k running from v[k] to v[(k + 1) mod 4]. Normals are
-// not unit: their length len[k] divides every distance taken along them.
+// not unit: every distance taken along one is scaled by the reciprocal of its
+// length, inv[k] (one division per face, then products: in lanes a division
+// costs as much as several products).
 // Vertices are relative to an origin o (A's center for poses, A's UL corner
 // for corners), so that two nearby boxes far from (0, 0) lose nothing when
 // subtracted; positions are given back as o + p.
@@ -28,8 +30,9 @@
 // and square root one IEEE float32 operation in the order written, no fused
 // multiply-add; min picks u < v ? u : v and max picks u > v ? u : v, folded
 // left over indices 0 to 3; ties go to the lowest index:
-//   1. len[k] = sqrt(dot(n[k], n[k])) for every face of both boxes.
-//   2. Separation of A's face k: sepA[k] = (min over j of dot(n[k], B.v[j] − A.v[k])) / len[k],
+//   1. inv[k] = 1 / sqrt(dot(n[k], n[k])) for every face of both boxes (a
+//      pose's four faces all get the same value: only signs differ).
+//   2. Separation of A's face k: sepA[k] = (min over j of dot(n[k], B.v[j] − A.v[k])) · inv[k],
 //      each difference B.v[j] − A.v[k] taken per coordinate; sepB[k] the same
 //      with A and B swapped. ia = argmax sepA, sA = sepA[ia]; ib, sB likewise
 //      (argmax: the first index holding the maximum, by strict >).
@@ -39,15 +42,15 @@
 //      separates more than A's by more than tol (A is preferred, so the face
 //      does not flicker between steps of a resting contact).
 //   4. Reference box R, face r, separation sr: (A, ia, sA), or (B, ib, sB) when
-//      flip; incident box I the other. u = (n[r].x / len[r], n[r].y / len[r]).
+//      flip; incident box I the other. u = (n[r].x · inv[r], n[r].y · inv[r]).
 //      normal = u, or (−u.x, −u.y) when flip; depth = 0 − sr.
-//   5. Incident face: k minimising dot(I.n[k], u) / I.len[k] (the first such,
+//   5. Incident face: k minimising dot(I.n[k], u) · I.inv[k] (the first such,
 //      by strict <); its edge p1 = I.v[k], p2 = I.v[(k + 1) mod 4].
 //   6. Side planes: q1 = R.v[r], q2 = R.v[(r + 1) mod 4], t = q2 − q1,
 //      T = dot(t, t), τi = dot(pi − q1, t). The edge is clipped to 0 <= τ <= T
 //      (when T is 0, the reference face is one point and nothing is clipped:
 //      τ is 0 everywhere). No points when τ1 < 0 and τ2 < 0, or τ1 > T and
-//      τ2 > T. Otherwise, with den = τ1 − τ2, λ0 = τ1 / den, λT = (τ1 − T) / den:
+//      τ2 > T. Otherwise, with g = 1 / (τ1 − τ2), λ0 = τ1 · g, λT = (τ1 − T) · g:
 //      an endpoint with τ < 0 moves to λ0, one with τ > T to λT, where the
 //      point at λ is (p1.x + (λ·(p2.x − p1.x)), p1.y + (λ·(p2.y − p1.y))).
 //   7. Separation of each point: dot(p − q1, u). A point is kept iff

@@ -14,6 +14,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <utility>
 
 namespace obbsat::detail {
 namespace {
@@ -259,72 +261,127 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     return out;
 }
 
-/// A feature key from its code index_a + 4·type_a + 16·index_b + 64·type_b.
-inline contact_feature feature_from_code(float code) {
-    const auto c = static_cast<unsigned>(code);
-    return contact_feature{static_cast<std::uint8_t>(c & 3u), static_cast<feature_type>((c >> 2) & 1u),
-                           static_cast<std::uint8_t>((c >> 4) & 3u), static_cast<feature_type>((c >> 6) & 1u)};
+/// The feature key of a code index_a + 4·type_a + 16·index_b + 64·type_b as
+/// contact_feature's four bytes (index_a first, little-endian), reinterpreted
+/// as float lanes so that it travels with the contact's floats.
+template <class Arch>
+OBBSAT_LANE_INLINE lanes<Arch> feature_bits(const lanes<Arch>& code) {
+    using ints = xsimd::batch<std::int32_t, Arch>;
+    const ints c = xsimd::batch_cast<std::int32_t>(code);
+    const ints two_bits(3), one_bit(1);
+    const ints packed = (c & two_bits) | (((c >> 2) & one_bit) << 8) | (((c >> 4) & two_bits) << 16) |
+                        (((c >> 6) & one_bit) << 24);
+    return xsimd::bitwise_cast<lanes<Arch>>(packed);
 }
 
-/// The batch driver: out[i] = contact of box a(i) and box b(i) (see contact_fn),
-/// Fields floats read from each record, Box building the lanes' boxes, the
-/// origin being A's fields 0 and 1 (a pose's center, a quad's UL). The last,
-/// partial vector repeats its last pair in the unused lanes.
+/// The 32-bit unsigned integer of a small whole float, as float lanes' bits.
+template <class Arch>
+OBBSAT_LANE_INLINE lanes<Arch> count_bits(const lanes<Arch>& count) {
+    return xsimd::bitwise_cast<lanes<Arch>>(xsimd::batch_cast<std::int32_t>(count));
+}
+
+/// The twelve 4-byte fields of a contact, in its memory order, per lane.
+template <class Arch>
+struct contact_fields {
+    lanes<Arch> f[12];
+};
+
+template <class Arch>
+OBBSAT_LANE_INLINE contact_fields<Arch> fields_of(const contact_out_lanes<Arch>& c) {
+    return contact_fields<Arch>{{c.nx, c.ny, c.depth, count_bits<Arch>(c.count), c.x[0], c.y[0], c.separation[0],
+                                 feature_bits<Arch>(c.feature[0]), c.x[1], c.y[1], c.separation[1],
+                                 feature_bits<Arch>(c.feature[1])}};
+}
+
+/// The contacts of one vector of pairs from each lane's two records of
+/// Fields floats (fa, fb: one vector per field), A's first two fields the origin.
+template <class Arch, bool Corners>
+OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa, const lanes<Arch>* fb,
+                                                           float margin) {
+    const lanes<Arch> origin_x = fa[0], origin_y = fa[1];
+    if constexpr (Corners) {
+        return fields_of<Arch>(contact_lanes_of<Arch>(contact_corner_box<Arch>(fa, origin_x, origin_y),
+                                                      contact_corner_box<Arch>(fb, origin_x, origin_y), origin_x,
+                                                      origin_y, margin));
+    } else {
+        return fields_of<Arch>(contact_lanes_of<Arch>(contact_pose_box<Arch>(fa, origin_x, origin_y),
+                                                      contact_pose_box<Arch>(fb, origin_x, origin_y), origin_x,
+                                                      origin_y, margin));
+    }
+}
+
+/// Writes lane i of `c` as out[i] for the first `valid` lanes: a whole
+/// vector by three 4x4 transposes (each a third of every contact), a partial
+/// one through a staging copy.
+template <class Arch>
+OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* out, std::size_t valid) {
+    using transpose = record_transpose<Arch>;
+    constexpr std::size_t width = lanes<Arch>::size;
+    static_assert(sizeof(contact) == 12 * sizeof(float), "a contact is twelve 4-byte fields");
+    if (valid == width) {
+        auto put = [out](std::size_t lane) { return reinterpret_cast<float*>(out + lane); };
+        using blocks = std::make_integer_sequence<unsigned, width / 4>;
+        for (unsigned third = 0; third < 3; ++third) {
+            transpose::store_half(c.f + 4 * third, third, put, blocks{});
+        }
+        return;
+    }
+    alignas(64) float staged[12][width];
+    for (int f = 0; f < 12; ++f) {
+        c.f[f].store_aligned(staged[f]);
+    }
+    for (std::size_t lane = 0; lane < valid; ++lane) {
+        float row[12];
+        for (int f = 0; f < 12; ++f) {
+            row[f] = staged[f][lane];
+        }
+        std::memcpy(out + lane, row, sizeof row);
+    }
+}
+
+/// The batch driver: out[i] = contact of box a(i) and box b(i) (see
+/// contact_fn), Fields floats of each record read (six for a pose, eight for
+/// corners). Records of eight floats (pose_records, corner records) are read
+/// whole and transposed in registers; other rows through a staging copy. The
+/// last, partial vector repeats its last pair in the unused lanes.
 template <class Arch, std::size_t Fields, bool Corners>
 void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
                    const pair_index* pairs, std::size_t count, float margin, contact* out) {
     using batch = lanes<Arch>;
     constexpr std::size_t width = batch::size;
+    const bool whole_records = a_stride == 8 && b_stride == 8;
     for (std::size_t i = 0; i < count; i += width) {
         const std::size_t valid = count - i < width ? count - i : width;
-        alignas(64) float staged_a[Fields][width];
-        alignas(64) float staged_b[Fields][width];
-        for (std::size_t lane = 0; lane < width; ++lane) {
-            const std::size_t pair = i + (lane < valid ? lane : valid - 1);
-            const std::size_t ia = pairs != nullptr ? pairs[pair].a : pair;
-            const std::size_t ib = pairs != nullptr ? pairs[pair].b : pair;
-            const float* ra = a + a_stride * ia;
-            const float* rb = b + b_stride * ib;
-            for (std::size_t f = 0; f < Fields; ++f) {
-                staged_a[f][lane] = ra[f];
-                staged_b[f][lane] = rb[f];
+        auto pair_of = [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); };
+        auto index_a = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].a : pair_of(lane); };
+        auto index_b = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].b : pair_of(lane); };
+        batch fa[8], fb[8];
+        if (whole_records) {
+            const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
+                [&](std::size_t lane) { return reinterpret_cast<const rect*>(a + 8 * index_a(lane)); });
+            const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
+                [&](std::size_t lane) { return reinterpret_cast<const rect*>(b + 8 * index_b(lane)); });
+            for (std::size_t f = 0; f < 8; ++f) {
+                fa[f] = qa.c[f];
+                fb[f] = qb.c[f];
             }
-        }
-        batch fa[Fields], fb[Fields];
-        for (std::size_t f = 0; f < Fields; ++f) {
-            fa[f] = batch::load_aligned(staged_a[f]);
-            fb[f] = batch::load_aligned(staged_b[f]);
-        }
-        const batch origin_x = fa[0], origin_y = fa[1];
-        contact_out_lanes<Arch> c;
-        if constexpr (Corners) {
-            c = contact_lanes_of<Arch>(contact_corner_box<Arch>(fa, origin_x, origin_y),
-                                       contact_corner_box<Arch>(fb, origin_x, origin_y), origin_x, origin_y, margin);
         } else {
-            c = contact_lanes_of<Arch>(contact_pose_box<Arch>(fa, origin_x, origin_y),
-                                       contact_pose_box<Arch>(fb, origin_x, origin_y), origin_x, origin_y, margin);
-        }
-        constexpr int fields_out = 12;
-        alignas(64) float staged_out[fields_out][width];
-        const batch* columns[fields_out] = {&c.nx,           &c.ny,         &c.depth,    &c.count,
-                                            &c.x[0],         &c.y[0],       &c.separation[0], &c.feature[0],
-                                            &c.x[1],         &c.y[1],       &c.separation[1], &c.feature[1]};
-        for (int f = 0; f < fields_out; ++f) {
-            columns[f]->store_aligned(staged_out[f]);
-        }
-        for (std::size_t lane = 0; lane < valid; ++lane) {
-            contact& o = out[i + lane];
-            o.nx = staged_out[0][lane];
-            o.ny = staged_out[1][lane];
-            o.depth = staged_out[2][lane];
-            o.point_count = static_cast<std::uint32_t>(staged_out[3][lane]);
-            for (int p = 0; p < 2; ++p) {
-                o.points[p].x = staged_out[4 + 4 * p][lane];
-                o.points[p].y = staged_out[5 + 4 * p][lane];
-                o.points[p].separation = staged_out[6 + 4 * p][lane];
-                o.points[p].feature = feature_from_code(staged_out[7 + 4 * p][lane]);
+            alignas(64) float staged_a[Fields][width];
+            alignas(64) float staged_b[Fields][width];
+            for (std::size_t lane = 0; lane < width; ++lane) {
+                const float* ra = a + a_stride * index_a(lane);
+                const float* rb = b + b_stride * index_b(lane);
+                for (std::size_t f = 0; f < Fields; ++f) {
+                    staged_a[f][lane] = ra[f];
+                    staged_b[f][lane] = rb[f];
+                }
+            }
+            for (std::size_t f = 0; f < Fields; ++f) {
+                fa[f] = batch::load_aligned(staged_a[f]);
+                fb[f] = batch::load_aligned(staged_b[f]);
             }
         }
+        store_contacts<Arch>(contacts_of_fields<Arch, Corners>(fa, fb, margin), out + i, valid);
     }
 }
 

@@ -163,8 +163,9 @@ contact contact_of_boxes(const contact_box& a, const contact_box& b, point origi
     const point t = minus(q2, q1);
     const float T = dot(t, t);
     const float tau[2] = {dot(minus(p1, q1), t), dot(minus(p2, q1), t)};
-    const bool clipped_away = (tau[0] < 0.0f && tau[1] < 0.0f) || (tau[0] > T && tau[1] > T);
-    if (sa > margin || sb > margin || clipped_away) {
+    const bool reaches_low_side = tau[0] >= 0.0f || tau[1] >= 0.0f;
+    const bool reaches_high_side = tau[0] <= T || tau[1] <= T;
+    if (!(sa <= margin && sb <= margin && reaches_low_side && reaches_high_side)) {
         return out;
     }
     const float g = 1.0f / (tau[0] - tau[1]);

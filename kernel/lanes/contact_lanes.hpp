@@ -93,8 +93,39 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_corner_box(const lanes<Arch>*
     return box;
 }
 
-/// The contact of each lane's pair, as the reference's fields (feature keys
-/// coded index_a + 4·type_a + 16·index_b + 64·type_b, exact small floats).
+// The integers of a contact (its point count, its feature keys) travel with
+// its floats as float lanes holding their bits: a whole float converted to
+// int32 (one conversion instruction on every ISA) and its bits reinterpreted.
+// Nothing else of xsimd's integer batches is used: AVX2 builds some of their
+// operations from SSE2 halves, templates that two per-ISA objects would both
+// define (README.md). Nor are the bits made as subnormal products, which a
+// caller's flush-to-zero mode would wipe out.
+
+/// The float lanes whose bits are the int32 of the whole floats `n` (< 2^24).
+template <class Arch>
+OBBSAT_LANE_INLINE lanes<Arch> integer_bits(const lanes<Arch>& n) {
+    return xsimd::bitwise_cast<lanes<Arch>>(xsimd::batch_cast<std::int32_t>(n));
+}
+
+/// The float lanes whose bits are contact_feature's four bytes (index_a,
+/// type_a, index_b, type_b; little-endian) for codes index + 4·type of A and
+/// of B. The three low bytes make a whole float below 2^24; type_b's bit,
+/// bit 24, is OR-ed in as the bits of 2^-125 (exponent field 2).
+template <class Arch>
+OBBSAT_LANE_INLINE lanes<Arch> feature_bits(const lanes<Arch>& code_a, const lanes<Arch>& code_b) {
+    using batch = lanes<Arch>;
+    const batch zero(0.0f), one(1.0f), four(4.0f);
+    const batch type_a = xsimd::select(code_a >= four, one, zero), index_a = code_a - (four * type_a);
+    const auto b_is_face = code_b >= four;
+    const batch index_b = code_b - xsimd::select(b_is_face, four, zero);
+    const batch low_bytes = (index_a + (batch(0x1p8f) * type_a)) + (batch(0x1p16f) * index_b);
+    static_assert(0x1p-125f == 1.17549435e-38f * 2.0f, "2^-125 has the bits 0x01000000");
+    return xsimd::bitwise_or(integer_bits<Arch>(low_bytes), xsimd::select(b_is_face, batch(0x1p-125f), zero));
+}
+
+/// The contact of each lane's pair, as the reference's fields; the point
+/// count and the feature keys hold the bits of their integers (integer_bits,
+/// feature_bits).
 template <class Arch>
 struct contact_out_lanes {
     lanes<Arch> nx, ny, depth, count;
@@ -161,7 +192,7 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
                                                             const lanes<Arch>& origin_x,
                                                             const lanes<Arch>& origin_y, float margin_value) {
     using batch = lanes<Arch>;
-    const batch zero(0.0f), one(1.0f), four(4.0f), sixteen(16.0f), margin(margin_value);
+    const batch zero(0.0f), one(1.0f), four(4.0f), margin(margin_value);
 
     // Step 2 (step 1 is the boxes' inv).
     const best_face_lanes<Arch> fa = best_face_lanes_of<Arch>(a, b);
@@ -213,8 +244,11 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     const batch tx = q2x - q1x, ty = q2y - q1y;
     const batch T = (tx * tx) + (ty * ty);
     const batch tau[2] = {((p1x - q1x) * tx) + ((p1y - q1y) * ty), ((p2x - q1x) * tx) + ((p2y - q1y) * ty)};
-    const auto clipped_away = ((tau[0] < zero) & (tau[1] < zero)) | ((tau[0] > T) & (tau[1] > T));
-    const auto in_reach = !((fa.sep > margin) | (fb.sep > margin) | clipped_away);
+    // Written without negating a mask: xsimd 8.1's AVX2 negation compares
+    // masks through SSE2 halves, code that two per-ISA objects would share.
+    const auto reaches_low_side = (tau[0] >= zero) | (tau[1] >= zero);
+    const auto reaches_high_side = (tau[0] <= T) | (tau[1] <= T);
+    const auto in_reach = (fa.sep <= margin) & (fb.sep <= margin) & reaches_low_side & reaches_high_side;
     const batch g = one / (tau[0] - tau[1]);
     const batch lambda_low = tau[0] * g, lambda_high = (tau[0] - T) * g;
     const batch along_x = p2x - p1x, along_y = p2y - p1y;
@@ -234,50 +268,30 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
         // Step 8: feature codes, index + 4·type, face type 1.
         const batch ref_code = xsimd::select(moved, xsimd::select(below, r, r_next), r + four);
         const batch inc_code = xsimd::select(moved, k + four, vertex_of_incident[e]);
-        feature[e] = xsimd::select(flip, inc_code + (sixteen * ref_code), ref_code + (sixteen * inc_code));
+        feature[e] = feature_bits<Arch>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
         // Step 7.
         sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
         keep[e] = in_reach & (sep[e] <= margin);
     }
     // The second point only when it is not the first again.
-    keep[1] = keep[1] & !(keep[0] & (px[1] == px[0]) & (py[1] == py[0]));
+    const auto repeats = keep[0] & (px[1] == px[0]) & (py[1] == py[0]);
+    keep[1] = keep[1] & (xsimd::select(repeats, one, zero) == zero);
     // Kept points first, unused slots zero.
-    const auto first_from_second = (!keep[0]) & keep[1];
     const auto second_kept = keep[0] & keep[1];
-    const auto first_kept = keep[0] | keep[1];
     for (int e = 0; e < 2; ++e) {
         px[e] = origin_x + px[e];
         py[e] = origin_y + py[e];
     }
-    out.x[0] = xsimd::select(first_kept, xsimd::select(first_from_second, px[1], px[0]), zero);
-    out.y[0] = xsimd::select(first_kept, xsimd::select(first_from_second, py[1], py[0]), zero);
-    out.separation[0] = xsimd::select(first_kept, xsimd::select(first_from_second, sep[1], sep[0]), zero);
-    out.feature[0] = xsimd::select(first_kept, xsimd::select(first_from_second, feature[1], feature[0]), zero);
+    out.x[0] = xsimd::select(keep[0], px[0], xsimd::select(keep[1], px[1], zero));
+    out.y[0] = xsimd::select(keep[0], py[0], xsimd::select(keep[1], py[1], zero));
+    out.separation[0] = xsimd::select(keep[0], sep[0], xsimd::select(keep[1], sep[1], zero));
+    out.feature[0] = xsimd::select(keep[0], feature[0], xsimd::select(keep[1], feature[1], zero));
     out.x[1] = xsimd::select(second_kept, px[1], zero);
     out.y[1] = xsimd::select(second_kept, py[1], zero);
     out.separation[1] = xsimd::select(second_kept, sep[1], zero);
     out.feature[1] = xsimd::select(second_kept, feature[1], zero);
-    out.count = xsimd::select(keep[0], one, zero) + xsimd::select(keep[1], one, zero);
+    out.count = integer_bits<Arch>(xsimd::select(keep[0], one, zero) + xsimd::select(keep[1], one, zero));
     return out;
-}
-
-/// The feature key of a code index_a + 4·type_a + 16·index_b + 64·type_b as
-/// contact_feature's four bytes (index_a first, little-endian), reinterpreted
-/// as float lanes so that it travels with the contact's floats.
-template <class Arch>
-OBBSAT_LANE_INLINE lanes<Arch> feature_bits(const lanes<Arch>& code) {
-    using ints = xsimd::batch<std::int32_t, Arch>;
-    const ints c = xsimd::batch_cast<std::int32_t>(code);
-    const ints two_bits(3), one_bit(1);
-    const ints packed = (c & two_bits) | (((c >> 2) & one_bit) << 8) | (((c >> 4) & two_bits) << 16) |
-                        (((c >> 6) & one_bit) << 24);
-    return xsimd::bitwise_cast<lanes<Arch>>(packed);
-}
-
-/// The 32-bit unsigned integer of a small whole float, as float lanes' bits.
-template <class Arch>
-OBBSAT_LANE_INLINE lanes<Arch> count_bits(const lanes<Arch>& count) {
-    return xsimd::bitwise_cast<lanes<Arch>>(xsimd::batch_cast<std::int32_t>(count));
 }
 
 /// The twelve 4-byte fields of a contact, in its memory order, per lane.
@@ -288,9 +302,8 @@ struct contact_fields {
 
 template <class Arch>
 OBBSAT_LANE_INLINE contact_fields<Arch> fields_of(const contact_out_lanes<Arch>& c) {
-    return contact_fields<Arch>{{c.nx, c.ny, c.depth, count_bits<Arch>(c.count), c.x[0], c.y[0], c.separation[0],
-                                 feature_bits<Arch>(c.feature[0]), c.x[1], c.y[1], c.separation[1],
-                                 feature_bits<Arch>(c.feature[1])}};
+    return contact_fields<Arch>{{c.nx, c.ny, c.depth, c.count, c.x[0], c.y[0], c.separation[0], c.feature[0],
+                                 c.x[1], c.y[1], c.separation[1], c.feature[1]}};
 }
 
 /// The contacts of one vector of pairs from each lane's two records of

@@ -49,12 +49,13 @@
 //   6. Side planes: q1 = R.v[r], q2 = R.v[(r + 1) mod 4], t = q2 − q1,
 //      T = dot(t, t), τi = dot(pi − q1, t). The edge is clipped to 0 <= τ <= T
 //      (when T is 0, the reference face is one point and nothing is clipped:
-//      τ is 0 everywhere). No points when τ1 < 0 and τ2 < 0, or τ1 > T and
-//      τ2 > T. Otherwise, with g = 1 / (τ1 − τ2), λ0 = τ1 · g, λT = (τ1 − T) · g:
+//      τ is 0 everywhere). The edge reaches the face unless τ1 < 0 and
+//      τ2 < 0, or τ1 > T and τ2 > T (tested as: τ1 >= 0 or τ2 >= 0, and
+//      τ1 <= T or τ2 <= T). Then, with g = 1 / (τ1 − τ2), λ0 = τ1 · g, λT = (τ1 − T) · g:
 //      an endpoint with τ < 0 moves to λ0, one with τ > T to λT, where the
 //      point at λ is (p1.x + (λ·(p2.x − p1.x)), p1.y + (λ·(p2.y − p1.y))).
 //   7. Separation of each point: dot(p − q1, u). A point is kept iff
-//      sA <= margin, sB <= margin, the edge was not clipped away, and its
+//      sA <= margin, sB <= margin, the edge reaches the face, and its
 //      separation <= margin, and, for p2, unless p1 was kept at the same
 //      place (x == x and y == y: a reference face or incident edge of zero
 //      length gives one point, not the same twice). Kept points fill points[]

@@ -1,6 +1,7 @@
 // The contact entry points (obbsat/contact.hpp): check the input, resolve the
 // backend once, split the pairs over threads, run the backend's contact
 // kernel on each part.
+#include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "store/finite_check.hpp"
 #include "support/work_shares.hpp"
@@ -9,6 +10,7 @@
 #include <obbsat/error.hpp>
 #include <obbsat/ref/contact.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -58,8 +60,13 @@ void require_corners_accepted(const rect& r, std::size_t index) {
     }
 }
 
-/// Throws invalid_input naming the first pair with an index >= rows.
-void require_indices(std::size_t rows, const pair_index* pairs, std::size_t count, const char* what) {
+/// Throws invalid_input naming the first pair with an index >= rows: one
+/// pass of the backend's lanes finds the largest index, and only when it is
+/// out of range is the offender searched for.
+void require_indices(backend ran, std::size_t rows, const pair_index* pairs, std::size_t count, const char* what) {
+    if (count == 0 || detail::kernels_for(ran).largest_index(pairs, count) < rows) {
+        return;
+    }
     for (std::size_t i = 0; i < count; ++i) {
         const bool a_bad = pairs[i].a >= rows;
         if (a_bad || pairs[i].b >= rows) {
@@ -100,10 +107,26 @@ void run_split(detail::contact_fn kernel, const float* a, std::size_t a_stride, 
     });
 }
 
-void require_poses_accepted(const pose_records& poses) {
-    for (std::size_t i = 0; i < poses.size(); ++i) {
-        require_pose_accepted(poses[i], i);
+/// Throws as require_pose_accepted for the first pose of `count` records
+/// `stride` floats apart (c and s at floats 4 and 5) that contacts do not
+/// accept; one branch-free pass when all are accepted.
+void require_poses_accepted(const float* records, std::size_t stride, std::size_t count) {
+    bool all_accepted = true;
+    for (std::size_t i = 0; i < count; ++i) {
+        const float c = records[stride * i + 4], s = records[stride * i + 5];
+        const float square = (c * c) + (s * s);
+        all_accepted &= (square >= FLT_MIN) & (square <= FLT_MAX);
     }
+    if (!all_accepted) {
+        for (std::size_t i = 0; i < count; ++i) {
+            const float* v = records + stride * i;
+            require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, i);
+        }
+    }
+}
+
+void require_poses_accepted(const pose_records& poses) {
+    require_poses_accepted(poses.data(), pose_records::record_floats, poses.size());
 }
 
 void require_rects_accepted(const rect* rects, std::size_t count) {
@@ -127,7 +150,7 @@ backend contact_pairs(const pose_records& poses, const pair_index* pairs, std::s
     require_margin(options);
     const backend ran = resolve_backend(options.use);
     require_poses_accepted(poses);
-    require_indices(poses.size(), pairs, count, "poses");
+    require_indices(ran, poses.size(), pairs, count, "poses");
     const float* records = poses.data();
     run_split(detail::contact_kernels_for(ran).poses, records, pose_records::record_floats, records,
               pose_records::record_floats, pairs, count, out, options);
@@ -141,10 +164,8 @@ backend contact_pairs(const rect_pose* poses, std::size_t pose_count, const pair
     require_margin(options);
     const backend ran = resolve_backend(options.use);
     require_valid_poses(poses, pose_count);
-    for (std::size_t i = 0; i < pose_count; ++i) {
-        require_pose_accepted(poses[i], i);
-    }
-    require_indices(pose_count, pairs, count, "poses");
+    require_poses_accepted(reinterpret_cast<const float*>(poses), pose_row_floats, pose_count);
+    require_indices(ran, pose_count, pairs, count, "poses");
     const auto* rows = reinterpret_cast<const float*>(poses);
     run_split(detail::contact_kernels_for(ran).poses, rows, pose_row_floats, rows, pose_row_floats, pairs, count,
               out, options);
@@ -182,7 +203,7 @@ backend contact_pairs(const rect_records& rects, const pair_index* pairs, std::s
     require_margin(options);
     const backend ran = resolve_backend(options.use);
     require_rects_accepted(rects.data(), rects.size());
-    require_indices(rects.size(), pairs, count, "rectangles");
+    require_indices(ran, rects.size(), pairs, count, "rectangles");
     const auto* records = reinterpret_cast<const float*>(rects.data());
     run_split(detail::contact_kernels_for(ran).corners, records, rect_floats, records, rect_floats, pairs, count,
               out, options);
@@ -199,7 +220,7 @@ backend contact_pairs(const rect* rects, std::size_t rect_count, const pair_inde
         detail::require_finite(rects[i], i);
     }
     require_rects_accepted(rects, rect_count);
-    require_indices(rect_count, pairs, count, "rectangles");
+    require_indices(ran, rect_count, pairs, count, "rectangles");
     const auto* rows = reinterpret_cast<const float*>(rects);
     run_split(detail::contact_kernels_for(ran).corners, rows, rect_floats, rows, rect_floats, pairs, count, out,
               options);

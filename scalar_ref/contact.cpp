@@ -1,4 +1,5 @@
 #include <obbsat/ref/contact.hpp>
+#include <obbsat/ref/local.hpp>
 
 #include <cfloat>
 #include <cmath>
@@ -117,26 +118,28 @@ bool corners_accepted(const rect& r) {
 
 bool pose_accepted(const rect_pose& p) { return normal_finite(dot(p.rotation, p.rotation)); }
 
-contact contact_of_boxes(const contact_box& a, const contact_box& b, point origin, float margin) {
-    // Steps 1 and 2: the separation of every face, the best face of each box.
-    float inv_a[4], inv_b[4], sep_a[4], sep_b[4];
-    inverse_lengths(a, inv_a);
-    inverse_lengths(b, inv_b);
-    face_separations(a, inv_a, b, sep_a);
-    face_separations(b, inv_b, a, sep_b);
-    const int ia = argmax(sep_a), ib = argmax(sep_b);
-    const float sa = sep_a[ia], sb = sep_b[ib];
+namespace {
 
-    // Step 3: A's face unless B's separates clearly more.
-    const float tol = 0x1p-10f * min_of(span(a), span(b));
-    const bool flip = sb > (sa + tol);
+/// What steps 1 to 3 choose: the reference box (B when flip), its face r,
+/// and the best separations of A's and of B's faces.
+struct reference_choice {
+    bool flip;
+    int r;
+    float sa, sb;
+};
+
+/// Steps 4 to 8: the contact from the choice of the reference face.
+contact manifold_of(const contact_box& a, const float inv_a[4], const contact_box& b, const float inv_b[4],
+                    const reference_choice& choice, point origin, float margin) {
+    const bool flip = choice.flip;
+    const int r = choice.r;
+    const float sa = choice.sa, sb = choice.sb;
 
     // Step 4: the reference face and the normal.
     const contact_box& ref = flip ? b : a;
     const contact_box& inc = flip ? a : b;
     const float* inc_inv = flip ? inv_a : inv_b;
     const float* ref_inv = flip ? inv_b : inv_a;
-    const int r = flip ? ib : ia;
     const float sr = flip ? sb : sa;
     const point u{ref.n[r].x * ref_inv[r], ref.n[r].y * ref_inv[r]};
 
@@ -197,9 +200,57 @@ contact contact_of_boxes(const contact_box& a, const contact_box& b, point origi
     return out;
 }
 
+}  // namespace
+
+contact contact_of_boxes(const contact_box& a, const contact_box& b, point origin, float margin) {
+    // Steps 1 and 2: the separation of every face, the best face of each box.
+    float inv_a[4], inv_b[4], sep_a[4], sep_b[4];
+    inverse_lengths(a, inv_a);
+    inverse_lengths(b, inv_b);
+    face_separations(a, inv_a, b, sep_a);
+    face_separations(b, inv_b, a, sep_b);
+    const int ia = argmax(sep_a), ib = argmax(sep_b);
+    const float sa = sep_a[ia], sb = sep_b[ib];
+
+    // Step 3: A's face unless B's separates clearly more.
+    const float tol = 0x1p-10f * min_of(span(a), span(b));
+    const bool flip = sb > (sa + tol);
+    return manifold_of(a, inv_a, b, inv_b, reference_choice{flip, flip ? ib : ia, sa, sb}, origin, margin);
+}
+
 contact contact_of(const rect_pose& a, const rect_pose& b, float margin) {
     const point origin = a.center;
-    return contact_of_boxes(contact_box_of(a, origin), contact_box_of(b, origin), origin, margin);
+    const contact_box box_a = contact_box_of(a, origin), box_b = contact_box_of(b, origin);
+
+    // Pose step 1: one reciprocal length per box.
+    const float len_a = std::sqrt(dot(a.rotation, a.rotation)), len_b = std::sqrt(dot(b.rotation, b.rotation));
+    const float inv_a = 1.0f / len_a, inv_b = 1.0f / len_b;
+    const float inv_of_a[4] = {inv_a, inv_a, inv_a, inv_a}, inv_of_b[4] = {inv_b, inv_b, inv_b, inv_b};
+
+    // Pose step 2: the separation on each of the four axes, from method
+    // local's offsets and reaches (obbsat/ref/local.hpp).
+    const pose_axes axes = local_axes(a, b);
+    float sep[4];
+    for (int k = 0; k < 4; ++k) {
+        sep[k] = (std::fabs(axes.offset[k]) - axes.reach[k]) * (k < 2 ? inv_a : inv_b);
+    }
+    const bool a_on_y = sep[1] > sep[0], b_on_y = sep[3] > sep[2];
+    const float sa = a_on_y ? sep[1] : sep[0], sb = b_on_y ? sep[3] : sep[2];
+
+    // Pose step 3: A's face unless B's separates clearly more.
+    const float size_a = (a.half_extents.x + a.half_extents.y) * len_a;
+    const float size_b = (b.half_extents.x + b.half_extents.y) * len_b;
+    const float tol = 0x1p-10f * min_of(size_a, size_b);
+    const bool flip = sb > (sa + tol);
+
+    // The face of the chosen axis that faces the other box.
+    int r = 0;
+    if (!flip) {
+        r = a_on_y ? (axes.offset[1] >= 0.0f ? 0 : 2) : (axes.offset[0] >= 0.0f ? 1 : 3);
+    } else {
+        r = b_on_y ? (axes.offset[3] >= 0.0f ? 2 : 0) : (axes.offset[2] >= 0.0f ? 3 : 1);
+    }
+    return manifold_of(box_a, inv_of_a, box_b, inv_of_b, reference_choice{flip, r, sa, sb}, origin, margin);
 }
 
 contact contact_of(const rect& a, const rect& b, float margin) {

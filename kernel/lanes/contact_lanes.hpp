@@ -7,6 +7,7 @@
 
 #include "dispatch/contact_kernel_table.hpp"
 #include "lanes/lanes.hpp"
+#include "lanes/pose_lanes.hpp"
 #include "lanes/record_transpose.hpp"
 
 #include <obbsat/contact_manifold.hpp>
@@ -38,7 +39,7 @@ struct contact_box_lanes {
 /// The pose box of the reference: fields cx, cy, hx, hy, c, s; origin (ox0, oy0).
 template <class Arch>
 OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f, const lanes<Arch>& origin_x,
-                                                              const lanes<Arch>& origin_y) {
+                                                              const lanes<Arch>& origin_y, const lanes<Arch>& inv) {
     using batch = lanes<Arch>;
     const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
     const batch c = f[4], s = f[5];
@@ -62,8 +63,7 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f
     box.nx[3] = negated<Arch>(c);
     box.ny[3] = negated<Arch>(s);
     // The four faces' dot(n, n) are (s·s) + (c·c) in some order of the same
-    // two exact squares: one value, one square root and one division.
-    const batch inv = batch(1.0f) / xsimd::sqrt((c * c) + (s * s));
+    // two exact squares: one inv, computed by the caller.
     for (int k = 0; k < 4; ++k) {
         box.inv[k] = inv;
     }
@@ -185,31 +185,54 @@ OBBSAT_LANE_INLINE lanes<Arch> span_lanes(const contact_box_lanes<Arch>& box) {
     return max_pick(hi_x - lo_x, hi_y - lo_y);
 }
 
-/// Steps 1 to 8 of the reference for boxes a and b, relative to the origin.
+/// What steps 1 to 3 choose, per lane: the reference box (B where flip), its
+/// face r with its normal, that normal's reciprocal length and the face's
+/// ends, and the best separations of A's and of B's faces.
 template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_lanes<Arch>& a,
-                                                            const contact_box_lanes<Arch>& b,
-                                                            const lanes<Arch>& origin_x,
-                                                            const lanes<Arch>& origin_y, float margin_value) {
-    using batch = lanes<Arch>;
-    const batch zero(0.0f), one(1.0f), four(4.0f), margin(margin_value);
+struct reference_lanes {
+    lane_mask<Arch> flip;
+    lanes<Arch> r, sa, sb, nx, ny, inv, q1x, q1y, q2x, q2y;
+};
 
+/// Steps 1 to 3 of the reference for boxes a and b (the corner rule).
+template <class Arch>
+OBBSAT_LANE_INLINE reference_lanes<Arch> reference_of_boxes(const contact_box_lanes<Arch>& a,
+                                                            const contact_box_lanes<Arch>& b) {
     // Step 2 (step 1 is the boxes' inv).
     const best_face_lanes<Arch> fa = best_face_lanes_of<Arch>(a, b);
     const best_face_lanes<Arch> fb = best_face_lanes_of<Arch>(b, a);
-
     // Step 3.
-    const batch tol = batch(0x1p-10f) * min_pick(span_lanes<Arch>(a), span_lanes<Arch>(b));
+    const lanes<Arch> tol = lanes<Arch>(0x1p-10f) * min_pick(span_lanes<Arch>(a), span_lanes<Arch>(b));
     const auto flip = fb.sep > (fa.sep + tol);
+    return reference_lanes<Arch>{flip,
+                                 xsimd::select(flip, fb.index, fa.index),
+                                 fa.sep,
+                                 fb.sep,
+                                 xsimd::select(flip, fb.nx, fa.nx),
+                                 xsimd::select(flip, fb.ny, fa.ny),
+                                 xsimd::select(flip, fb.inv, fa.inv),
+                                 xsimd::select(flip, fb.x1, fa.x1),
+                                 xsimd::select(flip, fb.y1, fa.y1),
+                                 xsimd::select(flip, fb.x2, fa.x2),
+                                 xsimd::select(flip, fb.y2, fa.y2)};
+}
+
+/// Steps 4 to 8 of the reference from the choice of the reference face.
+template <class Arch>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_lanes<Arch>& a,
+                                                             const contact_box_lanes<Arch>& b,
+                                                             const reference_lanes<Arch>& ref,
+                                                             const lanes<Arch>& origin_x,
+                                                             const lanes<Arch>& origin_y, float margin_value) {
+    using batch = lanes<Arch>;
+    const batch zero(0.0f), one(1.0f), four(4.0f), margin(margin_value);
+    const auto flip = ref.flip;
+    const batch r = ref.r, q1x = ref.q1x, q1y = ref.q1y, q2x = ref.q2x, q2y = ref.q2y;
 
     // Step 4.
-    const batch r = xsimd::select(flip, fb.index, fa.index);
-    const batch sr = xsimd::select(flip, fb.sep, fa.sep);
-    const batch inv_r = xsimd::select(flip, fb.inv, fa.inv);
-    const batch ux = xsimd::select(flip, fb.nx, fa.nx) * inv_r;
-    const batch uy = xsimd::select(flip, fb.ny, fa.ny) * inv_r;
-    const batch q1x = xsimd::select(flip, fb.x1, fa.x1), q1y = xsimd::select(flip, fb.y1, fa.y1);
-    const batch q2x = xsimd::select(flip, fb.x2, fa.x2), q2y = xsimd::select(flip, fb.y2, fa.y2);
+    const batch sr = xsimd::select(flip, ref.sb, ref.sa);
+    const batch ux = ref.nx * ref.inv;
+    const batch uy = ref.ny * ref.inv;
     contact_out_lanes<Arch> out;
     out.nx = xsimd::select(flip, negated<Arch>(ux), ux);
     out.ny = xsimd::select(flip, negated<Arch>(uy), uy);
@@ -248,7 +271,7 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     // masks through SSE2 halves, code that two per-ISA objects would share.
     const auto reaches_low_side = (tau[0] >= zero) | (tau[1] >= zero);
     const auto reaches_high_side = (tau[0] <= T) | (tau[1] <= T);
-    const auto in_reach = (fa.sep <= margin) & (fb.sep <= margin) & reaches_low_side & reaches_high_side;
+    const auto in_reach = (ref.sa <= margin) & (ref.sb <= margin) & reaches_low_side & reaches_high_side;
     const batch g = one / (tau[0] - tau[1]);
     const batch lambda_low = tau[0] * g, lambda_high = (tau[0] - T) * g;
     const batch along_x = p2x - p1x, along_y = p2y - p1y;
@@ -294,6 +317,76 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_lanes_of(const contact_box_la
     return out;
 }
 
+/// The vertices, normals and inv of face r (0 to 3, per lane) of a box.
+template <class Arch>
+OBBSAT_LANE_INLINE void face_at(const contact_box_lanes<Arch>& box, const lanes<Arch>& r, lanes<Arch>* face) {
+    for (int k = 0; k < 4; ++k) {
+        const int next = (k + 1) & 3;
+        const lanes<Arch> values[7] = {box.nx[k], box.ny[k], box.inv[k], box.vx[k], box.vy[k], box.vx[next], box.vy[next]};
+        if (k == 0) {
+            for (int f = 0; f < 7; ++f) {
+                face[f] = values[f];
+            }
+        } else {
+            const auto here = r == lanes<Arch>(static_cast<float>(k));
+            for (int f = 0; f < 7; ++f) {
+                face[f] = xsimd::select(here, values[f], face[f]);
+            }
+        }
+    }
+}
+
+/// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
+/// (the reference's pose steps, then steps 4 to 8).
+template <class Arch>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arch>* fa, const lanes<Arch>* fb,
+                                                                 float margin) {
+    using batch = lanes<Arch>;
+    const batch zero(0.0f), one(1.0f), two(2.0f), three(3.0f);
+    const batch origin_x = fa[0], origin_y = fa[1];
+    // Pose step 1.
+    const batch len_a = xsimd::sqrt((fa[4] * fa[4]) + (fa[5] * fa[5]));
+    const batch len_b = xsimd::sqrt((fb[4] * fb[4]) + (fb[5] * fb[5]));
+    const batch inv_a = one / len_a, inv_b = one / len_b;
+    const contact_box_lanes<Arch> a = contact_pose_box<Arch>(fa, origin_x, origin_y, inv_a);
+    const contact_box_lanes<Arch> b = contact_pose_box<Arch>(fb, origin_x, origin_y, inv_b);
+
+    // Pose step 2: method local's offsets and reaches.
+    const pose_lanes<Arch> pa{fa[0], fa[1], fa[2], fa[3], fa[4], fa[5]};
+    const pose_lanes<Arch> pb{fb[0], fb[1], fb[2], fb[3], fb[4], fb[5]};
+    typename pose_steps<Arch>::axes axes;
+    batch P, Q;
+    pose_steps<Arch>::first_axes(pa, pb, axes, P, Q);
+    pose_steps<Arch>::second_axes(pa, pb, axes, P, Q);
+    batch sep[4];
+    for (int k = 0; k < 4; ++k) {
+        sep[k] = (xsimd::abs(axes.offset[k]) - axes.reach[k]) * (k < 2 ? inv_a : inv_b);
+    }
+    const auto a_on_y = sep[1] > sep[0], b_on_y = sep[3] > sep[2];
+    const batch sa = xsimd::select(a_on_y, sep[1], sep[0]), sb = xsimd::select(b_on_y, sep[3], sep[2]);
+
+    // Pose step 3.
+    const batch size_a = (fa[2] + fa[3]) * len_a, size_b = (fb[2] + fb[3]) * len_b;
+    const batch tol = batch(0x1p-10f) * min_pick(size_a, size_b);
+    const auto flip = sb > (sa + tol);
+
+    // The face of the chosen axis that faces the other box.
+    const batch r_a = xsimd::select(a_on_y, xsimd::select(axes.offset[1] >= zero, zero, two),
+                                    xsimd::select(axes.offset[0] >= zero, one, three));
+    const batch r_b = xsimd::select(b_on_y, xsimd::select(axes.offset[3] >= zero, two, zero),
+                                    xsimd::select(axes.offset[2] >= zero, three, one));
+    batch face_a[7], face_b[7];
+    face_at<Arch>(a, r_a, face_a);
+    face_at<Arch>(b, r_b, face_b);
+    batch face[7];
+    for (int f = 0; f < 7; ++f) {
+        face[f] = xsimd::select(flip, face_b[f], face_a[f]);
+    }
+    const reference_lanes<Arch> ref{flip,    xsimd::select(flip, r_b, r_a), sa,      sb,      face[0], face[1],
+                                    face[2], face[3],                       face[4], face[5], face[6]};
+    return manifold_lanes_of<Arch>(a, b, ref, origin_x, origin_y, margin);
+}
+
 /// The twelve 4-byte fields of a contact, in its memory order, per lane.
 template <class Arch>
 struct contact_fields {
@@ -313,13 +406,11 @@ OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa
                                                            float margin) {
     const lanes<Arch> origin_x = fa[0], origin_y = fa[1];
     if constexpr (Corners) {
-        return fields_of<Arch>(contact_lanes_of<Arch>(contact_corner_box<Arch>(fa, origin_x, origin_y),
-                                                      contact_corner_box<Arch>(fb, origin_x, origin_y), origin_x,
-                                                      origin_y, margin));
+        const contact_box_lanes<Arch> a = contact_corner_box<Arch>(fa, origin_x, origin_y);
+        const contact_box_lanes<Arch> b = contact_corner_box<Arch>(fb, origin_x, origin_y);
+        return fields_of<Arch>(manifold_lanes_of<Arch>(a, b, reference_of_boxes<Arch>(a, b), origin_x, origin_y, margin));
     } else {
-        return fields_of<Arch>(contact_lanes_of<Arch>(contact_pose_box<Arch>(fa, origin_x, origin_y),
-                                                      contact_pose_box<Arch>(fb, origin_x, origin_y), origin_x,
-                                                      origin_y, margin));
+        return fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin));
     }
 }
 

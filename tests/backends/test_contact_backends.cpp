@@ -45,7 +45,7 @@ struct pose_pairs {
 // margin 2^-4 (from integer arithmetic and exact float operations only, so the
 // same on every machine). Change it only with a deliberate change of the
 // contact steps or of the generator, and say so in the commit.
-constexpr std::uint64_t golden_pose_digest = 0xadb549a438775ad4;
+constexpr std::uint64_t golden_pose_digest = 0xae087060c95b16c4;
 constexpr std::uint64_t golden_corner_digest = 0x5f6397f530b12785;
 
 /// FNV-1a (64-bit) over the bytes of the contacts.

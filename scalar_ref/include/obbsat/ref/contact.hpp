@@ -65,6 +65,21 @@
 //      left in place is (face r of R, vertex of I it is); one moved to λ0 is
 //      (vertex r of R, face k of I), to λT (vertex (r + 1) mod 4 of R, face k of I).
 //
+// Poses take steps 1 to 3 from method local's axes instead (cheaper, and the
+// same in exact arithmetic): with a and b the poses,
+//   P1. lenA = sqrt(dot(rotA, rotA)), invA = 1 / lenA; the same for B; inv[k]
+//       of every face of a box is its inv (the value step 1 gives too).
+//   P2. The offsets w and reaches r of obbsat/ref/local.hpp's steps 1 to 4, in
+//       its axis order A.x, A.y, B.x, B.y; sep = (|w| − r) · invA on A's axes,
+//       · invB on B's. A's axis is A.y iff sep(A.y) > sep(A.x), sA its sep;
+//       B's likewise, sB.
+//   P3. tol = 2^−10 · min((hxA + hyA) · lenA, (hxB + hyB) · lenB);
+//       flip = sB > (sA + tol). The reference face is the face of the chosen
+//       axis that faces the other box: on A, A.x gives face 1 when w >= 0,
+//       else 3; A.y face 0 when w >= 0, else 2. On B (flip), B.x gives face 3
+//       when w >= 0, else 1; B.y face 2 when w >= 0, else 0.
+//   Then steps 4 to 8 as above, on the boxes of the pose rule.
+//
 // With exact arithmetic, for two overlapping rectangles, depth is the
 // smallest overlap over the four separating axes (up to tol when A's face is
 // kept), the normal its axis, and the points those of Box2D's manifold. In
@@ -102,10 +117,11 @@ bool corners_accepted(const rect& r);
 /// float (a rotation vector neither below about 1e-19 nor above about 1e19 long).
 bool pose_accepted(const rect_pose& p);
 
-/// Steps 1 to 8 for boxes a and b relative to `origin`, keeping points up to `margin` (>= 0).
+/// Steps 1 to 8 for boxes a and b relative to `origin`, keeping points up to
+/// `margin` (>= 0): the contact of corner quads.
 contact contact_of_boxes(const contact_box& a, const contact_box& b, point origin, float margin);
 
-/// The contact of poses a and b (pose_accepted both), as specified above.
+/// The contact of poses a and b (pose_accepted both): steps P1 to P3, then 4 to 8.
 contact contact_of(const rect_pose& a, const rect_pose& b, float margin = 0.0f);
 
 /// The contact of corner quads a and b (corners_accepted both), as specified above.

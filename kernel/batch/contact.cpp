@@ -111,12 +111,28 @@ void run_split(detail::contact_fn kernel, const float* a, std::size_t a_stride, 
 /// `stride` floats apart (c and s at floats 4 and 5) that contacts do not
 /// accept; one branch-free pass when all are accepted.
 void require_poses_accepted(const float* records, std::size_t stride, std::size_t count) {
-    bool all_accepted = true;
-    for (std::size_t i = 0; i < count; ++i) {
-        const float c = records[stride * i + 4], s = records[stride * i + 5];
-        const float square = (c * c) + (s * s);
-        all_accepted &= (square >= FLT_MIN) & (square <= FLT_MAX);
+    // The least and the largest square (every value is finite already), in
+    // two independent chains of two poses each: one chain would wait on each
+    // min's latency.
+    auto square_at = [&](std::size_t row) {
+        const float c = records[stride * row + 4], s = records[stride * row + 5];
+        return (c * c) + (s * s);
+    };
+    float lo0 = FLT_MAX, lo1 = FLT_MAX, hi0 = FLT_MIN, hi1 = FLT_MIN;
+    std::size_t i = 0;
+    for (; i + 2 <= count; i += 2) {
+        const float q0 = square_at(i), q1 = square_at(i + 1);
+        lo0 = q0 < lo0 ? q0 : lo0;
+        hi0 = q0 > hi0 ? q0 : hi0;
+        lo1 = q1 < lo1 ? q1 : lo1;
+        hi1 = q1 > hi1 ? q1 : hi1;
     }
+    if (i < count) {
+        const float q0 = square_at(i);
+        lo0 = q0 < lo0 ? q0 : lo0;
+        hi0 = q0 > hi0 ? q0 : hi0;
+    }
+    const bool all_accepted = lo0 >= FLT_MIN && lo1 >= FLT_MIN && hi0 <= FLT_MAX && hi1 <= FLT_MAX;
     if (!all_accepted) {
         for (std::size_t i = 0; i < count; ++i) {
             const float* v = records + stride * i;

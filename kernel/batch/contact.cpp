@@ -134,9 +134,9 @@ void require_poses_accepted(const float* records, std::size_t stride, std::size_
     }
     const bool all_accepted = lo0 >= FLT_MIN && lo1 >= FLT_MIN && hi0 <= FLT_MAX && hi1 <= FLT_MAX;
     if (!all_accepted) {
-        for (std::size_t i = 0; i < count; ++i) {
-            const float* v = records + stride * i;
-            require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, i);
+        for (std::size_t row = 0; row < count; ++row) {
+            const float* v = records + stride * row;
+            require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, row);
         }
     }
 }

@@ -185,6 +185,21 @@ OBBSAT_LANE_INLINE lanes<Arch> span_lanes(const contact_box_lanes<Arch>& box) {
     return max_pick(hi_x - lo_x, hi_y - lo_y);
 }
 
+/// Box b, or box a where `pick_a`.
+template <class Arch>
+OBBSAT_LANE_INLINE contact_box_lanes<Arch> either_box(const lane_mask<Arch>& pick_a, const contact_box_lanes<Arch>& a,
+                                                      const contact_box_lanes<Arch>& b) {
+    contact_box_lanes<Arch> out;
+    for (int k = 0; k < 4; ++k) {
+        out.vx[k] = xsimd::select(pick_a, a.vx[k], b.vx[k]);
+        out.vy[k] = xsimd::select(pick_a, a.vy[k], b.vy[k]);
+        out.nx[k] = xsimd::select(pick_a, a.nx[k], b.nx[k]);
+        out.ny[k] = xsimd::select(pick_a, a.ny[k], b.ny[k]);
+        out.inv[k] = xsimd::select(pick_a, a.inv[k], b.inv[k]);
+    }
+    return out;
+}
+
 /// What steps 1 to 3 choose, per lane: the reference box (B where flip), its
 /// face r with its normal, that normal's reciprocal length and the face's
 /// ends, and the best separations of A's and of B's faces.
@@ -217,10 +232,10 @@ OBBSAT_LANE_INLINE reference_lanes<Arch> reference_of_boxes(const contact_box_la
                                  xsimd::select(flip, fb.y2, fa.y2)};
 }
 
-/// Steps 4 to 8 of the reference from the choice of the reference face.
+/// Steps 4 to 8 of the reference from the choice of the reference face and
+/// the incident box (B, or A where flip).
 template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_lanes<Arch>& a,
-                                                             const contact_box_lanes<Arch>& b,
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_lanes<Arch>& inc,
                                                              const reference_lanes<Arch>& ref,
                                                              const lanes<Arch>& origin_x,
                                                              const lanes<Arch>& origin_y, float margin_value) {
@@ -242,12 +257,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_l
     batch k, most_against, p1x, p1y, p2x, p2y;
     for (int f = 0; f < 4; ++f) {
         const int next = (f + 1) & 3;
-        const batch nx = xsimd::select(flip, a.nx[f], b.nx[f]), ny = xsimd::select(flip, a.ny[f], b.ny[f]);
-        const batch inv = xsimd::select(flip, a.inv[f], b.inv[f]);
-        const batch along = ((nx * ux) + (ny * uy)) * inv;
-        const batch x1 = xsimd::select(flip, a.vx[f], b.vx[f]), y1 = xsimd::select(flip, a.vy[f], b.vy[f]);
-        const batch x2 = xsimd::select(flip, a.vx[next], b.vx[next]);
-        const batch y2 = xsimd::select(flip, a.vy[next], b.vy[next]);
+        const batch along = ((inc.nx[f] * ux) + (inc.ny[f] * uy)) * inc.inv[f];
+        const batch x1 = inc.vx[f], y1 = inc.vy[f], x2 = inc.vx[next], y2 = inc.vy[next];
         if (f == 0) {
             k = zero;
             most_against = along;
@@ -348,8 +359,6 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arc
     const batch len_a = xsimd::sqrt((fa[4] * fa[4]) + (fa[5] * fa[5]));
     const batch len_b = xsimd::sqrt((fb[4] * fb[4]) + (fb[5] * fb[5]));
     const batch inv_a = one / len_a, inv_b = one / len_b;
-    const contact_box_lanes<Arch> a = contact_pose_box<Arch>(fa, origin_x, origin_y, inv_a);
-    const contact_box_lanes<Arch> b = contact_pose_box<Arch>(fb, origin_x, origin_y, inv_b);
 
     // Pose step 2: method local's offsets and reaches.
     const pose_lanes<Arch> pa{fa[0], fa[1], fa[2], fa[3], fa[4], fa[5]};
@@ -375,16 +384,22 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arc
                                     xsimd::select(axes.offset[0] >= zero, one, three));
     const batch r_b = xsimd::select(b_on_y, xsimd::select(axes.offset[3] >= zero, two, zero),
                                     xsimd::select(axes.offset[2] >= zero, three, one));
-    batch face_a[7], face_b[7];
-    face_at<Arch>(a, r_a, face_a);
-    face_at<Arch>(b, r_b, face_b);
-    batch face[7];
-    for (int f = 0; f < 7; ++f) {
-        face[f] = xsimd::select(flip, face_b[f], face_a[f]);
+    // The boxes of the reference pose and of the incident one, each built once.
+    batch ref_fields[6], inc_fields[6];
+    for (int f = 0; f < 6; ++f) {
+        ref_fields[f] = xsimd::select(flip, fb[f], fa[f]);
+        inc_fields[f] = xsimd::select(flip, fa[f], fb[f]);
     }
-    const reference_lanes<Arch> ref{flip,    xsimd::select(flip, r_b, r_a), sa,      sb,      face[0], face[1],
-                                    face[2], face[3],                       face[4], face[5], face[6]};
-    return manifold_lanes_of<Arch>(a, b, ref, origin_x, origin_y, margin);
+    const contact_box_lanes<Arch> ref_box =
+        contact_pose_box<Arch>(ref_fields, origin_x, origin_y, xsimd::select(flip, inv_b, inv_a));
+    const contact_box_lanes<Arch> inc_box =
+        contact_pose_box<Arch>(inc_fields, origin_x, origin_y, xsimd::select(flip, inv_a, inv_b));
+    const batch r = xsimd::select(flip, r_b, r_a);
+    batch face[7];
+    face_at<Arch>(ref_box, r, face);
+    const reference_lanes<Arch> ref{flip,    r,       sa,      sb,      face[0], face[1],
+                                    face[2], face[3], face[4], face[5], face[6]};
+    return manifold_lanes_of<Arch>(inc_box, ref, origin_x, origin_y, margin);
 }
 
 /// The twelve 4-byte fields of a contact, in its memory order, per lane.
@@ -408,7 +423,8 @@ OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa
     if constexpr (Corners) {
         const contact_box_lanes<Arch> a = contact_corner_box<Arch>(fa, origin_x, origin_y);
         const contact_box_lanes<Arch> b = contact_corner_box<Arch>(fb, origin_x, origin_y);
-        return fields_of<Arch>(manifold_lanes_of<Arch>(a, b, reference_of_boxes<Arch>(a, b), origin_x, origin_y, margin));
+        const reference_lanes<Arch> ref = reference_of_boxes<Arch>(a, b);
+        return fields_of<Arch>(manifold_lanes_of<Arch>(either_box<Arch>(ref.flip, a, b), ref, origin_x, origin_y, margin));
     } else {
         return fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin));
     }

@@ -10,7 +10,7 @@
 #include "lanes/bounds_lanes.hpp"
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
-#include "lanes/contact_lanes.hpp"
+#include "lanes/contact_batch.hpp"
 #include "lanes/fused_multiply_add.hpp"
 #include "lanes/largest_index_lanes.hpp"
 #include "lanes/pose_batch.hpp"

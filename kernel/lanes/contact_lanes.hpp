@@ -1,22 +1,17 @@
 // Contacts in lanes, one pair per lane: obbsat/ref/contact.hpp's steps written
 // once over the xsimd architecture, without branches (every choice a select,
 // every argmax a fold of strict compares, so ties go to the lowest index as in
-// the reference), and the batch driver that gathers each lane's two boxes and
-// scatters its contact. Private to each per-ISA object (README.md).
+// the reference). contact_batch.hpp drives them over a batch. Private to each
+// per-ISA object (README.md).
 #pragma once
 
-#include "dispatch/contact_kernel_table.hpp"
 #include "lanes/lanes.hpp"
 #include "lanes/pose_lanes.hpp"
-#include "lanes/record_transpose.hpp"
 
 #include <obbsat/contact_manifold.hpp>
-#include <obbsat/rect.hpp>
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <utility>
 
 namespace obbsat::detail {
 namespace {
@@ -400,115 +395,6 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arc
     const reference_lanes<Arch> ref{flip,    r,       sa,      sb,      face[0], face[1],
                                     face[2], face[3], face[4], face[5], face[6]};
     return manifold_lanes_of<Arch>(inc_box, ref, origin_x, origin_y, margin);
-}
-
-/// The twelve 4-byte fields of a contact, in its memory order, per lane.
-template <class Arch>
-struct contact_fields {
-    lanes<Arch> f[12];
-};
-
-template <class Arch>
-OBBSAT_LANE_INLINE contact_fields<Arch> fields_of(const contact_out_lanes<Arch>& c) {
-    return contact_fields<Arch>{{c.nx, c.ny, c.depth, c.count, c.x[0], c.y[0], c.separation[0], c.feature[0],
-                                 c.x[1], c.y[1], c.separation[1], c.feature[1]}};
-}
-
-/// The contacts of one vector of pairs from each lane's two records of
-/// Fields floats (fa, fb: one vector per field), A's first two fields the origin.
-template <class Arch, bool Corners>
-OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa, const lanes<Arch>* fb,
-                                                           float margin) {
-    const lanes<Arch> origin_x = fa[0], origin_y = fa[1];
-    if constexpr (Corners) {
-        const contact_box_lanes<Arch> a = contact_corner_box<Arch>(fa, origin_x, origin_y);
-        const contact_box_lanes<Arch> b = contact_corner_box<Arch>(fb, origin_x, origin_y);
-        const reference_lanes<Arch> ref = reference_of_boxes<Arch>(a, b);
-        return fields_of<Arch>(manifold_lanes_of<Arch>(either_box<Arch>(ref.flip, a, b), ref, origin_x, origin_y, margin));
-    } else {
-        return fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin));
-    }
-}
-
-/// Writes lane i of `c` as out[i] for the first `valid` lanes: a whole
-/// vector by three 4x4 transposes (each a third of every contact), a partial
-/// one through a staging copy.
-template <class Arch>
-OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* out, std::size_t valid) {
-    using transpose = record_transpose<Arch>;
-    constexpr std::size_t width = lanes<Arch>::size;
-    static_assert(sizeof(contact) == 12 * sizeof(float), "a contact is twelve 4-byte fields");
-    if (valid == width) {
-        auto put = [out](std::size_t lane) { return reinterpret_cast<float*>(out + lane); };
-        using blocks = std::make_integer_sequence<unsigned, width / 4>;
-        for (unsigned third = 0; third < 3; ++third) {
-            transpose::store_half(c.f + 4 * third, third, put, blocks{});
-        }
-        return;
-    }
-    alignas(64) float staged[12][width];
-    for (int f = 0; f < 12; ++f) {
-        c.f[f].store_aligned(staged[f]);
-    }
-    for (std::size_t lane = 0; lane < valid; ++lane) {
-        float row[12];
-        for (int f = 0; f < 12; ++f) {
-            row[f] = staged[f][lane];
-        }
-        std::memcpy(out + lane, row, sizeof row);
-    }
-}
-
-/// The batch driver: out[i] = contact of box a(i) and box b(i) (see
-/// contact_fn), Fields floats of each record read (six for a pose, eight for
-/// corners). Records of eight floats (pose_records, corner records) are read
-/// whole and transposed in registers; other rows through a staging copy. The
-/// last, partial vector repeats its last pair in the unused lanes.
-template <class Arch, std::size_t Fields, bool Corners>
-void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                   const pair_index* pairs, std::size_t count, float margin, contact* out) {
-    using batch = lanes<Arch>;
-    constexpr std::size_t width = batch::size;
-    const bool whole_records = a_stride == 8 && b_stride == 8;
-    for (std::size_t i = 0; i < count; i += width) {
-        const std::size_t valid = count - i < width ? count - i : width;
-        auto pair_of = [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); };
-        auto index_a = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].a : pair_of(lane); };
-        auto index_b = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].b : pair_of(lane); };
-        batch fa[8], fb[8];
-        if (whole_records) {
-            const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
-                [&](std::size_t lane) { return reinterpret_cast<const rect*>(a + 8 * index_a(lane)); });
-            const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
-                [&](std::size_t lane) { return reinterpret_cast<const rect*>(b + 8 * index_b(lane)); });
-            for (std::size_t f = 0; f < 8; ++f) {
-                fa[f] = qa.c[f];
-                fb[f] = qb.c[f];
-            }
-        } else {
-            alignas(64) float staged_a[Fields][width];
-            alignas(64) float staged_b[Fields][width];
-            for (std::size_t lane = 0; lane < width; ++lane) {
-                const float* ra = a + a_stride * index_a(lane);
-                const float* rb = b + b_stride * index_b(lane);
-                for (std::size_t f = 0; f < Fields; ++f) {
-                    staged_a[f][lane] = ra[f];
-                    staged_b[f][lane] = rb[f];
-                }
-            }
-            for (std::size_t f = 0; f < Fields; ++f) {
-                fa[f] = batch::load_aligned(staged_a[f]);
-                fb[f] = batch::load_aligned(staged_b[f]);
-            }
-        }
-        store_contacts<Arch>(contacts_of_fields<Arch, Corners>(fa, fb, margin), out + i, valid);
-    }
-}
-
-/// The contact table of this ISA.
-template <class Arch>
-constexpr contact_kernel_table contact_table_of() {
-    return contact_kernel_table{contact_batch<Arch, 6, false>, contact_batch<Arch, 8, true>};
 }
 
 }  // namespace

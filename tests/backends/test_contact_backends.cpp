@@ -2,7 +2,8 @@
 // for bit: every float and feature key of every contact, through every entry
 // point of obbsat/contact.hpp, on one thread and on two, at margin 0 and with
 // a speculative margin; on the pose families of the suites, on plain random
-// pairs, and on families of contact's own hard cases; and the golden digest
+// pairs, on families of contact's own hard cases and on convex quads that are
+// not rectangles; and the golden digest
 // of the reference's contacts, which every backend reproduces.
 #include "test_support/float_text.hpp"
 
@@ -357,6 +358,66 @@ TEST_P(contact_backends, match_the_reference_on_contacts_own_hard_cases) {
             expect_every_path_matches(pairs, threads, 0.0f);
         }
         expect_every_path_matches(pairs, 1, sc.scale);
+    }
+}
+
+/// Convex quads that are not rectangles: the corners of random pairs, each
+/// corner moved by up to a tenth of the box's smaller half extent, kept when
+/// still strictly convex.
+struct quad_pairs {
+    std::vector<rect> a, b;
+};
+
+quad_pairs jittered_quads(std::uint64_t seed, std::size_t count) {
+    const pose_pairs poses = random_pairs(seed, count);
+    obbsat::seeded_random random(seed + 1);
+    auto jitter = [&](const rect_pose& p) {
+        rect r = obbsat::ref::corners_of(p);
+        const float step = 0.1f * std::fmin(p.half_extents.x, p.half_extents.y);
+        for (obbsat::point* c : {&r.ul, &r.ur, &r.lr, &r.ll}) {
+            c->x += random.uniform(-step, step);
+            c->y += random.uniform(-step, step);
+        }
+        return r;
+    };
+    quad_pairs out;
+    for (std::size_t i = 0; i < poses.a.size(); ++i) {
+        const rect qa = jitter(poses.a[i]), qb = jitter(poses.b[i]);
+        if (obbsat::ref::corners_accepted(qa) && obbsat::ref::corners_accepted(qb)) {
+            out.a.push_back(qa);
+            out.b.push_back(qb);
+        }
+    }
+    return out;
+}
+
+TEST_P(contact_backends, match_the_reference_on_convex_quads_that_are_not_rectangles) {
+    const quad_pairs quads = jittered_quads(14, 200000);
+    ASSERT_GT(quads.a.size(), 150000u);
+    const rect_records a(quads.a), b(quads.b);
+    for (const float margin : {0.0f, 0.25f}) {
+        std::vector<contact> expected(quads.a.size());
+        std::size_t with_points = 0;
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            expected[i] = obbsat::ref::contact_of(quads.a[i], quads.b[i], margin);
+            with_points += expected[i].point_count > 0 ? 1u : 0u;
+        }
+        EXPECT_GT(with_points, expected.size() / 5);
+        for (const unsigned threads : {1u, 2u}) {
+            std::vector<contact> got(expected.size());
+            std::memset(got.data(), 0xee, got.size() * sizeof(contact));
+            EXPECT_EQ(obbsat::contact_stream(a, b, got.data(), forced(threads, margin)), GetParam());
+            std::size_t mismatches = 0;
+            for (std::size_t i = 0; i < expected.size(); ++i) {
+                if (std::memcmp(&expected[i], &got[i], sizeof(contact)) != 0 && ++mismatches <= 3) {
+                    ADD_FAILURE() << "pair " << i << ", margin " << hex_float(margin) << ", " << threads
+                                  << " threads\n  A " << obbsat::test_support::describe(quads.a[i]) << "\n  B "
+                                  << obbsat::test_support::describe(quads.b[i]) << "\n  reference "
+                                  << describe(expected[i]) << "\n  backend   " << describe(got[i]);
+                }
+            }
+            EXPECT_EQ(mismatches, 0u);
+        }
     }
 }
 

@@ -3,8 +3,8 @@
 // point of obbsat/contact.hpp, on one thread and on two, at margin 0 and with
 // a speculative margin; on the pose families of the suites, on plain random
 // pairs, on families of contact's own hard cases and on convex quads that are
-// not rectangles; and the golden digest
-// of the reference's contacts, which every backend reproduces.
+// not rectangles; and the golden digests of the reference's contacts, which
+// every backend reproduces.
 #include "test_support/float_text.hpp"
 
 #include <obbsat/backend.hpp>

@@ -47,7 +47,8 @@ void require_margin(const contact_options& options) {
 
 void require_pose_accepted(const rect_pose& p, std::size_t index) {
     if (!ref::pose_accepted(p)) {
-        throw invalid_input("pose " + std::to_string(index) + ": rotation (" + shown(p.rotation.x) + ", " + shown(p.rotation.y) +
+        throw invalid_input("pose " + std::to_string(index) + ": rotation (" + shown(p.rotation.x) + ", " +
+                            shown(p.rotation.y) +
                             ") is too short or too long for contacts (c*c + s*s must be a normal float)");
     }
 }

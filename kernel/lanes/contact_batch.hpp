@@ -43,7 +43,8 @@ OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa
         const contact_box_lanes<Arch> a = contact_corner_box<Arch>(fa, origin_x, origin_y);
         const contact_box_lanes<Arch> b = contact_corner_box<Arch>(fb, origin_x, origin_y);
         const reference_lanes<Arch> ref = reference_of_boxes<Arch>(a, b);
-        return fields_of<Arch>(manifold_lanes_of<Arch>(either_box<Arch>(ref.flip, a, b), ref, origin_x, origin_y, margin));
+        const contact_box_lanes<Arch> incident = either_box<Arch>(ref.flip, a, b);
+        return fields_of<Arch>(manifold_lanes_of<Arch>(incident, ref, origin_x, origin_y, margin));
     } else {
         return fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin));
     }

@@ -141,10 +141,13 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_la
     using batch = lanes<Arch>;
     best_face_lanes<Arch> best;
     for (int k = 0; k < 4; ++k) {
-        batch least = (faces.nx[k] * (other.vx[0] - faces.vx[k])) + (faces.ny[k] * (other.vy[0] - faces.vy[k]));
+        // dot(n[k], other.v[j] - v[k]), each difference per coordinate.
+        auto along = [&](int j) {
+            return (faces.nx[k] * (other.vx[j] - faces.vx[k])) + (faces.ny[k] * (other.vy[j] - faces.vy[k]));
+        };
+        batch least = along(0);
         for (int j = 1; j < 4; ++j) {
-            least = min_pick((faces.nx[k] * (other.vx[j] - faces.vx[k])) + (faces.ny[k] * (other.vy[j] - faces.vy[k])),
-                             least);
+            least = min_pick(along(j), least);
         }
         const batch sep = least * faces.inv[k];
         const int next = (k + 1) & 3;
@@ -297,7 +300,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_l
         // Step 8: feature codes, index + 4·type, face type 1.
         const batch ref_code = xsimd::select(moved, xsimd::select(below, r, r_next), r + four);
         const batch inc_code = xsimd::select(moved, k + four, vertex_of_incident[e]);
-        feature[e] = feature_bits<Arch>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
+        feature[e] =
+            feature_bits<Arch>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
         // Step 7.
         sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
         keep[e] = in_reach & (sep[e] <= margin);
@@ -328,7 +332,8 @@ template <class Arch>
 OBBSAT_LANE_INLINE void face_at(const contact_box_lanes<Arch>& box, const lanes<Arch>& r, lanes<Arch>* face) {
     for (int k = 0; k < 4; ++k) {
         const int next = (k + 1) & 3;
-        const lanes<Arch> values[7] = {box.nx[k], box.ny[k], box.inv[k], box.vx[k], box.vy[k], box.vx[next], box.vy[next]};
+        const lanes<Arch> values[7] = {box.nx[k], box.ny[k],    box.inv[k],   box.vx[k],
+                                       box.vy[k], box.vx[next], box.vy[next]};
         if (k == 0) {
             for (int f = 0; f < 7; ++f) {
                 face[f] = values[f];

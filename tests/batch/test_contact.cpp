@@ -107,7 +107,8 @@ TEST(contact_checks, a_margin_must_be_finite_and_not_negative) {
     const obbsat::pose_records poses(row_of_poses(4));
     const std::vector<pair_index> pairs = neighbours(4);
     std::vector<contact> out(pairs.size());
-    for (const float margin : {-0.5f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    constexpr float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (const float margin : {-0.5f, nan, inf}) {
         contact_options options;
         options.margin = margin;
         expect_refused([&] { obbsat::contact_pairs(poses, pairs.data(), pairs.size(), out.data(), options); }, out,

@@ -214,7 +214,8 @@ TEST(contact_ref, corners_that_are_not_a_strictly_convex_quad_are_refused) {
     EXPECT_FALSE(obbsat::ref::corners_accepted(rect{{0, 1}, {1, 1}, {1, 1}, {0, 0}})) << "two equal corners";
     EXPECT_FALSE(obbsat::ref::corners_accepted(rect{{0, 1}, {1, 1}, {2, 1}, {0, 0}})) << "three on a line";
     EXPECT_FALSE(obbsat::ref::corners_accepted(rect{{0, 2}, {2, 2}, {0.5f, 0.5f}, {0, 0}})) << "reflex corner";
-    EXPECT_TRUE(obbsat::ref::corners_accepted(rect{{0, 2}, {2, 2}, {1.5f, 0.5f}, {0, 0}})) << "convex, not a rectangle";
+    EXPECT_TRUE(obbsat::ref::corners_accepted(rect{{0, 2}, {2, 2}, {1.5f, 0.5f}, {0, 0}}))
+        << "convex, not a rectangle";
     EXPECT_FALSE(obbsat::ref::pose_accepted(box(0, 0, 1, 1, 1e-30f, 0))) << "rotation too short";
     EXPECT_TRUE(obbsat::ref::pose_accepted(box(0, 0, 1, 1, 1e-10f, 0)));
 }

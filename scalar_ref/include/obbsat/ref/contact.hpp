@@ -32,7 +32,8 @@
 // left over indices 0 to 3; ties go to the lowest index:
 //   1. inv[k] = 1 / sqrt(dot(n[k], n[k])) for every face of both boxes (a
 //      pose's four faces all get the same value: only signs differ).
-//   2. Separation of A's face k: sepA[k] = (min over j of dot(n[k], B.v[j] − A.v[k])) · inv[k],
+//   2. Separation of A's face k:
+//        sepA[k] = (min over j of dot(n[k], B.v[j] − A.v[k])) · inv[k],
 //      each difference B.v[j] − A.v[k] taken per coordinate; sepB[k] the same
 //      with A and B swapped. ia = argmax sepA, sA = sepA[ia]; ib, sB likewise
 //      (argmax: the first index holding the maximum, by strict >).
@@ -51,8 +52,8 @@
 //      (when T is 0, the reference face is one point and nothing is clipped:
 //      τ is 0 everywhere). The edge reaches the face unless τ1 < 0 and
 //      τ2 < 0, or τ1 > T and τ2 > T (tested as: τ1 >= 0 or τ2 >= 0, and
-//      τ1 <= T or τ2 <= T). Then, with g = 1 / (τ1 − τ2), λ0 = τ1 · g, λT = (τ1 − T) · g:
-//      an endpoint with τ < 0 moves to λ0, one with τ > T to λT, where the
+//      τ1 <= T or τ2 <= T). Then, with g = 1 / (τ1 − τ2), λ0 = τ1 · g and
+//      λT = (τ1 − T) · g: an endpoint with τ < 0 moves to λ0, one with τ > T to λT, where the
 //      point at λ is (p1.x + (λ·(p2.x − p1.x)), p1.y + (λ·(p2.y − p1.y))).
 //   7. Separation of each point: dot(p − q1, u). A point is kept iff
 //      sA <= margin, sB <= margin, the edge reaches the face, and its
@@ -77,13 +78,15 @@
 //       flip = sB > (sA + tol). The reference face is the face of the chosen
 //       axis that faces the other box: on A, A.x gives face 1 when w >= 0,
 //       else 3; A.y face 0 when w >= 0, else 2. On B (flip), B.x gives face 3
-//       when w >= 0, else 1; B.y face 2 when w >= 0, else 0.
+//       when w >= 0, else 1; B.y face 2 when w >= 0, else 0. That face is
+//       step 4's r.
 //   Then steps 4 to 8 as above, on the boxes of the pose rule.
 //
 // With exact arithmetic, for two overlapping rectangles, depth is the
 // smallest overlap over the four separating axes (up to tol when A's face is
 // kept), the normal its axis, and the points those of Box2D's manifold. In
-// float32 every value is within a few ulps of the scale of the pair of it.
+// float32 every value is within a few ulps of the pair's scale (its distance
+// from the origin o plus its sizes) of that.
 #pragma once
 
 #include <obbsat/contact_manifold.hpp>

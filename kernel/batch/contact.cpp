@@ -1,6 +1,6 @@
-// The contact entry points (obbsat/contact.hpp): check the input, resolve the
-// backend once, split the pairs over threads, run the backend's contact
-// kernel on each part.
+// The contact and distance entry points (obbsat/contact.hpp): check the
+// input, resolve the backend once, split the pairs over threads, run the
+// backend's kernel on each part.
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "store/finite_check.hpp"
@@ -90,22 +90,45 @@ void require_out_apart(const contact* out, std::size_t count, const void* other,
     }
 }
 
-/// Runs the kernel of `ran` over [0, count), split over options.threads.
-void run_split(detail::contact_fn kernel, const float* a, std::size_t a_stride, const float* b,
-               std::size_t b_stride, const pair_index* pairs, std::size_t count, contact* out,
-               const contact_options& options) {
-    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
+/// Runs kernel(a', b', pairs', n, out') over [0, count) split over `threads`,
+/// where a part from `begin` reads the pairs from begin (a pair list) or the
+/// records from begin (a stream) and writes out + begin.
+template <class Out, class Kernel>
+void run_split(const Kernel& kernel, const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+               const pair_index* pairs, std::size_t count, Out* out, unsigned threads) {
+    const std::size_t parts = detail::parts_for(count, threads, min_pairs_per_part);
     detail::run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = detail::aligned_share_of(count, part, parts, part_alignment);
         if (begin < end) {
             if (pairs != nullptr) {
-                kernel(a, a_stride, b, b_stride, pairs + begin, end - begin, options.margin, out + begin);
+                kernel(a, b, pairs + begin, end - begin, out + begin);
             } else {
-                kernel(a + a_stride * begin, a_stride, b + b_stride * begin, b_stride, nullptr, end - begin,
-                       options.margin, out + begin);
+                kernel(a + a_stride * begin, b + b_stride * begin, nullptr, end - begin, out + begin);
             }
         }
     });
+}
+
+/// run_split of a contact kernel.
+void run_split(detail::contact_fn kernel, const float* a, std::size_t a_stride, const float* b,
+               std::size_t b_stride, const pair_index* pairs, std::size_t count, contact* out,
+               const contact_options& options) {
+    run_split(
+        [&](const float* pa, const float* pb, const pair_index* pp, std::size_t n, contact* po) {
+            kernel(pa, a_stride, pb, b_stride, pp, n, options.margin, po);
+        },
+        a, a_stride, b, b_stride, pairs, count, out, options.threads);
+}
+
+/// run_split of a distance kernel.
+void run_split(detail::distance_fn kernel, const float* a, std::size_t a_stride, const float* b,
+               std::size_t b_stride, const pair_index* pairs, std::size_t count, closest_points* out,
+               const distance_options& options) {
+    run_split(
+        [&](const float* pa, const float* pb, const pair_index* pp, std::size_t n, closest_points* po) {
+            kernel(pa, a_stride, pb, b_stride, pp, n, po);
+        },
+        a, a_stride, b, b_stride, pairs, count, out, options.threads);
 }
 
 /// Throws as require_pose_accepted for the first pose of `count` records
@@ -260,6 +283,73 @@ backend contact_stream(const rect_records& a, const rect_records& b, contact* ou
     require_rects_accepted(b.data(), b.size());
     run_split(detail::contact_kernels_for(ran).corners, reinterpret_cast<const float*>(a.data()), rect_floats,
               reinterpret_cast<const float*>(b.data()), rect_floats, nullptr, a.size(), out, options);
+    return ran;
+}
+
+namespace {
+
+/// Throws invalid_input when the caller's output (`count` results) shares
+/// memory with the pairs.
+void require_distances_apart(const closest_points* out, std::size_t count, const pair_index* pairs) {
+    const auto o = reinterpret_cast<std::uintptr_t>(out);
+    const auto p = reinterpret_cast<std::uintptr_t>(pairs);
+    if (count != 0 && o < p + count * sizeof(pair_index) && p < o + count * sizeof(closest_points)) {
+        throw invalid_input("distances and pairs share memory: the output must not overlap pairs");
+    }
+}
+
+}  // namespace
+
+backend distance_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count, closest_points* out,
+                       const distance_options& options) {
+    require_distances_apart(out, count, pairs);
+    const backend ran = resolve_backend(options.use);
+    require_poses_accepted(poses);
+    require_indices(ran, poses.size(), pairs, count, "poses");
+    const float* records = poses.data();
+    run_split(detail::contact_kernels_for(ran).distance_poses, records, pose_records::record_floats, records,
+              pose_records::record_floats, pairs, count, out, options);
+    return ran;
+}
+
+std::vector<closest_points> distance_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
+                                           const distance_options& options) {
+    std::vector<closest_points> out(pairs.size());
+    distance_pairs(poses, pairs.data(), pairs.size(), out.data(), options);
+    return out;
+}
+
+backend distance_stream(const pose_records& a, const pose_records& b, closest_points* out,
+                        const distance_options& options) {
+    require_same_length(a.size(), b.size(), "poses");
+    const backend ran = resolve_backend(options.use);
+    require_poses_accepted(a);
+    require_poses_accepted(b);
+    run_split(detail::contact_kernels_for(ran).distance_poses, a.data(), pose_records::record_floats, b.data(),
+              pose_records::record_floats, nullptr, a.size(), out, options);
+    return ran;
+}
+
+backend distance_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count, closest_points* out,
+                       const distance_options& options) {
+    require_distances_apart(out, count, pairs);
+    const backend ran = resolve_backend(options.use);
+    require_rects_accepted(rects.data(), rects.size());
+    require_indices(ran, rects.size(), pairs, count, "rectangles");
+    const auto* records = reinterpret_cast<const float*>(rects.data());
+    run_split(detail::contact_kernels_for(ran).distance_corners, records, rect_floats, records, rect_floats, pairs,
+              count, out, options);
+    return ran;
+}
+
+backend distance_stream(const rect_records& a, const rect_records& b, closest_points* out,
+                        const distance_options& options) {
+    require_same_length(a.size(), b.size(), "rectangles");
+    const backend ran = resolve_backend(options.use);
+    require_rects_accepted(a.data(), a.size());
+    require_rects_accepted(b.data(), b.size());
+    run_split(detail::contact_kernels_for(ran).distance_corners, reinterpret_cast<const float*>(a.data()),
+              rect_floats, reinterpret_cast<const float*>(b.data()), rect_floats, nullptr, a.size(), out, options);
     return ran;
 }
 

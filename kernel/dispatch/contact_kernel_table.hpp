@@ -1,9 +1,10 @@
-// The contact entry points of one backend (obbsat/contact.hpp), a table of
-// their own beside kernel_table. The per-ISA kernels include this header: it
+// The contact and distance entry points of one backend (obbsat/contact.hpp),
+// a table of their own beside kernel_table. The per-ISA kernels include this header: it
 // holds only types and declarations (kernel/lanes/README.md).
 #pragma once
 
 #include <obbsat/backend.hpp>
+#include <obbsat/closest_points.hpp>
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/rect.hpp>
 
@@ -18,9 +19,15 @@ namespace obbsat::detail {
 using contact_fn = void (*)(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
                             const pair_index* pairs, std::size_t count, float margin, contact* out);
 
+/// out[i] = ref::distance_of(box a(i), box b(i)) for i < count, records read as contact_fn reads them.
+using distance_fn = void (*)(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                             const pair_index* pairs, std::size_t count, closest_points* out);
+
 struct contact_kernel_table {
     contact_fn poses;    ///< records of at least six floats: cx, cy, hx, hy, c, s
     contact_fn corners;  ///< records of eight floats: the corners UL, UR, LR, LL
+    distance_fn distance_poses;
+    distance_fn distance_corners;
 };
 
 /// The contact table of one backend of backend_catalogue.hpp: defined by

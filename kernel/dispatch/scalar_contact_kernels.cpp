@@ -1,9 +1,10 @@
-// The scalar contact kernels (the reference one pair at a time) and the
+// The scalar contact and distance kernels (the references one pair at a time) and the
 // choice of a backend's contact table. Compiled at the baseline ISA.
 #include "dispatch/backend_catalogue.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 
 #include <obbsat/ref/contact.hpp>
+#include <obbsat/ref/distance.hpp>
 
 namespace obbsat::detail {
 
@@ -20,6 +21,16 @@ void contacts_one_by_one(const float* a, std::size_t a_stride, const float* b, s
         const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
         const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
         out[i] = ref::contact_of(Read(a + a_stride * ia), Read(b + b_stride * ib), margin);
+    }
+}
+
+template <class Shape, Shape (*Read)(const float*)>
+void distances_one_by_one(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                          const pair_index* pairs, std::size_t count, closest_points* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
+        const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
+        out[i] = ref::distance_of(Read(a + a_stride * ia), Read(b + b_stride * ib));
     }
 }
 
@@ -43,8 +54,9 @@ const contact_kernel_table& table_for(backend resolved, type_list<Rows...>) {
 
 template <>
 const contact_kernel_table& contact_kernels_of<scalar_backend>() {
-    static constexpr contact_kernel_table table{contacts_one_by_one<rect_pose, pose_in>,
-                                                contacts_one_by_one<rect, rect_in>};
+    static constexpr contact_kernel_table table{
+        contacts_one_by_one<rect_pose, pose_in>, contacts_one_by_one<rect, rect_in>,
+        distances_one_by_one<rect_pose, pose_in>, distances_one_by_one<rect, rect_in>};
     return table;
 }
 

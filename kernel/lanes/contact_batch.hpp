@@ -1,4 +1,4 @@
-// The batch driver of contacts: walk a batch one vector of pairs at a time,
+// The batch drivers of contacts and distances: walk a batch one vector of pairs at a time,
 // load each lane's two records (whole 32-byte records transposed in registers,
 // other rows through a staging copy), run the contact lanes
 // (contact_lanes.hpp), write each lane's contact (transposed back in
@@ -9,8 +9,10 @@
 
 #include "dispatch/contact_kernel_table.hpp"
 #include "lanes/contact_lanes.hpp"
+#include "lanes/distance_lanes.hpp"
 #include "lanes/record_transpose.hpp"
 
+#include <obbsat/closest_points.hpp>
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/rect.hpp>
 
@@ -84,9 +86,16 @@ OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* o
 /// corners). Records of eight floats (pose_records, corner records) are read
 /// whole and transposed in registers; other rows through a staging copy. The
 /// last, partial vector repeats its last pair in the unused lanes.
-template <class Arch, std::size_t Fields, bool Corners>
-void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                   const pair_index* pairs, std::size_t count, float margin, contact* out) {
+/// Walks pairs [0, count) one vector at a time: loads each lane's two records
+/// into fa and fb (one vector per field; Fields floats read, six for a pose,
+/// eight for corners) and calls body(fa, fb, i, valid) for the vector of pairs
+/// i to i + valid. Records of eight floats (pose_records, corner records) are
+/// read whole and transposed in registers, other rows through a staging copy.
+/// The last, partial vector repeats its last pair in the unused lanes.
+template <class Arch, std::size_t Fields, class Body>
+OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_stride, const float* b,
+                                                 std::size_t b_stride, const pair_index* pairs, std::size_t count,
+                                                 const Body& body) {
     using batch = lanes<Arch>;
     constexpr std::size_t width = batch::size;
     const bool whole_records = a_stride == 8 && b_stride == 8;
@@ -121,14 +130,49 @@ void contact_batch(const float* a, std::size_t a_stride, const float* b, std::si
                 fb[f] = batch::load_aligned(staged_b[f]);
             }
         }
-        store_contacts<Arch>(contacts_of_fields<Arch, Corners>(fa, fb, margin), out + i, valid);
+        body(fa, fb, i, valid);
     }
+}
+
+/// out[i] = the contact of box a(i) and box b(i) (see contact_fn).
+template <class Arch, std::size_t Fields, bool Corners>
+void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                   const pair_index* pairs, std::size_t count, float margin, contact* out) {
+    for_each_vector_of_pairs<Arch, Fields>(
+        a, a_stride, b, b_stride, pairs, count,
+        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
+            __attribute__((always_inline)) {
+                store_contacts<Arch>(contacts_of_fields<Arch, Corners>(fa, fb, margin), out + i, valid);
+            });
+}
+
+/// out[i] = the distance and closest points of box a(i) and box b(i) (see distance_fn).
+template <class Arch, std::size_t Fields, bool Corners>
+void distance_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                    const pair_index* pairs, std::size_t count, closest_points* out) {
+    constexpr std::size_t width = lanes<Arch>::size;
+    for_each_vector_of_pairs<Arch, Fields>(
+        a, a_stride, b, b_stride, pairs, count,
+        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
+            __attribute__((always_inline)) {
+                const closest_points_lanes<Arch> c = distance_lanes_of<Arch, Corners>(fa, fb);
+                alignas(64) float staged[5][width];
+                const lanes<Arch>* fields[5] = {&c.distance, &c.ax, &c.ay, &c.bx, &c.by};
+                for (int f = 0; f < 5; ++f) {
+                    fields[f]->store_aligned(staged[f]);
+                }
+                for (std::size_t lane = 0; lane < valid; ++lane) {
+                    out[i + lane] = closest_points{staged[0][lane], staged[1][lane], staged[2][lane],
+                                                   staged[3][lane], staged[4][lane]};
+                }
+            });
 }
 
 /// The contact table of this ISA.
 template <class Arch>
 constexpr contact_kernel_table contact_table_of() {
-    return contact_kernel_table{contact_batch<Arch, 6, false>, contact_batch<Arch, 8, true>};
+    return contact_kernel_table{contact_batch<Arch, 6, false>, contact_batch<Arch, 8, true>,
+                                distance_batch<Arch, 6, false>, distance_batch<Arch, 8, true>};
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect_records.hpp>
 #include <obbsat/ref/contact.hpp>
+#include <obbsat/ref/distance.hpp>
 #include <obbsat/ref/pose_corners.hpp>
 #include <obbsat/scene.hpp>
 #include <obbsat/suites/pose_suite.hpp>
@@ -64,6 +65,8 @@ std::string hex_digest(std::uint64_t digest) {
     std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(digest));
     return text;
 }
+
+using obbsat::test_support::describe;
 
 std::string describe(const rect_pose& p) {
     return "center (" + hex_float(p.center.x) + ", " + hex_float(p.center.y) + ") half (" +
@@ -473,6 +476,139 @@ TEST_P(contact_backends, reproduce_the_golden_digests) {
     }
     EXPECT_EQ(hex_digest(contact_digest(poses)), hex_digest(golden_pose_digest));
     EXPECT_EQ(hex_digest(contact_digest(corners)), hex_digest(golden_corner_digest));
+}
+
+// Distances of separated pairs (obbsat/ref/distance.hpp), bit for bit.
+
+template <class T>
+std::uint64_t bytes_digest(const std::vector<T>& values) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    for (std::size_t i = 0; i < values.size() * sizeof(T); ++i) {
+        h = (h ^ bytes[i]) * 0x100000001b3ull;
+    }
+    return h;
+}
+
+// The digest of the distance reference on golden_pairs(), poses then their
+// corners; changed only with the distance steps or the generator.
+constexpr std::uint64_t golden_distance_digest = 0x8eedd6a89e520092;
+
+std::string describe(const obbsat::closest_points& c) {
+    return "distance " + hex_float(c.distance) + " A (" + hex_float(c.ax) + ", " + hex_float(c.ay) + ") B (" +
+           hex_float(c.bx) + ", " + hex_float(c.by) + ")";
+}
+
+template <class Shape>
+testing::AssertionResult same_distances(const std::vector<obbsat::closest_points>& expected,
+                                        const std::vector<obbsat::closest_points>& got, const std::vector<Shape>& a,
+                                        const std::vector<Shape>& b) {
+    std::size_t mismatches = 0;
+    std::string report;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        if (std::memcmp(&expected[i], &got[i], sizeof expected[i]) != 0 && ++mismatches <= 3) {
+            report += "\n  pair " + std::to_string(i) + "\n    A " + describe(a[i]) + "\n    B " + describe(b[i]) +
+                      "\n    reference " + describe(expected[i]) + "\n    backend   " + describe(got[i]);
+        }
+    }
+    if (mismatches == 0) {
+        return testing::AssertionSuccess();
+    }
+    return testing::AssertionFailure() << mismatches << " of " << expected.size() << " distances differ" << report;
+}
+
+template <class Shape>
+std::vector<obbsat::closest_points> reference_distances(const std::vector<Shape>& a, const std::vector<Shape>& b) {
+    std::vector<obbsat::closest_points> out(a.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = obbsat::ref::distance_of(a[i], b[i]);
+    }
+    return out;
+}
+
+/// Every distance entry point on poses `pairs` (and on their corners, where
+/// accepted) gives the reference's bits, on `threads` threads.
+void expect_every_distance_path_matches(backend use, const pose_pairs& pairs, unsigned threads) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    obbsat::distance_options options;
+    options.use = use;
+    options.threads = threads;
+    const std::size_t n = pairs.a.size();
+    const std::vector<obbsat::closest_points> expected = reference_distances(pairs.a, pairs.b);
+    std::vector<obbsat::closest_points> got(n);
+    const pose_records a(pairs.a), b(pairs.b);
+    std::memset(got.data(), 0xee, n * sizeof got[0]);
+    EXPECT_EQ(obbsat::distance_stream(a, b, got.data(), options), use);
+    EXPECT_TRUE(same_distances(expected, got, pairs.a, pairs.b)) << "distance_stream over pose_records";
+
+    const scattered_pairs indexed = scattered(pairs, 79);
+    const pose_records pool(indexed.pool);
+    std::memset(got.data(), 0xee, n * sizeof got[0]);
+    EXPECT_EQ(obbsat::distance_pairs(pool, indexed.pairs.data(), n, got.data(), options), use);
+    EXPECT_TRUE(same_distances(expected, got, pairs.a, pairs.b)) << "distance_pairs over pose_records";
+
+    const pose_pairs quads = corners_accepted(pairs);
+    const std::vector<rect> qa = corners_of(quads.a), qb = corners_of(quads.b);
+    const std::vector<obbsat::closest_points> expected_corners = reference_distances(qa, qb);
+    std::vector<obbsat::closest_points> got_corners(qa.size());
+    EXPECT_EQ(obbsat::distance_stream(rect_records(qa), rect_records(qb), got_corners.data(), options), use);
+    EXPECT_TRUE(same_distances(expected_corners, got_corners, qa, qb)) << "distance_stream over rect_records";
+    const scattered_pairs quad_indexed = scattered(quads, 80);
+    const rect_records quad_pool(corners_of(quad_indexed.pool));
+    std::memset(got_corners.data(), 0xee, got_corners.size() * sizeof got_corners[0]);
+    EXPECT_EQ(obbsat::distance_pairs(quad_pool, quad_indexed.pairs.data(), qa.size(), got_corners.data(), options),
+              use);
+    EXPECT_TRUE(same_distances(expected_corners, got_corners, qa, qb)) << "distance_pairs over rect_records";
+}
+
+TEST_P(contact_backends, distances_match_the_reference) {
+    const pose_pairs random = random_pairs(15, 1100000);
+    const pose_pairs suite = suite_pairs(16, 200000);
+    for (const unsigned threads : {1u, 2u}) {
+        expect_every_distance_path_matches(GetParam(), random, threads);
+        expect_every_distance_path_matches(GetParam(), suite, threads);
+    }
+    for (const float scale : {1.0f, 0x1p-20f, 0x1p20f}) {
+        expect_every_distance_path_matches(GetParam(), hard_pairs(17, 60000, scale, 0.0f), 1);
+    }
+    expect_every_distance_path_matches(GetParam(), hard_pairs(17, 60000, 1.0f, 1.0e7f), 2);
+
+    const quad_pairs quads = jittered_quads(18, 200000);
+    obbsat::distance_options options;
+    options.use = GetParam();
+    std::vector<obbsat::closest_points> got(quads.a.size());
+    obbsat::distance_stream(rect_records(quads.a), rect_records(quads.b), got.data(), options);
+    EXPECT_TRUE(same_distances(reference_distances(quads.a, quads.b), got, quads.a, quads.b)) << "convex quads";
+}
+
+TEST_P(contact_backends, distances_reproduce_the_golden_digest) {
+    const pose_pairs pairs = golden_pairs();
+    const pose_pairs quads = corners_accepted(pairs);
+    obbsat::distance_options options;
+    options.use = GetParam();
+    options.threads = 2;
+    std::vector<obbsat::closest_points> all(pairs.a.size());
+    obbsat::distance_stream(pose_records(pairs.a), pose_records(pairs.b), all.data(), options);
+    std::vector<obbsat::closest_points> of_corners(quads.a.size());
+    obbsat::distance_stream(rect_records(corners_of(quads.a)), rect_records(corners_of(quads.b)), of_corners.data(),
+                            options);
+    all.insert(all.end(), of_corners.begin(), of_corners.end());
+    EXPECT_EQ(hex_digest(bytes_digest(all)), hex_digest(golden_distance_digest));
+}
+
+TEST(distance_golden, the_reference_reproduces_the_golden_digest) {
+    const pose_pairs pairs = golden_pairs();
+    const pose_pairs quads = corners_accepted(pairs);
+    std::vector<obbsat::closest_points> all = reference_distances(pairs.a, pairs.b);
+    const std::vector<obbsat::closest_points> of_corners =
+        reference_distances(corners_of(quads.a), corners_of(quads.b));
+    all.insert(all.end(), of_corners.begin(), of_corners.end());
+    std::size_t separated = 0;
+    for (const obbsat::closest_points& c : all) {
+        separated += c.distance > 0.0f ? 1u : 0u;
+    }
+    EXPECT_GT(separated, all.size() / 10) << "the golden pairs hold separated pairs";
+    EXPECT_EQ(hex_digest(bytes_digest(all)), hex_digest(golden_distance_digest));
 }
 
 INSTANTIATE_TEST_SUITE_P(every_backend, contact_backends,

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <obbsat/backend.hpp>
+#include <obbsat/closest_points.hpp>
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/rect.hpp>
@@ -88,5 +89,38 @@ std::vector<contact> contact_pairs(const rect_records& rects, const std::vector<
 /// out[i] = the contact of the corner quads a[i] and b[i] for i < a.size().
 backend contact_stream(const rect_records& a, const rect_records& b, contact* out,
                        const contact_options& options = {});
+
+// Distances of separated pairs (obbsat/ref/distance.hpp): the Euclidean
+// distance between the closed boxes and a point of each at that distance;
+// all zero for a pair that collides. The same store rules and checks as
+// contacts.
+
+struct distance_options {
+    backend use = backend::automatic;  ///< which instruction set (see backend.hpp)
+    unsigned threads = 1;              ///< cores to split one batch over; 0 means all
+};
+
+/// out[i] = the distance and closest points of poses[pairs[i].a] and
+/// poses[pairs[i].b] for i < count; returns the backend that ran. Throws as
+/// contact_pairs over poses.
+backend distance_pairs(const pose_records& poses, const pair_index* pairs, std::size_t count, closest_points* out,
+                       const distance_options& options = {});
+
+/// The distances of distance_pairs over poses, one per pair.
+std::vector<closest_points> distance_pairs(const pose_records& poses, const std::vector<pair_index>& pairs,
+                                           const distance_options& options = {});
+
+/// out[i] = the distance and closest points of a[i] and b[i] for i < a.size().
+backend distance_stream(const pose_records& a, const pose_records& b, closest_points* out,
+                        const distance_options& options = {});
+
+/// out[i] = the distance and closest points of the corner quads rects[pairs[i].a]
+/// and rects[pairs[i].b]; throws as contact_pairs over corners.
+backend distance_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count, closest_points* out,
+                       const distance_options& options = {});
+
+/// out[i] = the distance and closest points of the corner quads a[i] and b[i].
+backend distance_stream(const rect_records& a, const rect_records& b, closest_points* out,
+                        const distance_options& options = {});
 
 }  // namespace obbsat

@@ -155,6 +155,42 @@ TEST(contact_checks, output_sharing_memory_with_the_pairs_is_refused) {
     EXPECT_THROW(obbsat::contact_pairs(poses, pairs, 8, out.data()), invalid_input);
 }
 
+TEST(distance_checks, bad_indices_and_quads_are_named_and_nothing_is_written) {
+    const obbsat::pose_records poses(row_of_poses(8));
+    std::vector<pair_index> pairs = neighbours(8);
+    pairs[2].a = 40;
+    std::vector<obbsat::closest_points> out(pairs.size(), obbsat::closest_points{7, 7, 7, 7, 7});
+    try {
+        obbsat::distance_pairs(poses, pairs.data(), pairs.size(), out.data());
+        ADD_FAILURE() << "no invalid_input";
+    } catch (const invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("pair 2"), std::string::npos) << e.what();
+    }
+    std::vector<rect> rects = row_of_rects(8);
+    rects[6] = rect{{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+    const obbsat::rect_records records(rects);
+    pairs[2].a = 1;
+    try {
+        obbsat::distance_pairs(records, pairs.data(), pairs.size(), out.data());
+        ADD_FAILURE() << "no invalid_input";
+    } catch (const invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("rectangle 6"), std::string::npos) << e.what();
+    }
+    for (const obbsat::closest_points& c : out) {
+        EXPECT_EQ(c.distance, 7.0f) << "nothing is written when the input is refused";
+    }
+}
+
+// Squares 1.5 apart overlap their neighbours and lie 1 from the next but one.
+TEST(distance_checks, neighbours_collide_and_the_next_but_one_are_one_apart) {
+    const obbsat::pose_records poses(row_of_poses(3));
+    const std::vector<obbsat::closest_points> d = obbsat::distance_pairs(poses, {{0, 1}, {0, 2}});
+    EXPECT_EQ(d[0].distance, 0.0f);
+    EXPECT_EQ(d[1].distance, 1.0f);
+    EXPECT_EQ(d[1].ax, 1.0f);
+    EXPECT_EQ(d[1].bx, 2.0f);
+}
+
 // Two threads split the list; the contacts are the reference's either way.
 TEST(contact_checks, every_thread_count_gives_the_reference) {
     const std::size_t n = 40000;

@@ -1,8 +1,9 @@
 // contacts/poses/indexed/<backend>/pairs:<N>/threads:1: contact_pairs over
 // pose_records on the collide rows' pairs (their generator's order), beside
 // contacts/local_verdicts/poses/indexed/<backend>/...: the verdict-only local
-// method on the same pairs in the same binary. Each row checks its answers
-// against the reference before it times anything.
+// method on the same pairs in the same binary, and
+// distances/poses/indexed/<backend>/...: distance_pairs on them. Each row
+// checks its answers against the reference before it times anything.
 #include "bench_registry.hpp"
 #include "contact_workload.hpp"
 
@@ -10,6 +11,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/contact.hpp>
 #include <obbsat/ref/contact.hpp>
+#include <obbsat/ref/distance.hpp>
 #include <obbsat/ref/local.hpp>
 
 #include <cstring>
@@ -57,6 +59,29 @@ void time_contacts(benchmark::State& state, obbsat::backend use, std::size_t cou
     state.counters["with_points"] = static_cast<double>(colliding) / static_cast<double>(count);
 }
 
+void time_distances(benchmark::State& state, obbsat::backend use, std::size_t count) {
+    workload& w = contact_workload(count);
+    const obbsat::pose_records& poses = w.poses();
+    const std::vector<obbsat::pair_index>& pairs = w.sorted_pairs();
+    obbsat::distance_options options;
+    options.use = use;
+    std::vector<obbsat::closest_points> out(count);
+    obbsat::distance_pairs(poses, pairs.data(), count, out.data(), options);
+    for (std::size_t i = 0; i < count; ++i) {
+        const obbsat::closest_points expected = obbsat::ref::distance_of(poses[pairs[i].a], poses[pairs[i].b]);
+        if (std::memcmp(&expected, &out[i], sizeof expected) != 0) {
+            state.SkipWithError(("pair " + std::to_string(i) + " differs from the reference").c_str());
+            return;
+        }
+    }
+    for (auto _ : state) {
+        obbsat::distance_pairs(poses, pairs.data(), count, out.data(), options);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    set_pair_rate_counters(state, count);
+}
+
 void time_local_verdicts(benchmark::State& state, obbsat::backend use, std::size_t count) {
     workload& w = contact_workload(count);
     const obbsat::pose_records& poses = w.poses();
@@ -92,6 +117,9 @@ void register_contact_benchmarks() {
             const std::string tail = backend + "/pairs:" + std::to_string(count) + "/threads:1";
             benchmark::RegisterBenchmark(("contacts/poses/indexed/" + tail).c_str(),
                                          [use, count](benchmark::State& s) { time_contacts(s, use, count); })
+                ->UseRealTime();
+            benchmark::RegisterBenchmark(("distances/poses/indexed/" + tail).c_str(),
+                                         [use, count](benchmark::State& s) { time_distances(s, use, count); })
                 ->UseRealTime();
             benchmark::RegisterBenchmark(("contacts/local_verdicts/poses/indexed/" + tail).c_str(),
                                          [use, count](benchmark::State& s) { time_local_verdicts(s, use, count); })

@@ -21,7 +21,8 @@ void register_convert_benchmarks();
 
 /// contacts/poses/indexed/<backend>/pairs:<N>/threads:1 (contact_pairs) and
 /// contacts/local_verdicts/poses/indexed/<backend>/... (local's verdicts on
-/// the same pairs) at 4K and 256K pairs, for every backend this CPU runs.
+/// the same pairs) and distances/poses/indexed/<backend>/... (distance_pairs)
+/// at 4K and 256K pairs, for every backend this CPU runs.
 void register_contact_benchmarks();
 
 /// contacts/poses/indexed/box2d/pairs:<N>/threads:1: b2CollidePolygons on the contact rows' pairs.

@@ -39,8 +39,10 @@ int main(int argc, char** argv) {
     obbsat_bench::register_collide_benchmarks(std::cerr);
     obbsat_bench::register_collide64_benchmarks();
     obbsat_bench::register_convert_benchmarks();
+    obbsat_bench::register_contact_benchmarks();
 #if OBBSAT_BENCH_WITH_BOX2D
     obbsat_bench::register_box2d_peers();
+    obbsat_bench::register_box2d_contact_peer();
 #else
     std::cerr << "obbsat_bench: skipping peer/box2d_*: Box2D was not found when obbsat was configured\n";
 #endif

@@ -24,6 +24,15 @@ void register_collide64_benchmarks();
 /// runs, convert/corners_from_angles/poses:<N> and convert/poses_from_angles/poses:<N>.
 void register_convert_benchmarks();
 
+/// contacts/poses/indexed/<backend>/pairs:<N>/threads:1 (contact_pairs) and
+/// contacts/local_verdicts/poses/indexed/<backend>/... (local's verdicts on
+/// the same pairs) and distances/poses/indexed/<backend>/... (distance_pairs)
+/// at 4K and 256K pairs, for every backend this CPU runs.
+void register_contact_benchmarks();
+
+/// contacts/poses/indexed/box2d/pairs:<N>/threads:1: b2CollidePolygons on the contact rows' pairs.
+void register_box2d_contact_peer();
+
 /// peer/box2d_collide_polygons/pairs:<N> and peer/box2d_test_overlap/pairs:<N>.
 void register_box2d_peers();
 

@@ -12,6 +12,7 @@
 #include "lanes/bounds_lanes.hpp"
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
+#include "lanes/contact_batch.hpp"
 #include "lanes/fused_multiply_add.hpp"
 #include "lanes/largest_index_lanes.hpp"
 #include "lanes/pose_batch.hpp"
@@ -121,6 +122,12 @@ const double_kernel_table& double_kernels_of<this_backend>() {
     static constexpr double_kernel_table table{pose64_indexed_batch<isa_arch, pose_exact64_lanes>,
                                                pose64_indexed_batch<isa_arch, pose_conservative64_lanes>,
                                                pose64_indexed_batch<isa_arch, local64_lanes>};
+    return table;
+}
+
+template <>
+const contact_kernel_table& contact_kernels_of<this_backend>() {
+    static constexpr contact_kernel_table table = contact_table_of<isa_arch>();
     return table;
 }
 

@@ -4,6 +4,7 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/collide64.hpp>
+#include <obbsat/contact.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_pairs.hpp>

@@ -1,0 +1,42 @@
+// The contact and distance entry points of one backend (obbsat/contact.hpp),
+// a table of their own beside kernel_table. The per-ISA kernels include this header: it
+// holds only types and declarations (kernel/lanes/README.md).
+#pragma once
+
+#include <obbsat/backend.hpp>
+#include <obbsat/closest_points.hpp>
+#include <obbsat/contact_manifold.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+
+namespace obbsat::detail {
+
+/// out[i] = ref::contact_of(box a(i), box b(i), margin) for i < count, where a
+/// box is read from the record at a + a_stride·index (in floats), and likewise b:
+/// with pairs, a(i) = pairs[i].a and b(i) = pairs[i].b (every index in range,
+/// the caller checks); without (nullptr), a(i) = b(i) = i.
+using contact_fn = void (*)(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                            const pair_index* pairs, std::size_t count, float margin, contact* out);
+
+/// out[i] = ref::distance_of(box a(i), box b(i)) for i < count, records read as contact_fn reads them.
+using distance_fn = void (*)(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                             const pair_index* pairs, std::size_t count, closest_points* out);
+
+struct contact_kernel_table {
+    contact_fn poses;    ///< records of at least six floats: cx, cy, hx, hy, c, s
+    contact_fn corners;  ///< records of eight floats: the corners UL, UR, LR, LL
+    distance_fn distance_poses;
+    distance_fn distance_corners;
+};
+
+/// The contact table of one backend of backend_catalogue.hpp: defined by
+/// scalar_contact_kernels.cpp for the scalar path and by backend_isa.cpp once
+/// per SIMD instruction set.
+template <class Backend>
+const contact_kernel_table& contact_kernels_of();
+
+/// The contact table of `resolved`, which resolve_backend has already checked.
+const contact_kernel_table& contact_kernels_for(backend resolved);
+
+}  // namespace obbsat::detail

@@ -1,0 +1,67 @@
+// The scalar contact and distance kernels (the references one pair at a time) and the
+// choice of a backend's contact table. Compiled at the baseline ISA.
+#include "dispatch/backend_catalogue.hpp"
+#include "dispatch/contact_kernel_table.hpp"
+
+#include <obbsat/ref/contact.hpp>
+#include <obbsat/ref/distance.hpp>
+
+namespace obbsat::detail {
+
+namespace {
+
+rect_pose pose_in(const float* v) { return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}; }
+
+rect rect_in(const float* v) { return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}; }
+
+template <class Shape, Shape (*Read)(const float*)>
+void contacts_one_by_one(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                         const pair_index* pairs, std::size_t count, float margin, contact* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
+        const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
+        out[i] = ref::contact_of(Read(a + a_stride * ia), Read(b + b_stride * ib), margin);
+    }
+}
+
+template <class Shape, Shape (*Read)(const float*)>
+void distances_one_by_one(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                          const pair_index* pairs, std::size_t count, closest_points* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
+        const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
+        out[i] = ref::distance_of(Read(a + a_stride * ia), Read(b + b_stride * ib));
+    }
+}
+
+/// The table of the first row of the catalogue that is `resolved` and compiled.
+template <class... Rows>
+const contact_kernel_table& table_for(backend resolved, type_list<Rows...>) {
+    const contact_kernel_table* found = nullptr;
+    auto consider = [&](auto row) {
+        using Row = decltype(row);
+        if constexpr (!Row::simd || OBBSAT_WITH_X86_KERNELS) {
+            if (found == nullptr && Row::id == resolved) {
+                found = &contact_kernels_of<Row>();
+            }
+        }
+    };
+    (consider(Rows{}), ...);
+    return found != nullptr ? *found : contact_kernels_of<scalar_backend>();
+}
+
+}  // namespace
+
+template <>
+const contact_kernel_table& contact_kernels_of<scalar_backend>() {
+    static constexpr contact_kernel_table table{
+        contacts_one_by_one<rect_pose, pose_in>, contacts_one_by_one<rect, rect_in>,
+        distances_one_by_one<rect_pose, pose_in>, distances_one_by_one<rect, rect_in>};
+    return table;
+}
+
+const contact_kernel_table& contact_kernels_for(backend resolved) {
+    return table_for(resolved, backend_catalogue{});
+}
+
+}  // namespace obbsat::detail

@@ -1,0 +1,179 @@
+// The batch drivers of contacts and distances: walk a batch one vector of pairs at a time,
+// load each lane's two records (whole 32-byte records transposed in registers,
+// other rows through a staging copy), run the contact lanes
+// (contact_lanes.hpp), write each lane's contact (transposed back in
+// registers). The last, partial vector repeats its last pair in the unused
+// lanes, so nothing past the caller's arrays is read or written. Private to
+// each per-ISA object (README.md).
+#pragma once
+
+#include "dispatch/contact_kernel_table.hpp"
+#include "lanes/contact_lanes.hpp"
+#include "lanes/distance_lanes.hpp"
+#include "lanes/record_transpose.hpp"
+
+#include <obbsat/closest_points.hpp>
+#include <obbsat/contact_manifold.hpp>
+#include <obbsat/rect.hpp>
+
+#include <cstddef>
+#include <cstring>
+#include <utility>
+
+namespace obbsat::detail {
+namespace {
+
+/// The twelve 4-byte fields of a contact, in its memory order, per lane.
+template <class Arch>
+struct contact_fields {
+    lanes<Arch> f[12];
+};
+
+template <class Arch>
+OBBSAT_LANE_INLINE contact_fields<Arch> fields_of(const contact_out_lanes<Arch>& c) {
+    return contact_fields<Arch>{{c.nx, c.ny, c.depth, c.count, c.x[0], c.y[0], c.separation[0], c.feature[0],
+                                 c.x[1], c.y[1], c.separation[1], c.feature[1]}};
+}
+
+/// The contacts of one vector of pairs from each lane's two records of
+/// Fields floats (fa, fb: one vector per field), A's first two fields the origin.
+template <class Arch, bool Corners>
+OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa, const lanes<Arch>* fb,
+                                                           float margin) {
+    const lanes<Arch> origin_x = fa[0], origin_y = fa[1];
+    if constexpr (Corners) {
+        const contact_box_lanes<Arch> a = contact_corner_box<Arch>(fa, origin_x, origin_y);
+        const contact_box_lanes<Arch> b = contact_corner_box<Arch>(fb, origin_x, origin_y);
+        const reference_lanes<Arch> ref = reference_of_boxes<Arch>(a, b);
+        const contact_box_lanes<Arch> incident = either_box<Arch>(ref.flip, a, b);
+        return fields_of<Arch>(manifold_lanes_of<Arch>(incident, ref, origin_x, origin_y, margin));
+    } else {
+        return fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin));
+    }
+}
+
+/// Writes lane i of `c` as out[i] for the first `valid` lanes: a whole
+/// vector by three 4x4 transposes (each a third of every contact), a partial
+/// one through a staging copy.
+template <class Arch>
+OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* out, std::size_t valid) {
+    using transpose = record_transpose<Arch>;
+    constexpr std::size_t width = lanes<Arch>::size;
+    static_assert(sizeof(contact) == 12 * sizeof(float), "a contact is twelve 4-byte fields");
+    if (valid == width) {
+        auto put = [out](std::size_t lane) { return reinterpret_cast<float*>(out + lane); };
+        using blocks = std::make_integer_sequence<unsigned, width / 4>;
+        for (unsigned third = 0; third < 3; ++third) {
+            transpose::store_half(c.f + 4 * third, third, put, blocks{});
+        }
+        return;
+    }
+    alignas(64) float staged[12][width];
+    for (int f = 0; f < 12; ++f) {
+        c.f[f].store_aligned(staged[f]);
+    }
+    for (std::size_t lane = 0; lane < valid; ++lane) {
+        float row[12];
+        for (int f = 0; f < 12; ++f) {
+            row[f] = staged[f][lane];
+        }
+        std::memcpy(out + lane, row, sizeof row);
+    }
+}
+
+/// The batch driver: out[i] = contact of box a(i) and box b(i) (see
+/// contact_fn), Fields floats of each record read (six for a pose, eight for
+/// corners). Records of eight floats (pose_records, corner records) are read
+/// whole and transposed in registers; other rows through a staging copy. The
+/// last, partial vector repeats its last pair in the unused lanes.
+/// Walks pairs [0, count) one vector at a time: loads each lane's two records
+/// into fa and fb (one vector per field; Fields floats read, six for a pose,
+/// eight for corners) and calls body(fa, fb, i, valid) for the vector of pairs
+/// i to i + valid. Records of eight floats (pose_records, corner records) are
+/// read whole and transposed in registers, other rows through a staging copy.
+/// The last, partial vector repeats its last pair in the unused lanes.
+template <class Arch, std::size_t Fields, class Body>
+OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_stride, const float* b,
+                                                 std::size_t b_stride, const pair_index* pairs, std::size_t count,
+                                                 const Body& body) {
+    using batch = lanes<Arch>;
+    constexpr std::size_t width = batch::size;
+    const bool whole_records = a_stride == 8 && b_stride == 8;
+    for (std::size_t i = 0; i < count; i += width) {
+        const std::size_t valid = count - i < width ? count - i : width;
+        auto pair_of = [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); };
+        auto index_a = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].a : pair_of(lane); };
+        auto index_b = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].b : pair_of(lane); };
+        batch fa[8], fb[8];
+        if (whole_records) {
+            const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
+                [&](std::size_t lane) { return reinterpret_cast<const rect*>(a + 8 * index_a(lane)); });
+            const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
+                [&](std::size_t lane) { return reinterpret_cast<const rect*>(b + 8 * index_b(lane)); });
+            for (std::size_t f = 0; f < 8; ++f) {
+                fa[f] = qa.c[f];
+                fb[f] = qb.c[f];
+            }
+        } else {
+            alignas(64) float staged_a[Fields][width];
+            alignas(64) float staged_b[Fields][width];
+            for (std::size_t lane = 0; lane < width; ++lane) {
+                const float* ra = a + a_stride * index_a(lane);
+                const float* rb = b + b_stride * index_b(lane);
+                for (std::size_t f = 0; f < Fields; ++f) {
+                    staged_a[f][lane] = ra[f];
+                    staged_b[f][lane] = rb[f];
+                }
+            }
+            for (std::size_t f = 0; f < Fields; ++f) {
+                fa[f] = batch::load_aligned(staged_a[f]);
+                fb[f] = batch::load_aligned(staged_b[f]);
+            }
+        }
+        body(fa, fb, i, valid);
+    }
+}
+
+/// out[i] = the contact of box a(i) and box b(i) (see contact_fn).
+template <class Arch, std::size_t Fields, bool Corners>
+void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                   const pair_index* pairs, std::size_t count, float margin, contact* out) {
+    for_each_vector_of_pairs<Arch, Fields>(
+        a, a_stride, b, b_stride, pairs, count,
+        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
+            __attribute__((always_inline)) {
+                store_contacts<Arch>(contacts_of_fields<Arch, Corners>(fa, fb, margin), out + i, valid);
+            });
+}
+
+/// out[i] = the distance and closest points of box a(i) and box b(i) (see distance_fn).
+template <class Arch, std::size_t Fields, bool Corners>
+void distance_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
+                    const pair_index* pairs, std::size_t count, closest_points* out) {
+    constexpr std::size_t width = lanes<Arch>::size;
+    for_each_vector_of_pairs<Arch, Fields>(
+        a, a_stride, b, b_stride, pairs, count,
+        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
+            __attribute__((always_inline)) {
+                const closest_points_lanes<Arch> c = distance_lanes_of<Arch, Corners>(fa, fb);
+                alignas(64) float staged[5][width];
+                const lanes<Arch>* fields[5] = {&c.distance, &c.ax, &c.ay, &c.bx, &c.by};
+                for (int f = 0; f < 5; ++f) {
+                    fields[f]->store_aligned(staged[f]);
+                }
+                for (std::size_t lane = 0; lane < valid; ++lane) {
+                    out[i + lane] = closest_points{staged[0][lane], staged[1][lane], staged[2][lane],
+                                                   staged[3][lane], staged[4][lane]};
+                }
+            });
+}
+
+/// The contact table of this ISA.
+template <class Arch>
+constexpr contact_kernel_table contact_table_of() {
+    return contact_kernel_table{contact_batch<Arch, 6, false>, contact_batch<Arch, 8, true>,
+                                distance_batch<Arch, 6, false>, distance_batch<Arch, 8, true>};
+}
+
+}  // namespace
+}  // namespace obbsat::detail

@@ -47,28 +47,46 @@ void finish_streams() {
 }  // namespace
 
 const std::vector<pair_index>& pair_search::collect(const query_input& input) {
+    // The ids are matched first: a duplicate id is refused before anything changes.
+    match_ids(input);
     set_query(input);
+    commit_ids(input);
+    try {
+        return collect_matched(input);
+    } catch (...) {
+        abandon_kept();
+        throw;
+    }
+}
+
+const std::vector<pair_index>& pair_search::collect_matched(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
-    if (kept_.ready && same_scene_as_last() && n_ >= 2) {
+    // The kept candidates serve rows matched by position (the last call's
+    // rows, none moved since the full query), or rows matched by id, carried
+    // over to this call's rows (kept_changes.cpp).
+    const bool by_position = !kept_.by_id && !rows_changed_ && same_scene_as_last();
+    if (kept_.ready && n_ >= 2 && (by_position || (ids_followed_ && absorb_changes(input)))) {
         const auto start = clock_type::now();
         // An exact method calls a pair colliding only if the two rectangles
         // share a point, so only if their bounds overlap (the bounds hold the
         // rectangles): its verdict on a kept pair whose bounds do not overlap
         // is false, the answer of leaving the pair out. It tests every kept
         // pair, which costs less than the filter, and needs no bounds of this
-        // call beyond the check that they fit.
+        // call beyond the check that they fit. Kept pairs of empty slots are
+        // never taken: the filter drops them (their bounds are NaN).
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
-        const bool fits = refresh_records(input, parts, !exact);
+        const bool unfiltered = exact && !(kept_.by_id && kept_.empty_slots > 0);
+        const bool fits = refresh_records(input, parts, !unfiltered);
         stats_.bounds_seconds = seconds_since(start);
         if (fits) {
             ++kept_.calls;
             stats_.reused_order = true;
             stats_.reused_candidates = true;
-            stats_.kept_candidates = kept_.pairs.size();
+            stats_.kept_candidates = kept_.by_caller.size();
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
-            test_kept(parts, exact);
+            test_kept(parts, unfiltered);
             answer_from_kept(parts);
             return pairs_;
         }
@@ -78,6 +96,12 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             // queries keep nothing until the motion is calm again.
             kept_.pause();
         }
+    }
+    if (kept_.by_id || rows_changed_) {
+        // The order's slots are not this call's rows: the full query sorts
+        // anew, on a grid of its own, and probes no motion against rows that
+        // changed places.
+        have_order_ = false;
     }
     // A full query that keeps its candidates. The margin follows the motion:
     // kept candidates that served only a few calls widen the next ones, and
@@ -91,10 +115,11 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     }
     kept_.ready = false;
     kept_.calls = 0;
-    if (!same_scene_as_last()) {
+    if (!same_scene_as_last() && !ids_followed_) {
         // The first call on a scene knows no motion yet, and pairs kept from
         // bounds not widened would serve no call after a move: it answers
-        // as a plain query, and the next call keeps the pairs of widened bounds.
+        // as a plain query, and the next call keeps the pairs of widened
+        // bounds. Rows matched by id to the last call's are the same scene.
         kept_.resume();
         return answer_plainly(input);
     }
@@ -156,9 +181,10 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
     const bool check_a = !input.a_checked;
     const bool check_b = !input.b_checked;
     std::vector<unsigned char> fits(parts, 1);
-    const bool stream = n_ * sizeof(record) > store_bytes_from_dram;
+    const std::size_t slots = slots_;
+    const bool stream = slots * sizeof(record) > store_bytes_from_dram;
     run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+        const auto [begin, end] = share_of(slots, share, parts);
         constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
         bool ok = true;
@@ -174,10 +200,15 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             record* const into = stream ? stage : records + run_begin;
             for (std::size_t k = run_begin; k < run_end; ++k) {
-                if (k + ahead < end) {
+                if (k + ahead < end && order[k + ahead] != no_row) {
                     fetch_into_l2(record_at(in, order[k + ahead]));
                 }
                 const std::uint32_t id = order[k];
+                if (id == no_row) {
+                    // The slot of a gone row (kept_changes.cpp): zeros, a valid pose and quad.
+                    std::memset(into[k - run_begin].v, 0, sizeof(record));
+                    continue;
+                }
                 if (id < in.a_count ? check_a : check_b) {
                     ok &= valid_row(in.kind, record_at(in, id));
                 }
@@ -193,11 +224,20 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                                         static_cast<unsigned>(b.lo_y[r] >= in_lo_y_[k]) &
                                         static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
                                         static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
-                ok &= inside != 0;
+                ok &= (inside | static_cast<unsigned>(order[k] == no_row)) != 0;
             }
             if (keep_bounds) {
                 for (std::size_t k = run_begin; k < run_end; ++k) {
                     kept_.now[k] = signed_bounds_of(b, k - run_begin);
+                }
+                if (kept_.empty_slots > 0) {
+                    // An empty slot's bounds meet none: its kept pairs are never taken.
+                    const float none = std::numeric_limits<float>::quiet_NaN();
+                    for (std::size_t k = run_begin; k < run_end; ++k) {
+                        if (order[k] == no_row) {
+                            kept_.now[k] = signed_bounds{{none, none, none, none}};
+                        }
+                    }
                 }
             }
         }

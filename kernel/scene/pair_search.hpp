@@ -50,6 +50,7 @@
 // and keeping the candidates) and kept_answer.cpp (their test and answer).
 #pragma once
 
+#include "scene/id_rows.hpp"
 #include "scene/kept_pairs.hpp"
 #include "scene/pair_blocks.hpp"
 #include "scene/query_input.hpp"
@@ -93,6 +94,8 @@ public:
     const find_pairs_stats& stats() const { return stats_; }
 
 private:
+    /// collect() once the rows' ids (if any) are matched and taken.
+    const std::vector<pair_index>& collect_matched(const query_input& input);
     /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
     friend struct pair_search_test_access;
 
@@ -140,6 +143,8 @@ private:
     void input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const;
     /// Widens `count` bounds by the kept candidates' margin while a query keeps them.
     void widen(bounds_run& b, std::size_t count) const;
+    /// Widens `count` bounds, each by `margin` times its larger extent or `typical`, whichever is larger.
+    static void widen_bounds(bounds_run& b, std::size_t count, float margin, float typical);
     void measure_extent(const query_input& input, std::size_t parts, bool with_keys);
     /// While keeping is paused: checks `count` bounds of this call, from rectangle `first` in the
     /// caller's order, against the last call's widened ones (`compare`; clears `inside` if one
@@ -189,6 +194,28 @@ private:
     void test_kept(std::size_t parts, bool unfiltered);
     void answer_from_kept(std::size_t parts);
 
+    // Rows that came, went or changed places, by id: kept_changes.cpp.
+    /// Matches this call's ids against the last call's (match_a_, match_b_);
+    /// throws invalid_input on a duplicate id before anything changes.
+    void match_ids(const query_input& input);
+    /// Takes this call's ids as the last call's.
+    void commit_ids(const query_input& input);
+    /// After a call that failed: the kept candidates and the ids are forgotten.
+    void abandon_kept();
+    /// Carries the kept candidates over to this call's rows (their slots, the
+    /// pairs of new rows, by_caller in this call's rows); false when the
+    /// change is too large to pay, and then nothing has changed.
+    bool absorb_changes(const query_input& input);
+    /// The first change since the full query: the slots are its order; each strip's reach.
+    void start_changes();
+    /// Slots for the rows now in `fresh` (combined rows), with their records and widened bounds.
+    void add_slots(const query_input& input, const std::vector<std::uint32_t>& fresh);
+    /// Kept candidates of the slots from `first_new` on, against every slot whose widened bounds they meet.
+    void find_new_candidates(std::size_t first_new);
+    /// by_caller in this call's rows: `now_of_last` maps the last call's rows (a before b) to these.
+    /// `any_moved`: some row changed places against the others (kept_.row_moved).
+    void remap_by_caller(const std::vector<std::uint32_t>& now_of_last, std::size_t last_a_count, bool any_moved);
+
     collide_options options_;
     find_pairs_stats stats_;
     bool self_ = true;
@@ -237,6 +264,16 @@ private:
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 
     kept_pairs kept_;  ///< pair_finder's kept candidates and the policy that keeps them
+
+    // The rows' ids (pair_finder with ids): the last call's, and this call's match against them.
+    id_rows ids_a_, ids_b_;
+    row_match match_a_, match_b_;
+    bool ids_self_ = true;  ///< the last call with ids was a query within one set
+    store_kind ids_kind_ = store_kind::poses;
+    bool ids_followed_ = false;  ///< this call's ids were matched against the last call's
+    bool rows_changed_ = false;  ///< and some row is not the one its position held
+    std::size_t slots_ = 0;      ///< entries of the kept order (kept_.slots while kept_.by_id, else n_)
+    std::vector<std::uint32_t> now_of_last_;  ///< the last call's rows (a before b) -> this call's
 };
 
 }  // namespace obbsat::detail

@@ -12,6 +12,7 @@
 #include <obbsat/ref/bounds.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 namespace obbsat::detail {
@@ -30,6 +31,11 @@ struct query_input {
     std::size_t b_count = 0;
     std::size_t b_stride = 8;
     bool b_checked = true;
+    /// The caller's ids of the rows (box_view::with_ids), one per row of a
+    /// and of b; with_ids false when the rows carry none.
+    bool with_ids = false;
+    const std::uint64_t* a_ids = nullptr;
+    const std::uint64_t* b_ids = nullptr;
 };
 
 /// Row `id` of the query: of the first set below a_count, else of the second.

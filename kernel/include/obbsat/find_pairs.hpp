@@ -41,6 +41,7 @@
 #include <obbsat/rect_records.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -95,13 +96,39 @@ public:
     /// True for a store (checked when built), false for rows checked by each query.
     bool checked() const { return checked_; }
 
+    /// The same rows, each with a stable id (ids[r] names row r): a
+    /// pair_finder matches rows to the last call's by id (pair_finder below),
+    /// so rows may come, go and change places between calls. `count` must be
+    /// size() (invalid_input otherwise; `ids` may be nullptr when it is 0);
+    /// the ids are read in place, so they must outlive the query. find_pairs
+    /// and find_pairs_each ignore them.
+    box_view with_ids(const std::uint64_t* ids, std::size_t count) const;
+    /// The same rows with the ids of a vector (read in place).
+    box_view with_ids(const std::vector<std::uint64_t>& ids) const;
+    /// Whether the rows carry ids (with_ids).
+    bool has_ids() const { return has_ids_; }
+    /// The ids of the rows, one per row; nullptr when they carry none (or are none).
+    const std::uint64_t* ids() const { return ids_; }
+
 private:
     const float* floats_ = nullptr;
     std::size_t count_ = 0;
     std::size_t stride_ = 0;  ///< floats from one rectangle to the next
     store_kind kind_ = store_kind::poses;
     bool checked_ = false;
+    const std::uint64_t* ids_ = nullptr;  ///< with_ids: one per row, the caller's
+    bool has_ids_ = false;
 };
+
+/// A pair of ids (box_view::with_ids): a pair_finder's begin/end events when
+/// its rows carry ids.
+struct id_pair {
+    std::uint64_t a;
+    std::uint64_t b;
+};
+
+inline bool operator==(const id_pair& x, const id_pair& y) { return x.a == y.a && x.b == y.b; }
+inline bool operator!=(const id_pair& x, const id_pair& y) { return !(x == y); }
 
 /// Every pair (i, j), i < j, of `boxes` that collides under options.test,
 /// sorted by i then j. Throws invalid_input for a method that does not run on
@@ -197,6 +224,10 @@ public:
     const std::vector<pair_index>& began() const;
     /// The pairs of the call before the last that are not in the last, sorted; empty before the first call; invalid_input when events are off.
     const std::vector<pair_index>& ended() const;
+    /// began() when the last call's rows carried ids: id pairs, sorted by (id, id); invalid_input when events are off or the last call had no ids.
+    const std::vector<id_pair>& began_ids() const;
+    /// ended() when the last call's rows carried ids: id pairs, sorted by (id, id); invalid_input when events are off or the last call had no ids.
+    const std::vector<id_pair>& ended_ids() const;
 
 private:
     std::unique_ptr<detail::pair_search> search_;

@@ -113,7 +113,8 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
     // the bounds are at hand in the caller's order: each box's bounds against
     // the last call's widened ones, which this call's then replace.
     const bool probe = kept_.paused && kept_.probing && !kept_.keep;
-    const bool compare = probe && same_scene_as_last() && kept_.probe_ready && kept_.last.size() == n_;
+    const bool compare =
+        probe && (same_scene_as_last() || probe_carried_) && kept_.probe_ready && kept_.last.size() == n_;
     if (probe) {
         kept_.probe_ready = false;  // until this pass has written every entry
         kept_.last.resize(n_);

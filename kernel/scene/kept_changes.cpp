@@ -90,6 +90,34 @@ void pair_search::abandon_kept() {
     ids_b_.clear();
 }
 
+void pair_search::map_last_rows() {
+    const row_match& ma = match_a_;
+    const std::size_t last_a = ma.last_count;
+    now_of_last_.resize(last_a + (self_ ? 0 : match_b_.last_count));
+    std::copy(ma.now_of_last.begin(), ma.now_of_last.end(), now_of_last_.begin());
+    if (!self_) {
+        const auto offset = static_cast<std::uint32_t>(a_count_);
+        for (std::size_t r = 0; r < match_b_.last_count; ++r) {
+            const std::uint32_t now = match_b_.now_of_last[r];
+            now_of_last_[last_a + r] = now == no_row ? no_row : now + offset;
+        }
+    }
+}
+
+void pair_search::carry_probe_over() {
+    // The last call's widened bounds, moved to this call's rows; a new row's
+    // bounds hold everything, so that it counts as calm.
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<signed_bounds> moved(n_, signed_bounds{{-inf, -inf, -inf, -inf}});
+    for (std::size_t r = 0; r < now_of_last_.size(); ++r) {
+        if (now_of_last_[r] != no_row) {
+            moved[now_of_last_[r]] = kept_.last[r];
+        }
+    }
+    kept_.last.resize(n_);
+    std::copy(moved.begin(), moved.end(), kept_.last.begin());
+}
+
 void pair_search::start_changes() {
     // The slots are the full query's order: slot k holds row order_[k].
     kept_.by_id = true;
@@ -124,19 +152,11 @@ bool pair_search::absorb_changes(const query_input& input) {
     if (!rows_changed_) {
         return true;  // the rows are the last call's, in their places
     }
-    // The last call's rows (a before b) mapped to this call's.
-    now_of_last_.resize(last_n);
-    std::copy(ma.now_of_last.begin(), ma.now_of_last.end(), now_of_last_.begin());
     std::vector<std::uint32_t> fresh(ma.fresh.begin(), ma.fresh.end());
     std::size_t gone_count = ma.gone.size();
     if (!self_) {
-        const auto offset = static_cast<std::uint32_t>(a_count_);
-        for (std::size_t r = 0; r < match_b_.last_count; ++r) {
-            const std::uint32_t now = match_b_.now_of_last[r];
-            now_of_last_[last_a + r] = now == no_row ? no_row : now + offset;
-        }
         for (const std::uint32_t r : match_b_.fresh) {
-            fresh.push_back(r + offset);
+            fresh.push_back(r + static_cast<std::uint32_t>(a_count_));
         }
         gone_count += match_b_.gone.size();
     }

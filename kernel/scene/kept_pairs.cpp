@@ -61,6 +61,10 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
 
 const std::vector<pair_index>& pair_search::collect_matched(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
+    probe_carried_ = false;
+    if (rows_changed_) {
+        map_last_rows();
+    }
     // The kept candidates serve rows matched by position (the last call's
     // rows, none moved since the full query), or rows matched by id, carried
     // over to this call's rows (kept_changes.cpp).
@@ -100,8 +104,12 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
     if (kept_.by_id || rows_changed_) {
         // The order's slots are not this call's rows: the full query sorts
         // anew, on a grid of its own, and probes no motion against rows that
-        // changed places.
+        // changed places, but against the last call's bounds carried over to these rows.
         have_order_ = false;
+        if (rows_changed_ && kept_.paused && kept_.probe_ready && kept_.last.size() == now_of_last_.size()) {
+            carry_probe_over();
+            probe_carried_ = true;
+        }
     }
     // A full query that keeps its candidates. The margin follows the motion:
     // kept candidates that served only a few calls widen the next ones, and

@@ -206,6 +206,10 @@ private:
     /// pairs of new rows, by_caller in this call's rows); false when the
     /// change is too large to pay, and then nothing has changed.
     bool absorb_changes(const query_input& input);
+    /// now_of_last_ from this call's match (rows_changed_).
+    void map_last_rows();
+    /// While keeping is paused: the last call's probe bounds (kept_pairs::last) moved to this call's rows.
+    void carry_probe_over();
     /// The first change since the full query: the slots are its order; each strip's reach.
     void start_changes();
     /// Slots for the rows now in `fresh` (combined rows), with their records and widened bounds.
@@ -273,7 +277,8 @@ private:
     bool ids_followed_ = false;  ///< this call's ids were matched against the last call's
     bool rows_changed_ = false;  ///< and some row is not the one its position held
     std::size_t slots_ = 0;      ///< entries of the kept order (kept_.slots while kept_.by_id, else n_)
-    std::vector<std::uint32_t> now_of_last_;  ///< the last call's rows (a before b) -> this call's
+    std::vector<std::uint32_t> now_of_last_;  ///< the last call's rows (a before b) -> this call's (map_last_rows)
+    bool probe_carried_ = false;  ///< kept_.last was moved to this call's rows (carry_probe_over)
 };
 
 }  // namespace obbsat::detail

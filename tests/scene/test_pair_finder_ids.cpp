@@ -454,3 +454,35 @@ TEST(pair_finder_ids, calls_with_and_without_ids_mix) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(pair_finder_ids, keeping_resumes_after_a_miss_while_rows_keep_coming_and_going) {
+    // Frames 2 and 3 jump (the kept candidates miss, keeping pauses); then
+    // calm frames that each swap-remove and append rows: the probe follows
+    // the rows by id, and keeping resumes.
+    world w(3000, 91);
+    obbsat::pair_finder finder(options_for(method::exact));
+    bool paused = false;
+    std::size_t reused_late = 0;
+    for (std::size_t f = 0; f < 30; ++f) {
+        if (f > 1) {
+            w.drift(f < 4 ? 30.0f : 0.01f);
+            for (int c = 0; c < 10; ++c) {
+                w.swap_remove(w.random.below(w.poses.size()));
+                w.add_at(w.poses.size());
+            }
+        }
+        const obbsat::box_view view(w.poses);
+        const std::vector<pair_index>& got = finder.find(view.with_ids(w.ids));
+        ASSERT_TRUE(same_pairs(got, obbsat::find_pairs(view, options_for(method::exact)))) << "frame " << f;
+        paused |= finder.stats().kept_paused;
+        if (f >= 20) {
+            reused_late += finder.stats().reused_candidates ? 1u : 0u;
+        }
+    }
+    EXPECT_TRUE(paused) << "the jumps should have paused keeping";
+    EXPECT_GE(reused_late, 8u);
+}
+
+}  // namespace

@@ -116,6 +116,8 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         // Plain pointers: a byte store may alias anything, and the vectors'
         // own pointers would be reloaded on every candidate.
         const pair_index* const kept = kept_.pairs.data();
+        const std::uint64_t* const dropped = kept_.dropped.data();
+        const std::size_t dropped_words = kept_.dropped.size();
         std::uint64_t* const verdict_words = kept_.verdicts.data();
         const std::uint64_t* const marks = kept_.answer_marks.data();
         std::size_t* const in_share = p.keep.colliding_in_share.data();
@@ -138,9 +140,32 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
                     }
                 }
             };
-            if (unfiltered) {
+            // Pairs of gone rows (kept_changes.cpp) are never tested.
+            std::uint64_t dropped_here = 0;
+            for (std::size_t w = first / 64; 64 * w < last && w < dropped_words; ++w) {
+                dropped_here |= dropped[w];
+            }
+            if (unfiltered && dropped_here == 0) {
                 test_pairs(p, kept + first, last - first, verdicts);
                 p.keep.colliding += count_colliding(verdicts, last - first);
+                keep_bits();
+                continue;
+            }
+            if (unfiltered) {
+                std::size_t count = 0;
+                for (std::size_t i = first; i < last; ++i) {
+                    const bool skip = i / 64 < dropped_words && ((dropped[i / 64] >> (i % 64)) & 1u) != 0;
+                    candidates[count] = kept[i];
+                    slots[count] = static_cast<std::uint32_t>(i - first);
+                    count += skip ? 0u : 1u;
+                }
+                std::memset(verdicts, 0, last - first);
+                test_candidates(p, count);
+                const std::uint8_t* const tested = p.verdicts.data();
+                for (std::size_t c = 0; c < count; ++c) {
+                    verdicts[slots[c]] = tested[c];
+                }
+                p.keep.colliding += count_colliding(tested, count);
                 keep_bits();
                 continue;
             }

@@ -140,6 +140,11 @@ void pair_search::start_changes() {
     }
     kept_.added_reach.assign(grid_.strips, 0);
     kept_.added_entries.clear();
+    kept_.widened.resize(slots_);
+    for (std::size_t k = 0; k < slots_; ++k) {
+        kept_.widened[k] = signed_bounds{{in_lo_x_[k], in_lo_y_[k], -in_hi_x_[k], -in_hi_y_[k]}};
+    }
+    kept_.dropped.assign((kept_.pairs.size() + 63) / 64, 0);
 }
 
 bool pair_search::absorb_changes(const query_input& input) {
@@ -217,6 +222,7 @@ void pair_search::add_slots(const query_input& input, const std::vector<std::uin
     records_.resize(slots);
     side_.resize(slots);
     kept_.now.resize(slots);
+    kept_.widened.resize(slots);
     if (count == 0) {
         return;
     }
@@ -242,6 +248,7 @@ void pair_search::add_slots(const query_input& input, const std::vector<std::uin
             in_lo_y_[k] = b.lo_y[r];
             in_hi_x_[k] = b.hi_x[r];
             in_hi_y_[k] = b.hi_y[r];
+            kept_.widened[k] = signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
             q_lo_[k] = grid_.q_of(b.lo_x[r]);
             q_hi_[k] = grid_.q_of(b.hi_x[r]);
             keys_[k] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
@@ -257,7 +264,8 @@ void pair_search::add_slots(const query_input& input, const std::vector<std::uin
     }
     // The added entries: those of empty slots dropped, the new ones merged in.
     std::sort(entries.begin(), entries.end());
-    std::vector<std::uint64_t> merged;
+    std::vector<std::uint64_t>& merged = kept_.added_spare;
+    merged.clear();
     merged.reserve(kept_.added_entries.size() + entries.size());
     const std::uint32_t* const order = order_.data();
     auto old = kept_.added_entries.begin();
@@ -280,6 +288,7 @@ void pair_search::find_new_candidates(std::size_t first_new) {
     const std::uint32_t* const order = order_.data();
     const std::uint32_t* const keys = keys_.data();
     const std::uint64_t* const added = kept_.added_entries.data();
+    const signed_bounds* const widened = kept_.widened.data();
     const std::size_t added_count = kept_.added_entries.size();
     const auto offset = static_cast<std::uint32_t>(a_count_);
     for (std::size_t xs = first_new; xs < kept_.slots; ++xs) {
@@ -288,14 +297,15 @@ void pair_search::find_new_candidates(std::size_t first_new) {
         const std::uint32_t high = strip_hi_[x];
         const std::uint32_t q_lo = q_lo_[x];
         const std::uint32_t q_hi = q_hi_[x];
-        const float lo_x = in_lo_x_[x], lo_y = in_lo_y_[x], hi_x = in_hi_x_[x], hi_y = in_hi_y_[x];
+        const signed_bounds bx = widened[x];
         const auto consider = [&](std::uint32_t y) {
-            // An empty slot, x itself, a new slot that finds x itself, or one of the same set.
-            if (order[y] == no_row || y == x || (y >= first_new && y < x) || (!self_ && side_[y] == side_[x])) {
+            // The widened bounds first (one read), the sweep's test; then an
+            // empty slot, x itself, a new slot that finds x itself, or one of the same set.
+            const signed_bounds& by = widened[y];
+            if (!(by.v[0] <= -bx.v[2] && bx.v[0] <= -by.v[2] && by.v[1] <= -bx.v[3] && bx.v[1] <= -by.v[3])) {
                 return;
             }
-            if (q_hi_[y] < q_lo || !(in_lo_x_[y] <= hi_x && lo_x <= in_hi_x_[y] && in_lo_y_[y] <= hi_y &&
-                                      lo_y <= in_hi_y_[y])) {
+            if (y == x || (y >= first_new && y < x) || order[y] == no_row || (!self_ && side_[y] == side_[x])) {
                 return;
             }
             // The caller's order, as the sweep puts its candidates (flush_candidates).
@@ -371,24 +381,34 @@ void pair_search::remap_by_caller(const std::vector<std::uint32_t>& now_of_last,
               [](const tagged_pair& x, const tagged_pair& y) { return order_key(x) < order_key(y); });
     std::vector<tagged_pair>& out = kept_.by_caller_spare;
     out.resize(kept_.by_caller.size() + kept_.moved_pairs.size());
+    kept_.dropped.resize((kept_.pairs.size() + 63) / 64, 0);
+    std::uint64_t* const dropped = kept_.dropped.data();
+    tagged_pair* const into = out.data();
     std::size_t written = 0;
     const tagged_pair* side = kept_.moved_pairs.data();
     const tagged_pair* const side_end = side + kept_.moved_pairs.size();
     for (const tagged_pair& p : kept_.by_caller) {
-        const std::uint32_t la = p.a;
-        const std::uint32_t lb = p.b + b_last;
-        if ((moved[la] | moved[lb]) != 0 || now_of[la] == no_row || now_of[lb] == no_row) {
+        const std::uint32_t a = now_of[p.a];
+        const std::uint32_t b = now_of[p.b + b_last];
+        if ((a == no_row) | (b == no_row)) {
+            // A gone row's pair: dropped for good, and never tested again.
+            dropped[p.tag / 64] |= std::uint64_t{1} << (p.tag % 64);
             continue;
         }
-        const tagged_pair mapped{now_of[la], now_of[lb] - b_now, p.tag};
-        const std::uint64_t key = order_key(mapped);
-        while (side != side_end && order_key(*side) < key) {
-            out[written++] = *side++;
+        if (any_moved && (moved[p.a] | moved[p.b + b_last]) != 0) {
+            continue;  // in moved_pairs
         }
-        out[written++] = mapped;
+        const tagged_pair mapped{a, b - b_now, p.tag};
+        if (side != side_end) {
+            const std::uint64_t key = order_key(mapped);
+            while (side != side_end && order_key(*side) < key) {
+                into[written++] = *side++;
+            }
+        }
+        into[written++] = mapped;
     }
     while (side != side_end) {
-        out[written++] = *side++;
+        into[written++] = *side++;
     }
     out.resize(written);
     kept_.by_caller.swap(out);

@@ -77,9 +77,9 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         // is false, the answer of leaving the pair out. It tests every kept
         // pair, which costs less than the filter, and needs no bounds of this
         // call beyond the check that they fit. Kept pairs of empty slots are
-        // never taken: the filter drops them (their bounds are NaN).
+        // never tested (kept_pairs::dropped).
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
-        const bool unfiltered = exact && !(kept_.by_id && kept_.empty_slots > 0);
+        const bool unfiltered = exact;
         const bool fits = refresh_records(input, parts, !unfiltered);
         stats_.bounds_seconds = seconds_since(start);
         if (fits) {
@@ -290,6 +290,7 @@ void pair_search::keep_candidates(std::size_t parts) {
     }
     stats_.kept_candidates = kept_.pairs.size();
     kept_.answer_parts = 0;
+    kept_.dropped.clear();
     stats_.output_seconds += seconds_since(start);
 }
 

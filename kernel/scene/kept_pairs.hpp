@@ -120,9 +120,16 @@ struct kept_pairs {
     /// The slots added since the full query, an entry for each strip each
     /// touches (key: strip, then quantized lo_x), sorted by key.
     std::vector<std::uint64_t> added_entries;  ///< key << 32 | slot
+    std::vector<std::uint64_t> added_spare;    ///< added_entries' next contents while they are merged
     /// Rows of the last call whose place in the order of rows changed
     /// against the others (kept_changes.cpp): their pairs are sorted apart.
     std::vector<std::uint8_t> row_moved;
+    /// Bit i % 64 of word i / 64: pairs[i] belongs to a gone row (dropped from
+    /// by_caller); the test skips it. Empty until a row has gone.
+    std::vector<std::uint64_t> dropped;
+    /// The widened bounds of each slot as (lo_x, lo_y, -hi_x, -hi_y), for the
+    /// search of new slots' candidates: one read per slot looked at.
+    scratch_vector<signed_bounds> widened;
     std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
 };

@@ -26,23 +26,20 @@ template <class Value>
 std::size_t mark_out_of_order(const Value* values, std::size_t count, bool skips, Value skip,
                               std::vector<std::uint8_t>& marks) {
     marks.assign(count, 0);
-    // The entries that take part, by position.
-    std::vector<std::size_t> at;
-    at.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (!skips || values[i] != skip) {
-            at.push_back(i);
-        }
-    }
-    const std::size_t n = at.size();
+    const auto takes_part = [&](std::size_t i) { return !skips || values[i] != skip; };
     std::size_t marked = 0;
-    for (std::size_t k = 0; k + 1 < n; ++k) {
-        if (values[at[k]] > values[at[k + 1]]) {
-            marked += marks[at[k]] == 0 ? 1u : 0u;
-            marked += marks[at[k + 1]] == 0 ? 1u : 0u;
-            marks[at[k]] = 1;
-            marks[at[k + 1]] = 1;
+    std::size_t previous = count;  // the last entry that takes part, none yet
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!takes_part(i)) {
+            continue;
         }
+        if (previous != count && values[previous] > values[i]) {
+            marked += marks[previous] == 0 ? 1u : 0u;
+            marked += marks[i] == 0 ? 1u : 0u;
+            marks[previous] = 1;
+            marks[i] = 1;
+        }
+        previous = i;
     }
     if (marked == 0) {
         return 0;
@@ -52,9 +49,9 @@ std::size_t mark_out_of_order(const Value* values, std::size_t count, bool skips
         std::size_t count_out = 0;
         bool any = false;
         Value bound{};
-        for (std::size_t j = 0; j < n; ++j) {
-            const std::size_t i = at[forward ? j : n - 1 - j];
-            if (marks[i] == 1) {
+        for (std::size_t j = 0; j < count; ++j) {
+            const std::size_t i = forward ? j : count - 1 - j;
+            if (!takes_part(i) || marks[i] == 1) {
                 continue;
             }
             const Value v = values[i];

@@ -183,6 +183,29 @@ class pair_events;
 /// order), 8 more per rectangle that changed strips since the last full
 /// query, and 16 per rectangle once keeping has paused (the probe's bounds).
 ///
+/// Rows with ids (box_view::with_ids): the kept candidates follow each box by
+/// its id, so rows may be appended, removed (erased or swap-removed),
+/// inserted and reordered between calls; the pairs are still row indices of
+/// this call, sorted by (i, j). A call whose rows differ from the last one's
+/// carries the kept candidates over at a cost of the change plus a few
+/// linear passes: a gone row's candidates are dropped, a new row's are
+/// looked up in the kept strips (its widened bounds against every kept
+/// box's and the other new ones'), and the sorted kept pairs are mapped to
+/// this call's rows, those of rows that changed places against the others
+/// sorted apart and merged in. A change of more than an eighth of the rows,
+/// or gone and added rows since the last full query passing a quarter of
+/// them, makes the call a full query (which keeps again: the scene is the
+/// same by id). Two rows with one id throw invalid_input naming both rows and
+/// the id, before anything changes. Without ids rows are matched by position
+/// as above; a call with ids after calls without matches by position once.
+/// A query across two sets takes ids for both sets or for neither (its ids
+/// are per set: the same id in a and in b names two boxes). Memory with ids,
+/// per rectangle: 8 bytes for the last ids and about 24 for a set of them,
+/// 4 for the last rows' places, 1 for the check of their order, and, once a
+/// row came or went since the last full query, 16 for the widened bounds and
+/// 1 bit per kept pair (those of gone rows); empty and added slots keep their
+/// per-rectangle memory until the next full query.
+///
 /// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
 /// and its find, stats, track_events, began and ended throw invalid_input
 /// ("... on a moved-from pair_finder ...") until a pair_finder is assigned
@@ -193,12 +216,21 @@ class pair_events;
 /// ended colliding since the last call, each sorted by (i, j) as find's pairs
 /// are (i < j within one set; i in a, j in b across two). Rows are matched by
 /// position, whatever the counts: a pair of a row that no longer exists ends,
-/// a pair of a new row begins. The first call after events were turned on
+/// a pair of a new row begins. When the last call's rows had ids, the events
+/// are id pairs instead (began_ids, ended_ids; began and ended then throw
+/// invalid_input): the smaller id first within one set, the id in a first
+/// across two, sorted by (id, id); a gone box's pairs end, a new box's begin,
+/// a box that changed rows keeps its pairs. A call with ids after one without,
+/// or the other way round, reports every pair as begun and none ended. The first call after events were turned on
 /// reports every pair as begun and none ended; so does a call of the other
 /// kind (within one set, across two) than the last, which also ends every pair
 /// of the last. A call that throws changes no events. Cost: one linear merge
 /// of the last answer and this one, 16 bytes per pair kept for it, no
-/// allocation once warm.
+/// allocation once warm. With ids, the answer is first read as id pairs: a
+/// pass over the rows and one over the pairs, the pairs of rows whose ids do
+/// not increase with the row sorted apart (few when ids are counted up as
+/// boxes are made and rows are appended, erased or swap-removed; all of them
+/// when ids are in random order), 32 bytes per pair kept for it.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);

@@ -44,6 +44,44 @@ namespace obbsat::detail {
 
 namespace {
 
+/// std::lower_bound over one strip's sorted keys, started where `key` would
+/// lie if the keys were spread evenly between the first and the last (they
+/// are quantized x positions), then galloping to the answer: a probe or two
+/// where a binary search takes a dozen dependent reads.
+template <class Key>
+const Key* seek(const Key* begin, const Key* end, Key key) {
+    if (begin == end || key <= *begin) {
+        return begin;
+    }
+    const Key first = *begin;
+    const Key last = *(end - 1);
+    if (key > last) {
+        return end;
+    }
+    // first < key <= last: the answer lies in (begin, end - 1].
+    const auto count = static_cast<std::size_t>(end - begin);
+    const double share = static_cast<double>(key - first) / static_cast<double>(last - first);
+    std::size_t at = std::min(count - 1, static_cast<std::size_t>(share * static_cast<double>(count - 1)));
+    if (begin[at] < key) {
+        // Forward: the answer is past `at`.
+        std::size_t step = 1;
+        std::size_t low = at;  // begin[low] < key
+        while (low + step < count && begin[low + step] < key) {
+            low += step;
+            step *= 2;
+        }
+        return std::lower_bound(begin + low + 1, begin + std::min(count, low + step + 1), key);
+    }
+    // Backward: begin[at] >= key, the answer is at or before `at`.
+    std::size_t step = 1;
+    std::size_t high = at;  // begin[high] >= key
+    while (high >= step && begin[high - step] >= key) {
+        high -= step;
+        step *= 2;
+    }
+    return std::lower_bound(begin + (high >= step ? high - step : 0), begin + high, key);
+}
+
 std::uint64_t order_key(const tagged_pair& p) { return (std::uint64_t{p.a} << 32) | p.b; }
 
 }  // namespace
@@ -140,6 +178,7 @@ void pair_search::start_changes() {
     }
     kept_.added_reach.assign(grid_.strips, 0);
     kept_.added_entries.clear();
+    kept_.added_begin.assign(grid_.strips + 1, 0);
     kept_.widened.resize(slots_);
     for (std::size_t k = 0; k < slots_; ++k) {
         kept_.widened[k] = signed_bounds{{in_lo_x_[k], in_lo_y_[k], -in_hi_x_[k], -in_hi_y_[k]}};
@@ -281,6 +320,15 @@ void pair_search::add_slots(const query_input& input, const std::vector<std::uin
         }
     }
     kept_.added_entries.swap(merged);
+    // Where each strip's entries start, so that a search looks in one strip's few.
+    const std::size_t strips = grid_.strips;
+    kept_.added_begin.assign(strips + 1, 0);
+    for (const std::uint64_t e : kept_.added_entries) {
+        ++kept_.added_begin[((e >> 32) >> q_bits) + 1];
+    }
+    for (std::size_t t = 0; t < strips; ++t) {
+        kept_.added_begin[t + 1] += kept_.added_begin[t];
+    }
 }
 
 void pair_search::find_new_candidates(std::size_t first_new) {
@@ -288,9 +336,10 @@ void pair_search::find_new_candidates(std::size_t first_new) {
     const std::uint32_t* const order = order_.data();
     const std::uint32_t* const keys = keys_.data();
     const std::uint64_t* const added = kept_.added_entries.data();
+    const std::uint32_t* const added_begin = kept_.added_begin.data();
     const signed_bounds* const widened = kept_.widened.data();
-    const std::size_t added_count = kept_.added_entries.size();
     const auto offset = static_cast<std::uint32_t>(a_count_);
+    std::vector<std::uint32_t>& near = kept_.near;
     for (std::size_t xs = first_new; xs < kept_.slots; ++xs) {
         const auto x = static_cast<std::uint32_t>(xs);
         const std::uint32_t low = keys[x] >> q_bits;
@@ -298,20 +347,11 @@ void pair_search::find_new_candidates(std::size_t first_new) {
         const std::uint32_t q_lo = q_lo_[x];
         const std::uint32_t q_hi = q_hi_[x];
         const signed_bounds bx = widened[x];
-        const auto consider = [&](std::uint32_t y) {
-            // The widened bounds first (one read), the sweep's test; then an
-            // empty slot, x itself, a new slot that finds x itself, or one of the same set.
-            const signed_bounds& by = widened[y];
-            if (!(by.v[0] <= -bx.v[2] && bx.v[0] <= -by.v[2] && by.v[1] <= -bx.v[3] && bx.v[1] <= -by.v[3])) {
-                return;
-            }
-            if (y == x || (y >= first_new && y < x) || order[y] == no_row || (!self_ && side_[y] == side_[x])) {
-                return;
-            }
-            // The caller's order, as the sweep puts its candidates (flush_candidates).
-            const bool swap = self_ ? order[x] > order[y] : order[x] >= offset;
-            kept_.pairs.push_back(swap ? pair_index{y, x} : pair_index{x, y});
-        };
+        // The slots in reach are gathered first (sequential reads of the
+        // strips' sorted keys) and tested after, with no branch on the
+        // outcome, so that their random reads overlap.
+        near.clear();
+        const auto consider = [&](std::uint32_t y) { near.push_back(y); };
         for (std::uint32_t t = low; t <= high; ++t) {
             const std::uint32_t strip_key = t << q_bits;
             const std::uint32_t hi_key = strip_key | q_hi;
@@ -321,13 +361,13 @@ void pair_search::find_new_candidates(std::size_t first_new) {
                 const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
                 const std::uint32_t* const begin = keys + own_begin_[t];
                 const std::uint32_t* const end = keys + own_begin_[t + 1];
-                for (const std::uint32_t* k = std::lower_bound(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
+                for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
                     consider(static_cast<std::uint32_t>(k - keys));
                 }
                 if (t == low) {
                     const std::uint32_t* const vbegin = visit_keys_.data() + visit_begin_[t];
                     const std::uint32_t* const vend = visit_keys_.data() + visit_begin_[t + 1];
-                    for (const std::uint32_t* v = std::lower_bound(vbegin, vend, lo_key); v != vend && *v <= hi_key;
+                    for (const std::uint32_t* v = seek(vbegin, vend, lo_key); v != vend && *v <= hi_key;
                          ++v) {
                         consider(visit_ids_[static_cast<std::size_t>(v - visit_keys_.data())]);
                     }
@@ -338,8 +378,9 @@ void pair_search::find_new_candidates(std::size_t first_new) {
                 const std::uint32_t reach = kept_.added_reach[t];
                 const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
                 const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
-                for (const std::uint64_t* e = std::lower_bound(added, added + added_count, lo_key);
-                     e != added + added_count && *e <= hi_entry; ++e) {
+                const std::uint64_t* const strip_end = added + added_begin[t + 1];
+                for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);
+                     e != strip_end && *e <= hi_entry; ++e) {
                     const auto y = static_cast<std::uint32_t>(*e & 0xffffffffu);
                     if (t == std::max(low, keys[y] >> q_bits)) {
                         consider(y);
@@ -347,6 +388,28 @@ void pair_search::find_new_candidates(std::size_t first_new) {
                 }
             }
         }
+        // The widened bounds, the sweep's test; and not an empty slot, x
+        // itself, a new slot that finds x itself, or one of the same set.
+        // Each pair is put in the caller's order, as the sweep puts its
+        // candidates (flush_candidates).
+        const std::size_t at = kept_.pairs.size();
+        kept_.pairs.resize(at + near.size());
+        pair_index* const out = kept_.pairs.data() + at;
+        std::size_t found = 0;
+        const std::uint32_t x_row = order[x];
+        const std::uint8_t x_side = side_[x];
+        for (const std::uint32_t y : near) {
+            const signed_bounds& by = widened[y];
+            const std::uint32_t y_row = order[y];
+            const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
+                                 (bx.v[1] <= -by.v[3]);
+            const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
+                               (self_ | (side_[y] != x_side));
+            const bool swap = self_ ? x_row > y_row : x_row >= offset;
+            out[found] = swap ? pair_index{y, x} : pair_index{x, y};
+            found += (overlap & other) ? 1u : 0u;
+        }
+        kept_.pairs.resize(at + found);
     }
 }
 
@@ -387,7 +450,15 @@ void pair_search::remap_by_caller(const std::vector<std::uint32_t>& now_of_last,
     std::size_t written = 0;
     const tagged_pair* side = kept_.moved_pairs.data();
     const tagged_pair* const side_end = side + kept_.moved_pairs.size();
-    for (const tagged_pair& p : kept_.by_caller) {
+    const tagged_pair* const kept = kept_.by_caller.data();
+    const std::size_t kept_count = kept_.by_caller.size();
+    constexpr std::size_t ahead = 32;
+    for (std::size_t j = 0; j < kept_count; ++j) {
+        const tagged_pair& p = kept[j];
+        if (j + ahead < kept_count) {
+            // The second rows are in no order: fetched ahead, they arrive in parallel.
+            __builtin_prefetch(now_of + kept[j + ahead].b + b_last);
+        }
         const std::uint32_t a = now_of[p.a];
         const std::uint32_t b = now_of[p.b + b_last];
         if ((a == no_row) | (b == no_row)) {

@@ -121,6 +121,8 @@ struct kept_pairs {
     /// touches (key: strip, then quantized lo_x), sorted by key.
     std::vector<std::uint64_t> added_entries;  ///< key << 32 | slot
     std::vector<std::uint64_t> added_spare;    ///< added_entries' next contents while they are merged
+    std::vector<std::uint32_t> added_begin;    ///< added_begin[s]: the first of added_entries in strip s
+    std::vector<std::uint32_t> near;           ///< the slots within reach of one new slot, before their test
     /// Rows of the last call whose place in the order of rows changed
     /// against the others (kept_changes.cpp): their pairs are sorted apart.
     std::vector<std::uint8_t> row_moved;

@@ -56,15 +56,6 @@ std::uint64_t verdict_word(const std::uint8_t* v, std::size_t n) {
     return word;
 }
 
-/// How many of `count` verdicts (each 0 or 1) say colliding.
-std::size_t count_colliding(const std::uint8_t* verdicts, std::size_t count) {
-    std::size_t sum = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        sum += verdicts[i];
-    }
-    return sum;
-}
-
 }  // namespace
 
 void pair_search::mark_answer_shares(std::size_t parts) {
@@ -128,44 +119,25 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         static_assert(candidate_block % 64 == 0, "blocks start on a word of the kept verdicts");
         for (std::size_t first = begin; first < end; first += candidate_block) {
             const std::size_t last = std::min(end, first + candidate_block);
+            // The verdicts as bits, those of pairs of gone rows (kept_changes.cpp)
+            // cleared: they are tested with the rest, on records far from
+            // everything, and never answer.
             const auto keep_bits = [&] {
                 const std::size_t n = last - first;
                 for (std::size_t w = 0; 64 * w < n; ++w) {
                     const std::size_t in_word = std::min<std::size_t>(64, n - 64 * w);
                     const std::size_t word = first / 64 + w;
-                    const std::uint64_t bits = verdict_word(verdicts + 64 * w, in_word);
+                    std::uint64_t bits = verdict_word(verdicts + 64 * w, in_word);
+                    bits &= word < dropped_words ? ~dropped[word] : ~std::uint64_t{0};
                     verdict_words[word] = bits;
+                    p.keep.colliding += bits_set(bits);
                     for (std::size_t s = 1; s < parts; ++s) {
                         in_share[s] += bits_set(bits & marks[(s - 1) * words + word]);
                     }
                 }
             };
-            // Pairs of gone rows (kept_changes.cpp) are never tested.
-            std::uint64_t dropped_here = 0;
-            for (std::size_t w = first / 64; 64 * w < last && w < dropped_words; ++w) {
-                dropped_here |= dropped[w];
-            }
-            if (unfiltered && dropped_here == 0) {
-                test_pairs(p, kept + first, last - first, verdicts);
-                p.keep.colliding += count_colliding(verdicts, last - first);
-                keep_bits();
-                continue;
-            }
             if (unfiltered) {
-                std::size_t count = 0;
-                for (std::size_t i = first; i < last; ++i) {
-                    const bool skip = i / 64 < dropped_words && ((dropped[i / 64] >> (i % 64)) & 1u) != 0;
-                    candidates[count] = kept[i];
-                    slots[count] = static_cast<std::uint32_t>(i - first);
-                    count += skip ? 0u : 1u;
-                }
-                std::memset(verdicts, 0, last - first);
-                test_candidates(p, count);
-                const std::uint8_t* const tested = p.verdicts.data();
-                for (std::size_t c = 0; c < count; ++c) {
-                    verdicts[slots[c]] = tested[c];
-                }
-                p.keep.colliding += count_colliding(tested, count);
+                test_pairs(p, kept + first, last - first, verdicts);
                 keep_bits();
                 continue;
             }
@@ -182,7 +154,6 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
             for (std::size_t c = 0; c < count; ++c) {
                 verdicts[slots[c]] = tested[c];
             }
-            p.keep.colliding += count_colliding(tested, count);
             keep_bits();
         }
     });

@@ -14,6 +14,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -42,6 +43,20 @@ void finish_streams() {
 #if defined(__SSE2__)
     _mm_sfence();
 #endif
+}
+
+/// The record of the empty slot `slot` (refresh_records).
+void empty_slot_record(store_kind kind, std::size_t slot, float* v) {
+    const float x = std::ldexp(1.0f, 40) + static_cast<float>(slot % (std::size_t{1} << 20)) * std::ldexp(1.0f, 20);
+    const float y = std::ldexp(1.0f, 40);
+    const float h = std::ldexp(1.0f, 18);
+    if (kind == store_kind::poses) {
+        const float pose[8] = {x, y, h, h, 1.0f, 0.0f, 0.0f, 0.0f};
+        std::memcpy(v, pose, sizeof pose);
+    } else {
+        const float quad[8] = {x - h, y + h, x + h, y + h, x + h, y - h, x - h, y - h};
+        std::memcpy(v, quad, sizeof quad);
+    }
 }
 
 }  // namespace
@@ -213,8 +228,12 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                 }
                 const std::uint32_t id = order[k];
                 if (id == no_row) {
-                    // The slot of a gone row (kept_changes.cpp): zeros, a valid pose and quad.
-                    std::memset(into[k - run_begin].v, 0, sizeof(record));
+                    // The slot of a gone row (kept_changes.cpp): its pairs are
+                    // tested with the others and their verdicts dropped, so
+                    // it holds a valid box far from everything, apart from
+                    // every other gone row's (a square of half side 2^18 at
+                    // x = 2^40 + (k mod 2^20) 2^20, y = 2^40, all exact).
+                    empty_slot_record(kind_, k, into[k - run_begin].v);
                     continue;
                 }
                 if (id < in.a_count ? check_a : check_b) {

@@ -58,10 +58,10 @@ struct find_pairs_stats {
     std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
     bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
-    std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls
+    std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls (of rows still there, with ids)
     bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
-    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
+    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits; pair_finder with ids: carrying the kept candidates over rows that came, went or moved
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
     double kernel_seconds = 0;   ///< the method's kernels alone, summed over the threads (part of the sweep)
     double output_seconds = 0;   ///< mapping back to the caller's indices and sorting

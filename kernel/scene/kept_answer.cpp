@@ -79,7 +79,7 @@ void pair_search::mark_answer_shares(std::size_t parts) {
     kept_.answer_parts = parts;
 }
 
-void pair_search::test_kept(std::size_t parts, bool unfiltered) {
+void pair_search::test_kept(std::size_t parts, bool unfiltered, std::size_t shares) {
     // The kept candidates whose bounds overlap now, by the sweep's own test,
     // are the candidates a sweep would find; the method decides them, or,
     // `unfiltered`, every kept candidate.
@@ -88,12 +88,12 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         parts_.resize(parts);
     }
     kept_.verdicts.resize((kept_.pairs.size() + 63) / 64);
-    mark_answer_shares(parts);
+    mark_answer_shares(shares);
     const std::size_t words = kept_.verdicts.size();
     const signed_bounds* const now = kept_.now.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
-        p.keep.colliding_in_share.assign(parts, 0);
+        p.keep.colliding_in_share.assign(shares, 0);
         if (p.candidates.size() < candidate_block) {
             p.candidates.resize(candidate_block);
             p.verdicts.resize(candidate_block);
@@ -131,7 +131,7 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
                     bits &= word < dropped_words ? ~dropped[word] : ~std::uint64_t{0};
                     verdict_words[word] = bits;
                     p.keep.colliding += bits_set(bits);
-                    for (std::size_t s = 1; s < parts; ++s) {
+                    for (std::size_t s = 1; s < shares; ++s) {
                         in_share[s] += bits_set(bits & marks[(s - 1) * words + word]);
                     }
                 }

@@ -240,7 +240,7 @@ bool pair_search::absorb_changes(const query_input& input) {
         const pair_index caller = caller_pair(kept_.pairs[i]);
         kept_.moved_pairs.push_back(tagged_pair{caller.a, caller.b, static_cast<std::uint32_t>(i)});
     }
-    remap_by_caller(now_of_last_, last_a, moved_rows != 0);
+    sort_moved_pairs(last_a, moved_rows != 0);
     kept_.answer_parts = 0;  // the shares of the answer are marked anew
     stats_.order_seconds = seconds_since(start);
     return true;
@@ -413,14 +413,14 @@ void pair_search::find_new_candidates(std::size_t first_new) {
     }
 }
 
-void pair_search::remap_by_caller(const std::vector<std::uint32_t>& now_of_last, std::size_t last_a_count,
-                                  bool any_moved) {
+void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
     // Rows that keep their order against each other keep their pairs' order:
-    // those pairs are mapped where they lie; the pairs of moved rows are
-    // mapped and sorted apart with the new ones (moved_pairs), and merged in.
+    // those pairs are mapped where they lie when the answer is read
+    // (answer_by_id); the pairs of moved rows are mapped here and sorted
+    // apart with the new ones (moved_pairs), to be merged in then.
     const std::uint32_t b_last = self_ ? 0u : static_cast<std::uint32_t>(last_a_count);
     const std::uint32_t b_now = self_ ? 0u : static_cast<std::uint32_t>(a_count_);
-    const std::uint32_t* const now_of = now_of_last.data();
+    const std::uint32_t* const now_of = now_of_last_.data();
     const std::uint8_t* const moved = kept_.row_moved.data();
     if (any_moved) {
         for (const tagged_pair& p : kept_.by_caller) {
@@ -442,12 +442,41 @@ void pair_search::remap_by_caller(const std::vector<std::uint32_t>& now_of_last,
     }
     std::sort(kept_.moved_pairs.begin(), kept_.moved_pairs.end(),
               [](const tagged_pair& x, const tagged_pair& y) { return order_key(x) < order_key(y); });
-    std::vector<tagged_pair>& out = kept_.by_caller_spare;
-    out.resize(kept_.by_caller.size() + kept_.moved_pairs.size());
+    kept_.remap_pending = true;
+    kept_.remap_any_moved = any_moved;
+    kept_.remap_last_a = last_a_count;
+}
+
+void pair_search::answer_by_id() {
+    // One pass over the kept pairs in the last call's rows: each is mapped
+    // to this call's rows (dropped for good when a row is gone, left to
+    // moved_pairs when a row moved), the sorted moved and new pairs merged
+    // in; the result is by_caller for the next call, and the pairs the method
+    // called colliding, read on the way, are the answer.
+    const auto start = clock_type::now();
+    const std::uint32_t b_last = self_ ? 0u : static_cast<std::uint32_t>(kept_.remap_last_a);
+    const std::uint32_t b_now = self_ ? 0u : static_cast<std::uint32_t>(a_count_);
+    const bool any_moved = kept_.remap_any_moved;
+    const std::uint32_t* const now_of = now_of_last_.data();
+    const std::uint8_t* const moved = kept_.row_moved.data();
+    const std::uint64_t* const verdicts = kept_.verdicts.data();
+    const std::size_t most = kept_.by_caller.size() + kept_.moved_pairs.size();
+    std::vector<tagged_pair>& next = kept_.by_caller_spare;
+    next.resize(most);
+    pairs_.resize(most);
     kept_.dropped.resize((kept_.pairs.size() + 63) / 64, 0);
     std::uint64_t* const dropped = kept_.dropped.data();
-    tagged_pair* const into = out.data();
+    tagged_pair* const into = next.data();
+    pair_index* const out = pairs_.data();
     std::size_t written = 0;
+    std::size_t found = 0;
+    // Each pair is written where the next colliding one goes, and counted
+    // if it collides: no branch on the verdicts.
+    const auto take = [&](const tagged_pair& p) {
+        into[written++] = p;
+        out[found] = pair_index{p.a, p.b};
+        found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
+    };
     const tagged_pair* side = kept_.moved_pairs.data();
     const tagged_pair* const side_end = side + kept_.moved_pairs.size();
     const tagged_pair* const kept = kept_.by_caller.data();
@@ -456,13 +485,14 @@ void pair_search::remap_by_caller(const std::vector<std::uint32_t>& now_of_last,
     for (std::size_t j = 0; j < kept_count; ++j) {
         const tagged_pair& p = kept[j];
         if (j + ahead < kept_count) {
-            // The second rows are in no order: fetched ahead, they arrive in parallel.
+            // The second rows and the verdicts are in no order: fetched ahead, they arrive in parallel.
             __builtin_prefetch(now_of + kept[j + ahead].b + b_last);
+            __builtin_prefetch(verdicts + kept[j + ahead].tag / 64);
         }
         const std::uint32_t a = now_of[p.a];
         const std::uint32_t b = now_of[p.b + b_last];
         if ((a == no_row) | (b == no_row)) {
-            // A gone row's pair: dropped for good, and never tested again.
+            // A gone row's pair: dropped for good, and never answers again.
             dropped[p.tag / 64] |= std::uint64_t{1} << (p.tag % 64);
             continue;
         }
@@ -473,16 +503,22 @@ void pair_search::remap_by_caller(const std::vector<std::uint32_t>& now_of_last,
         if (side != side_end) {
             const std::uint64_t key = order_key(mapped);
             while (side != side_end && order_key(*side) < key) {
-                into[written++] = *side++;
+                take(*side++);
             }
         }
-        into[written++] = mapped;
+        take(mapped);
     }
     while (side != side_end) {
-        into[written++] = *side++;
+        take(*side++);
     }
-    out.resize(written);
-    kept_.by_caller.swap(out);
+    next.resize(written);
+    kept_.by_caller.swap(next);
+    pairs_.resize(found);
+    kept_.remap_pending = false;
+    kept_.answer_parts = 0;  // by_caller changed: the shares of an answer are marked anew
+    stats_.pairs = found;
+    stats_.kept_candidates = written;
+    stats_.output_seconds += seconds_since(start);
 }
 
 }  // namespace obbsat::detail

@@ -105,8 +105,13 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
-            test_kept(parts, unfiltered);
-            answer_from_kept(parts);
+            if (kept_.remap_pending) {
+                test_kept(parts, unfiltered, 1);
+                answer_by_id();
+            } else {
+                test_kept(parts, unfiltered, parts);
+                answer_from_kept(parts);
+            }
             return pairs_;
         }
         if (kept_.calls == 0) {
@@ -190,7 +195,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
     }
     keep_candidates(used_parts_);
     kept_.ready = true;
-    test_kept(used_parts_, false);
+    test_kept(used_parts_, false, used_parts_);
     kept_.last_candidates = stats_.candidates;
     answer_from_kept(used_parts_);
     return pairs_;

@@ -134,6 +134,11 @@ struct kept_pairs {
     scratch_vector<signed_bounds> widened;
     std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
+    /// Set while by_caller is in the last call's rows, to be carried to this
+    /// call's as the answer is read (pair_search::answer_by_id).
+    bool remap_pending = false;
+    bool remap_any_moved = false;
+    std::size_t remap_last_a = 0;  ///< rows of a in the last call
 };
 
 /// One thread's share of the kept candidates (a member of each part of the sweep).

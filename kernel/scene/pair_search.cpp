@@ -36,6 +36,7 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     // The order built below is this query's rows, slot for row.
     kept_.by_id = false;
     kept_.empty_slots = 0;
+    kept_.remap_pending = false;
     slots_ = n_;
     for (part& p : parts_) {
         p.found.clear();

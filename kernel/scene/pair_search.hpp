@@ -191,7 +191,8 @@ private:
     // Their test and the answer read from them: kept_answer.cpp.
     /// Marks, for an answer from kept candidates in `parts` shares, the share of each kept candidate.
     void mark_answer_shares(std::size_t parts);
-    void test_kept(std::size_t parts, bool unfiltered);
+    /// `shares`: the shares of the answer to count (answer_from_kept), 1 for answer_by_id.
+    void test_kept(std::size_t parts, bool unfiltered, std::size_t shares);
     void answer_from_kept(std::size_t parts);
 
     // Rows that came, went or changed places, by id: kept_changes.cpp.
@@ -216,9 +217,11 @@ private:
     void add_slots(const query_input& input, const std::vector<std::uint32_t>& fresh);
     /// Kept candidates of the slots from `first_new` on, against every slot whose widened bounds they meet.
     void find_new_candidates(std::size_t first_new);
-    /// by_caller in this call's rows: `now_of_last` maps the last call's rows (a before b) to these.
-    /// `any_moved`: some row changed places against the others (kept_.row_moved).
-    void remap_by_caller(const std::vector<std::uint32_t>& now_of_last, std::size_t last_a_count, bool any_moved);
+    /// The kept pairs of rows that changed places against the others (kept_.row_moved; `any_moved`: there
+    /// are some), mapped to this call's rows through now_of_last_, sorted with the new ones (moved_pairs).
+    void sort_moved_pairs(std::size_t last_a_count, bool any_moved);
+    /// The answer of a call whose rows changed, read while by_caller is carried to this call's rows.
+    void answer_by_id();
 
     collide_options options_;
     find_pairs_stats stats_;

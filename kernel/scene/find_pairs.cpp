@@ -180,7 +180,8 @@ namespace {
 /// Row pairs of events, or invalid_input when the last call's rows carried ids.
 const std::vector<pair_index>& row_events(const detail::pair_events& events, bool began, const char* call) {
     if (events.by_id()) {
-        throw invalid_input(std::string("pair_finder::") + call + ": the last call's rows carried ids, so its events are id pairs; read " + call + "_ids()");
+        throw invalid_input(std::string("pair_finder::") + call +
+                            ": the last call's rows carried ids, so its events are id pairs; read " + call + "_ids()");
     }
     return began ? events.began() : events.ended();
 }
@@ -188,7 +189,9 @@ const std::vector<pair_index>& row_events(const detail::pair_events& events, boo
 /// Id pairs of events, or invalid_input when the last call's rows carried none.
 const std::vector<id_pair>& id_events(const detail::pair_events& events, bool began, const char* call) {
     if (!events.by_id() && events.has_last()) {
-        throw invalid_input(std::string("pair_finder::") + call + ": the last call's rows carried no ids, so its events are row pairs; read " + (began ? "began()" : "ended()"));
+        throw invalid_input(std::string("pair_finder::") + call +
+                            ": the last call's rows carried no ids, so its events are row pairs; read " +
+                            (began ? "began()" : "ended()"));
     }
     return began ? events.began_ids() : events.ended_ids();
 }

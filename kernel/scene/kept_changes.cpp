@@ -6,29 +6,33 @@
 // linear passes (no sort of all rows, no sweep):
 //   1. Match: each row's id against the last call's (id_rows): same
 //      position, moved, new, or gone.
-//   2. Slots: a gone row's slot is emptied (order_ holds no_row there; its
-//      kept candidates stay but are never taken again), a moved row's slot
-//      names its new row, a new row gets a slot after the last, with its
+//   2. Slots: each slot's row is mapped to this call's (one pass over the
+//      slots); a gone row's slot is emptied (order_ holds no_row there): its
+//      kept pairs stay in place, are tested with the others on a record far
+//      from everything (kept_pairs.cpp) and their verdicts cleared
+//      (kept_pairs::dropped), or, for a float method, never pass the bounds
+//      filter (NaN bounds). A new row gets a slot after the last, with its
 //      record, its widened bounds and its strips on the full query's grid.
 //   3. The new slots' candidates: each new slot is looked up in the strips
 //      it touches, among the full query's entries (each strip's own entries
 //      and visitors, sorted by quantized lo_x; see pair_search.hpp) and among
 //      the slots added since (added_entries, kept sorted by merging each
-//      call's few in). A pair is taken in the strip holding the larger of
-//      the two lowest strips, as the sweep takes it, so it is found once;
-//      a pair of two new slots is taken from the earlier slot. The widened
-//      bounds decide, exactly as in the sweep.
+//      call's few in), each search started where the key would lie in the
+//      strip (seek). A pair is taken in the strip holding the larger of the
+//      two lowest strips, as the sweep takes it, so it is found once; a pair
+//      of two new slots is taken from the earlier slot. The widened bounds
+//      decide, exactly as in the sweep.
 //   4. by_caller, the kept candidates sorted in the caller's rows, is
-//      carried to this call's rows: the rows whose order against the others
-//      is kept (all but a few when rows are appended, removed, or swapped
-//      into a hole) keep their pairs' order; the pairs of the other rows and
-//      of new slots are sorted apart and merged in; those of gone rows are
-//      dropped.
-// The call then refreshes every slot's record and answers from the kept
-// candidates as a call with no change does (kept_pairs.cpp). A change of
-// more than an eighth of the rows, or empty and added slots passing a
-// quarter of the slots, makes the call a full query instead, which lays the
-// slots out anew.
+//      carried to this call's rows: the pairs of rows that changed places
+//      against the others (out_of_order.hpp: none when rows are appended or
+//      erased, a few when one is swapped into a hole) are mapped and sorted
+//      apart with the new slots' pairs, and the kept pairs are tested; then
+//      one pass over by_caller maps each pair to this call's rows (their
+//      order is kept), merges the sorted ones in, drops those of gone rows,
+//      and reads the answer on the way (answer_by_id).
+// A change of more than an eighth of the rows, or empty and added slots
+// passing a quarter of the slots, makes the call a full query instead, which
+// lays the slots out anew (and keeps again: the scene is the same by id).
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
@@ -206,7 +210,8 @@ bool pair_search::absorb_changes(const query_input& input) {
     }
     // The policy: a change of more than an eighth of the rows, or empty and
     // added slots passing a quarter of the slots, is a full query's job.
-    const std::size_t moved_rows = mark_out_of_order(now_of_last_.data(), now_of_last_.size(), true, no_row, kept_.row_moved);
+    const std::size_t moved_rows =
+        mark_out_of_order(now_of_last_.data(), now_of_last_.size(), true, no_row, kept_.row_moved);
     const std::size_t change = moved_rows + fresh.size() + gone_count;
     const std::size_t slots_before = kept_.by_id ? kept_.slots : slots_;
     const std::size_t added_before = kept_.by_id ? kept_.slots - kept_.full_slots : 0;

@@ -48,6 +48,9 @@
 // timed cheaper. Its state is kept_pairs
 // (kept_pairs.hpp); its steps are in kept_pairs.cpp (the policy, collect,
 // and keeping the candidates) and kept_answer.cpp (their test and answer).
+// Rows with ids (box_view::with_ids) may come, go and change places between
+// calls: id_rows.hpp matches a call's ids with the last call's, and
+// kept_changes.cpp carries the kept candidates over to this call's rows.
 #pragma once
 
 #include "scene/id_rows.hpp"

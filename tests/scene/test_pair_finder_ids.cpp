@@ -486,3 +486,57 @@ TEST(pair_finder_ids, keeping_resumes_after_a_miss_while_rows_keep_coming_and_go
 }
 
 }  // namespace
+
+namespace {
+
+TEST(pair_finder_ids, an_invalid_new_row_is_refused_and_the_next_call_answers_right) {
+    world w(3000, 101);
+    obbsat::pair_finder finder(options_for(method::exact));
+    for (std::size_t f = 0; f < 12; ++f) {
+        if (f > 1) {
+            w.drift(0.01f);
+            w.swap_remove(w.random.below(w.poses.size()));
+            w.add_at(w.poses.size());
+        }
+        std::vector<rect_pose> poses = w.poses;
+        if (f == 6) {
+            poses.back().half_extents.x = -1.0f;  // the new row is invalid
+            try {
+                finder.find(obbsat::box_view(poses).with_ids(w.ids));
+                ADD_FAILURE() << "an invalid row was accepted";
+            } catch (const obbsat::invalid_input& e) {
+                EXPECT_NE(std::string(e.what()).find(std::to_string(poses.size() - 1)), std::string::npos) << e.what();
+            }
+            continue;
+        }
+        const obbsat::box_view view(poses);
+        const std::vector<pair_index>& got = finder.find(view.with_ids(w.ids));
+        ASSERT_TRUE(same_pairs(got, obbsat::find_pairs(view, options_for(method::exact)))) << "frame " << f;
+    }
+}
+
+TEST(pair_finder_ids, empty_and_tiny_sets_with_ids) {
+    obbsat::pair_finder finder(options_for(method::exact));
+    finder.track_events(true);
+    const std::vector<rect_pose> two = {{{0, 0}, {1, 1}, {1, 0}}, {{1, 0}, {1, 1}, {1, 0}}};
+    const std::vector<std::uint64_t> ids = {~std::uint64_t{0}, 0};
+    for (std::size_t count : {0u, 1u, 2u, 1u, 2u, 0u, 2u}) {
+        const std::vector<rect_pose> rows(two.begin(), two.begin() + static_cast<std::ptrdiff_t>(count));
+        const std::vector<std::uint64_t> row_ids(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(count));
+        const std::vector<pair_index>& got = finder.find(obbsat::box_view(rows).with_ids(row_ids));
+        EXPECT_EQ(got.size(), count == 2 ? 1u : 0u);
+        if (count == 2) {
+            // The smaller id first: the pair of rows (0, 1) is the id pair (0, 2^64 - 1); the last call
+            // was across two sets, so every pair of this one begins.
+            const std::vector<id_pair> all = {{0, ~std::uint64_t{0}}};
+            EXPECT_EQ(finder.began_ids(), all);
+        }
+        // Across two sets, one of them empty.
+        const std::vector<pair_index>& cross =
+            finder.find(obbsat::box_view(rows).with_ids(row_ids), obbsat::box_view(two).with_ids(ids));
+        EXPECT_TRUE(
+            same_pairs(cross, obbsat::find_pairs(obbsat::box_view(rows), obbsat::box_view(two), options_for(method::exact))));
+    }
+}
+
+}  // namespace

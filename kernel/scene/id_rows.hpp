@@ -14,8 +14,8 @@
 // on the way, with a set of the last call's ids (the last ids are unique, so
 // a duplicate involves a row that is new or left over): see match().
 //
-// Memory: 8 bytes per row for the last ids and about 24 for the set (ids at
-// a load of at most one half, and a byte each).
+// Memory: 8 bytes per row for the last ids and 18 to 36 for the set (9
+// bytes a place, at a load between a quarter and a half), 4 for the match.
 #pragma once
 
 #include <cstddef>

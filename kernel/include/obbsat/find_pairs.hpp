@@ -200,8 +200,8 @@ class pair_events;
 /// as above; a call with ids after calls without matches by position once.
 /// A query across two sets takes ids for both sets or for neither (its ids
 /// are per set: the same id in a and in b names two boxes). Memory with ids,
-/// per rectangle: 8 bytes for the last ids and about 24 for a set of them,
-/// 4 for the last rows' places, 1 for the check of their order, and, once a
+/// per rectangle: 8 bytes for the last ids and 18 to 36 for a set of them,
+/// 8 for the last rows' places, 1 for the check of their order, and, once a
 /// row came or went since the last full query, 16 for the widened bounds and
 /// 1 bit per kept pair (those of gone rows); empty and added slots keep their
 /// per-rectangle memory until the next full query.

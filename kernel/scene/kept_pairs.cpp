@@ -91,11 +91,11 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         // rectangles): its verdict on a kept pair whose bounds do not overlap
         // is false, the answer of leaving the pair out. It tests every kept
         // pair, which costs less than the filter, and needs no bounds of this
-        // call beyond the check that they fit. Kept pairs of empty slots are
-        // never tested (kept_pairs::dropped).
+        // call beyond the check that they fit. Kept pairs of rows gone since
+        // (kept_changes.cpp) never answer: their verdicts are cleared
+        // (kept_pairs::dropped), and the filter drops them anyway.
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
-        const bool unfiltered = exact;
-        const bool fits = refresh_records(input, parts, !unfiltered);
+        const bool fits = refresh_records(input, parts, !exact);
         stats_.bounds_seconds = seconds_since(start);
         if (fits) {
             ++kept_.calls;
@@ -106,10 +106,10 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
             stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
             if (kept_.remap_pending) {
-                test_kept(parts, unfiltered, 1);
+                test_kept(parts, exact, 1);
                 answer_by_id();
             } else {
-                test_kept(parts, unfiltered, parts);
+                test_kept(parts, exact, parts);
                 answer_from_kept(parts);
             }
             return pairs_;
@@ -123,8 +123,8 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
     }
     if (kept_.by_id || rows_changed_) {
         // The order's slots are not this call's rows: the full query sorts
-        // anew, on a grid of its own, and probes no motion against rows that
-        // changed places, but against the last call's bounds carried over to these rows.
+        // anew, on a grid of its own; a paused one probes the motion against
+        // the last call's bounds carried over to these rows.
         have_order_ = false;
         if (rows_changed_ && kept_.paused && kept_.probe_ready && kept_.last.size() == now_of_last_.size()) {
             carry_probe_over();

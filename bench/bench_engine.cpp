@@ -7,6 +7,10 @@
 //       answered from kept candidates (find_pairs_stats::reused_candidates);
 //       candidates_per_box and kept_per_box: the candidates tested, and the
 //       candidates of widened bounds kept for the next frames, per box.
+//       A scene whose boxes have ids (spawn_despawn) passes them
+//       (box_view::with_ids), so that the finder follows rows that come and
+//       go; engine_frame/drift is the same scene with no rows changed, so
+//       spawn_despawn over drift reads the cost of the change from one run.
 //   engine_cold/<scene>/boxes:<N>/threads:<T>   a fresh obbsat::find_pairs
 //       on the same frames.
 // Both on poses, method exact. Counters ns_per_box and pairs_per_box (per
@@ -71,6 +75,13 @@ obbsat::collide_options exact_options(unsigned threads) {
     return options;
 }
 
+/// The current frame's rows, with their ids when the scene gives ids.
+obbsat::box_view frame_view(const engine_sequence& frames) {
+    const obbsat::box_view rows(frames.poses());
+    const std::vector<std::uint64_t>* ids = frames.ids();
+    return ids != nullptr ? rows.with_ids(*ids) : rows;
+}
+
 /// "" when a pair_finder and find_pairs agree on the first frames, else what differs.
 const std::string& check_engine_scene(engine_scene scene, std::size_t boxes, unsigned threads) {
     static std::map<std::tuple<engine_scene, std::size_t, unsigned>, std::string> checked;
@@ -84,7 +95,7 @@ const std::string& check_engine_scene(engine_scene scene, std::size_t boxes, uns
     obbsat::pair_finder finder(exact_options(threads));
     const int count = boxes <= check_limit ? check_frames : 4;
     for (int t = 0; t < count && error.empty(); ++t, frames->step()) {
-        const std::vector<obbsat::pair_index>& kept = finder.find(frames->poses());
+        const std::vector<obbsat::pair_index>& kept = finder.find(frame_view(*frames));
         const std::vector<obbsat::pair_index> cold = obbsat::find_pairs(frames->poses(), exact_options(threads));
         const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
             return x.a == y.a && x.b == y.b;
@@ -119,14 +130,14 @@ void run_engine_row(benchmark::State& state, engine_scene scene, std::size_t box
         obbsat::pair_finder finder(exact_options(threads));
         for (int t = 0; t < warm_frames; ++t, frames->step()) {
             if (kept) {
-                finder.find(frames->poses());
+                finder.find(frame_view(*frames));
             }
         }
         std::vector<obbsat::pair_index> cold;
         double pairs = 0, from_kept = 0, candidates = 0, kept_candidates = 0;
         for (auto _ : state) {
             if (kept) {
-                const std::vector<obbsat::pair_index>& found = finder.find(frames->poses());
+                const std::vector<obbsat::pair_index>& found = finder.find(frame_view(*frames));
                 benchmark::DoNotOptimize(found.data());
                 pairs += static_cast<double>(found.size());
                 from_kept += finder.stats().reused_candidates ? 1.0 : 0.0;

@@ -299,7 +299,11 @@ protected:
 
 class spawn_despawn_sequence final : public drifting_uniform_sequence {
 public:
-    explicit spawn_despawn_sequence(std::size_t boxes) : drifting_uniform_sequence(boxes, 41) {}
+    explicit spawn_despawn_sequence(std::size_t boxes) : drifting_uniform_sequence(boxes, 41) {
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            ids_.push_back(next_id_++);
+        }
+    }
 
     void step() override {
         drift();
@@ -310,16 +314,37 @@ public:
             if (chosen_[i] == 0) {
                 rows_[kept] = rows_[i];
                 velocity_[kept] = velocity_[i];
+                ids_[kept] = ids_[i];
                 ++kept;
             }
         }
         rows_.resize(kept);
         velocity_.resize(kept);
+        ids_.resize(kept);
         for (std::size_t k = 0; k < churn; ++k) {
             rows_.push_back(random_box());
             velocity_.push_back(random_velocity());
+            ids_.push_back(next_id_++);
         }
         // The rows a user would pass: a new store each frame.
+        current_ = obbsat::pose_records(rows_);
+    }
+
+    const std::vector<std::uint64_t>* ids() const override { return &ids_; }
+
+private:
+    std::vector<std::uint64_t> ids_;
+    std::uint64_t next_id_ = 0;
+};
+
+class drift_sequence final : public drifting_uniform_sequence {
+public:
+    // spawn_despawn's seed: the same scene, drifting alike, with no rows changed.
+    explicit drift_sequence(std::size_t boxes) : drifting_uniform_sequence(boxes, 41) {}
+
+    void step() override {
+        drift();
+        // A new store each frame, as spawn_despawn makes.
         current_ = obbsat::pose_records(rows_);
     }
 };
@@ -350,6 +375,8 @@ const char* engine_scene_name(engine_scene scene) {
             return "tumbler";
         case engine_scene::spawn_despawn:
             return "spawn_despawn";
+        case engine_scene::drift:
+            return "drift";
         case engine_scene::teleports:
             return "teleports";
     }
@@ -364,6 +391,8 @@ std::unique_ptr<engine_sequence> make_engine_sequence(engine_scene scene, std::s
             return std::make_unique<tumbler_sequence>(boxes);
         case engine_scene::spawn_despawn:
             return std::make_unique<spawn_despawn_sequence>(boxes);
+        case engine_scene::drift:
+            return std::make_unique<drift_sequence>(boxes);
         case engine_scene::teleports:
             return std::make_unique<teleports_sequence>(boxes);
     }

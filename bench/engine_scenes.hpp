@@ -29,6 +29,12 @@
 //                  are appended, at random places in the scene's square. The
 //                  count stays the same; the rows after the first removed one
 //                  hold other boxes than the frame before.
+//                  Each box has an id (counted up as boxes are made, the
+//                  ids of removed boxes never come back), which the
+//                  engine_frame rows pass (box_view::with_ids).
+//   drift          The same uniform drifting scene with no box removed or
+//                  added: spawn_despawn's frames without the change of rows,
+//                  the baseline its frame rows compare with.
 //   teleports      The same uniform drifting scene; every frame 2% of the
 //                  boxes, drawn at random, jump to a random place in the
 //                  scene's square.
@@ -37,16 +43,19 @@
 #include <obbsat/pose_records.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace obbsat_bench {
 
-enum class engine_scene { stacks, tumbler, spawn_despawn, teleports };
+enum class engine_scene { stacks, tumbler, spawn_despawn, drift, teleports };
 
 inline constexpr engine_scene engine_scenes[] = {engine_scene::stacks, engine_scene::tumbler,
-                                                 engine_scene::spawn_despawn, engine_scene::teleports};
+                                                 engine_scene::spawn_despawn, engine_scene::drift,
+                                                 engine_scene::teleports};
 
-/// "stacks", "tumbler", "spawn_despawn" or "teleports".
+/// "stacks", "tumbler", "spawn_despawn", "drift" or "teleports".
 const char* engine_scene_name(engine_scene scene);
 
 /// One run through a scene's frames, from frame 0.
@@ -57,6 +66,9 @@ public:
     virtual const obbsat::pose_records& poses() const = 0;
     /// Moves to the next frame.
     virtual void step() = 0;
+    /// The ids of the current frame's rows, one per row, when the scene
+    /// gives its boxes ids (spawn_despawn); nullptr otherwise.
+    virtual const std::vector<std::uint64_t>* ids() const { return nullptr; }
 };
 
 /// Frame 0 of `scene` with `boxes` boxes (walls and grounds counted).

@@ -26,6 +26,10 @@ void pair_search::widen(bounds_run& b, std::size_t count) const {
     if (!kept_.keep || kept_.margin == 0.0f) {
         return;
     }
+    widen_bounds(b, count, kept_.margin, kept_.typical_extent);
+}
+
+void pair_search::widen_bounds(bounds_run& b, std::size_t count, float margin, float typical) {
     // Each box by a share of its larger extent or of the scene's typical
     // extent, whichever is larger, so that a few huge boxes widen only
     // themselves and the smallest still get room to move. Rounding is
@@ -33,8 +37,7 @@ void pair_search::widen(bounds_run& b, std::size_t count) const {
     // the bounds. An extent is never NaN (lo <= hi, at worst -inf and +inf),
     // so neither is m.
     for (std::size_t i = 0; i < count; ++i) {
-        const float m =
-            kept_.margin * std::max(std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]), kept_.typical_extent);
+        const float m = margin * std::max(std::max(b.hi_x[i] - b.lo_x[i], b.hi_y[i] - b.lo_y[i]), typical);
         b.lo_x[i] -= m;
         b.lo_y[i] -= m;
         b.hi_x[i] += m;
@@ -113,7 +116,8 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
     // the bounds are at hand in the caller's order: each box's bounds against
     // the last call's widened ones, which this call's then replace.
     const bool probe = kept_.paused && kept_.probing && !kept_.keep;
-    const bool compare = probe && same_scene_as_last() && kept_.probe_ready && kept_.last.size() == n_;
+    const bool compare =
+        probe && (same_scene_as_last() || probe_carried_) && kept_.probe_ready && kept_.last.size() == n_;
     if (probe) {
         kept_.probe_ready = false;  // until this pass has written every entry
         kept_.last.resize(n_);

@@ -32,12 +32,29 @@ box_view::box_view(const std::vector<rect_pose>& poses) : box_view(poses.data(),
 
 box_view::box_view(const std::vector<rect>& rects) : box_view(rects.data(), rects.size()) {}
 
+box_view box_view::with_ids(const std::uint64_t* ids, std::size_t count) const {
+    if (count != count_) {
+        throw invalid_input("box_view::with_ids: " + std::to_string(count) + " ids for " + std::to_string(count_) +
+                            " rows; give one id per row");
+    }
+    if (ids == nullptr && count != 0) {
+        throw invalid_input("box_view::with_ids: ids is nullptr for " + std::to_string(count) + " rows");
+    }
+    box_view view = *this;
+    view.ids_ = ids;
+    view.has_ids_ = true;
+    return view;
+}
+
+box_view box_view::with_ids(const std::vector<std::uint64_t>& ids) const { return with_ids(ids.data(), ids.size()); }
+
 namespace {
 
 /// The query over `a`, and `b` when it is not nullptr. An empty set's
 /// pointer may be nullptr, but the second set's must not be: nullptr there
-/// means "a query within the first set".
-detail::query_input input_of(const box_view& a, const box_view* b) {
+/// means "a query within the first set". The rows' ids are taken only `with_ids`
+/// (a pair_finder's calls); a query across two sets takes them from both or neither.
+detail::query_input input_of(const box_view& a, const box_view* b, bool with_ids = false) {
     static const float none[8] = {};
     detail::query_input in;
     in.kind = a.kind();
@@ -57,6 +74,17 @@ detail::query_input input_of(const box_view& a, const box_view* b) {
         in.b_stride = b->stride();
         in.b_checked = b->checked();
         in.b_filters = b->filters();
+    }
+    if (with_ids && (a.has_ids() || (b != nullptr && b->has_ids()))) {
+        if (b != nullptr && a.has_ids() != b->has_ids()) {
+            throw invalid_input(std::string("pair_finder::find: ") + (a.has_ids() ? "a" : "b") +
+                                " has ids and " + (a.has_ids() ? "b" : "a") +
+                                " has none; a query across two sets takes ids for both or for neither");
+        }
+        static const std::uint64_t no_ids[1] = {};
+        in.with_ids = true;
+        in.a_ids = a.ids() != nullptr ? a.ids() : no_ids;
+        in.b_ids = b == nullptr ? nullptr : (b->ids() != nullptr ? b->ids() : no_ids);
     }
     return in;
 }
@@ -110,9 +138,10 @@ detail::pair_search& engine_of(const std::unique_ptr<detail::pair_search>& searc
 const std::vector<pair_index>& pair_finder::find(box_view boxes) {
     detail::pair_search& search = engine_of(search_, "find");
     const detail::executor_scope scope(search.caller_executor());
-    const std::vector<pair_index>& found = search.collect(input_of(boxes, nullptr));
+    const detail::query_input input = input_of(boxes, nullptr, true);
+    const std::vector<pair_index>& found = search.collect(input);
     if (events_) {
-        events_->update(found, false);
+        events_->update(found, false, input.with_ids ? input.a_ids : nullptr, nullptr, input.a_count, 0);
     }
     return found;
 }
@@ -120,9 +149,11 @@ const std::vector<pair_index>& pair_finder::find(box_view boxes) {
 const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
     detail::pair_search& search = engine_of(search_, "find");
     const detail::executor_scope scope(search.caller_executor());
-    const std::vector<pair_index>& found = search.collect(input_of(a, &b));
+    const detail::query_input input = input_of(a, &b, true);
+    const std::vector<pair_index>& found = search.collect(input);
     if (events_) {
-        events_->update(found, true);
+        events_->update(found, true, input.with_ids ? input.a_ids : nullptr, input.with_ids ? input.b_ids : nullptr,
+                        input.a_count, input.b_count);
     }
     return found;
 }
@@ -155,8 +186,43 @@ const detail::pair_events& events_of(const std::unique_ptr<detail::pair_search>&
 
 }  // namespace
 
-const std::vector<pair_index>& pair_finder::began() const { return events_of(search_, events_, "began").began(); }
+namespace {
 
-const std::vector<pair_index>& pair_finder::ended() const { return events_of(search_, events_, "ended").ended(); }
+/// Row pairs of events, or invalid_input when the last call's rows carried ids.
+const std::vector<pair_index>& row_events(const detail::pair_events& events, bool began, const char* call) {
+    if (events.by_id()) {
+        throw invalid_input(std::string("pair_finder::") + call +
+                            ": the last call's rows carried ids, so its events are id pairs; read " + call + "_ids()");
+    }
+    return began ? events.began() : events.ended();
+}
+
+/// Id pairs of events, or invalid_input when the last call's rows carried none.
+const std::vector<id_pair>& id_events(const detail::pair_events& events, bool began, const char* call) {
+    if (!events.by_id() && events.has_last()) {
+        throw invalid_input(std::string("pair_finder::") + call +
+                            ": the last call's rows carried no ids, so its events are row pairs; read " +
+                            (began ? "began()" : "ended()"));
+    }
+    return began ? events.began_ids() : events.ended_ids();
+}
+
+}  // namespace
+
+const std::vector<pair_index>& pair_finder::began() const {
+    return row_events(events_of(search_, events_, "began"), true, "began");
+}
+
+const std::vector<pair_index>& pair_finder::ended() const {
+    return row_events(events_of(search_, events_, "ended"), false, "ended");
+}
+
+const std::vector<id_pair>& pair_finder::began_ids() const {
+    return id_events(events_of(search_, events_, "began_ids"), true, "began_ids");
+}
+
+const std::vector<id_pair>& pair_finder::ended_ids() const {
+    return id_events(events_of(search_, events_, "ended_ids"), false, "ended_ids");
+}
 
 }  // namespace obbsat

@@ -56,15 +56,6 @@ std::uint64_t verdict_word(const std::uint8_t* v, std::size_t n) {
     return word;
 }
 
-/// How many of `count` verdicts (each 0 or 1) say colliding.
-std::size_t count_colliding(const std::uint8_t* verdicts, std::size_t count) {
-    std::size_t sum = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        sum += verdicts[i];
-    }
-    return sum;
-}
-
 }  // namespace
 
 void pair_search::mark_answer_shares(std::size_t parts) {
@@ -88,7 +79,7 @@ void pair_search::mark_answer_shares(std::size_t parts) {
     kept_.answer_parts = parts;
 }
 
-void pair_search::test_kept(std::size_t parts, bool unfiltered) {
+void pair_search::test_kept(std::size_t parts, bool unfiltered, std::size_t shares) {
     // The kept candidates whose bounds overlap now, by the sweep's own test,
     // are the candidates a sweep would find; the method decides them, or,
     // `unfiltered`, every kept candidate.
@@ -97,12 +88,12 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         parts_.resize(parts);
     }
     kept_.verdicts.resize((kept_.pairs.size() + 63) / 64);
-    mark_answer_shares(parts);
+    mark_answer_shares(shares);
     const std::size_t words = kept_.verdicts.size();
     const signed_bounds* const now = kept_.now.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];
-        p.keep.colliding_in_share.assign(parts, 0);
+        p.keep.colliding_in_share.assign(shares, 0);
         if (p.candidates.size() < candidate_block) {
             p.candidates.resize(candidate_block);
             p.verdicts.resize(candidate_block);
@@ -116,6 +107,8 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         // Plain pointers: a byte store may alias anything, and the vectors'
         // own pointers would be reloaded on every candidate.
         const pair_index* const kept = kept_.pairs.data();
+        const std::uint64_t* const dropped = kept_.dropped.data();
+        const std::size_t dropped_words = kept_.dropped.size();
         std::uint64_t* const verdict_words = kept_.verdicts.data();
         const std::uint64_t* const marks = kept_.answer_marks.data();
         std::size_t* const in_share = p.keep.colliding_in_share.data();
@@ -126,21 +119,25 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
         static_assert(candidate_block % 64 == 0, "blocks start on a word of the kept verdicts");
         for (std::size_t first = begin; first < end; first += candidate_block) {
             const std::size_t last = std::min(end, first + candidate_block);
+            // The verdicts as bits, those of pairs of gone rows (kept_changes.cpp)
+            // cleared: they are tested with the rest, on records far from
+            // everything, and never answer.
             const auto keep_bits = [&] {
                 const std::size_t n = last - first;
                 for (std::size_t w = 0; 64 * w < n; ++w) {
                     const std::size_t in_word = std::min<std::size_t>(64, n - 64 * w);
                     const std::size_t word = first / 64 + w;
-                    const std::uint64_t bits = verdict_word(verdicts + 64 * w, in_word);
+                    std::uint64_t bits = verdict_word(verdicts + 64 * w, in_word);
+                    bits &= word < dropped_words ? ~dropped[word] : ~std::uint64_t{0};
                     verdict_words[word] = bits;
-                    for (std::size_t s = 1; s < parts; ++s) {
+                    p.keep.colliding += bits_set(bits);
+                    for (std::size_t s = 1; s < shares; ++s) {
                         in_share[s] += bits_set(bits & marks[(s - 1) * words + word]);
                     }
                 }
             };
             if (unfiltered) {
                 test_pairs(p, kept + first, last - first, verdicts);
-                p.keep.colliding += count_colliding(verdicts, last - first);
                 keep_bits();
                 continue;
             }
@@ -157,7 +154,6 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered) {
             for (std::size_t c = 0; c < count; ++c) {
                 verdicts[slots[c]] = tested[c];
             }
-            p.keep.colliding += count_colliding(tested, count);
             keep_bits();
         }
     });

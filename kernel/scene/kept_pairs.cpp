@@ -14,6 +14,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -44,23 +45,61 @@ void finish_streams() {
 #endif
 }
 
+/// The record of the empty slot `slot` (refresh_records).
+void empty_slot_record(store_kind kind, std::size_t slot, float* v) {
+    const float x = std::ldexp(1.0f, 40) + static_cast<float>(slot % (std::size_t{1} << 20)) * std::ldexp(1.0f, 20);
+    const float y = std::ldexp(1.0f, 40);
+    const float h = std::ldexp(1.0f, 18);
+    if (kind == store_kind::poses) {
+        const float pose[8] = {x, y, h, h, 1.0f, 0.0f, 0.0f, 0.0f};
+        std::memcpy(v, pose, sizeof pose);
+    } else {
+        const float quad[8] = {x - h, y + h, x + h, y + h, x + h, y - h, x - h, y - h};
+        std::memcpy(v, quad, sizeof quad);
+    }
+}
+
 }  // namespace
 
 const std::vector<pair_index>& pair_search::collect(const query_input& input) {
+    // The ids are matched first: a duplicate id is refused before anything changes.
+    match_ids(input);
     set_query(input);
+    commit_ids(input);
+    try {
+        return collect_matched(input);
+    } catch (...) {
+        abandon_kept();
+        throw;
+    }
+}
+
+const std::vector<pair_index>& pair_search::collect_matched(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
     if (kept_.ready && !kept_filters_.same_as(input)) {
-        // Kept candidates hold only the pairs their filters let through (kept_filters.hpp).
+        // Kept candidates hold only the pairs their filters let through
+        // (kept_filters.hpp), compared by position: rows that came, went or
+        // changed places with filters make a full query.
         kept_.ready = false;
     }
-    if (kept_.ready && same_scene_as_last() && n_ >= 2) {
+    probe_carried_ = false;
+    if (rows_changed_) {
+        map_last_rows();
+    }
+    // The kept candidates serve rows matched by position (the last call's
+    // rows, none moved since the full query), or rows matched by id, carried
+    // over to this call's rows (kept_changes.cpp).
+    const bool by_position = !kept_.by_id && !rows_changed_ && same_scene_as_last();
+    if (kept_.ready && n_ >= 2 && (by_position || (ids_followed_ && absorb_changes(input)))) {
         const auto start = clock_type::now();
         // An exact method calls a pair colliding only if the two rectangles
         // share a point, so only if their bounds overlap (the bounds hold the
         // rectangles): its verdict on a kept pair whose bounds do not overlap
         // is false, the answer of leaving the pair out. It tests every kept
         // pair, which costs less than the filter, and needs no bounds of this
-        // call beyond the check that they fit.
+        // call beyond the check that they fit. Kept pairs of rows gone since
+        // (kept_changes.cpp) never answer: their verdicts are cleared
+        // (kept_pairs::dropped), and the filter drops them anyway.
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
         const bool fits = refresh_records(input, parts, !exact);
         stats_.bounds_seconds = seconds_since(start);
@@ -68,12 +107,17 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             ++kept_.calls;
             stats_.reused_order = true;
             stats_.reused_candidates = true;
-            stats_.kept_candidates = kept_.pairs.size();
+            stats_.kept_candidates = kept_.by_caller.size();
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
-            test_kept(parts, exact);
-            answer_from_kept(parts);
+            if (kept_.remap_pending) {
+                test_kept(parts, exact, 1);
+                answer_by_id();
+            } else {
+                test_kept(parts, exact, parts);
+                answer_from_kept(parts);
+            }
             return pairs_;
         }
         if (kept_.calls == 0) {
@@ -81,6 +125,16 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
             // a full query that keeps and a refresh for nothing. Full
             // queries keep nothing until the motion is calm again.
             kept_.pause();
+        }
+    }
+    if (kept_.by_id || rows_changed_) {
+        // The order's slots are not this call's rows: the full query sorts
+        // anew, on a grid of its own; a paused one probes the motion against
+        // the last call's bounds carried over to these rows.
+        have_order_ = false;
+        if (rows_changed_ && kept_.paused && kept_.probe_ready && kept_.last.size() == now_of_last_.size()) {
+            carry_probe_over();
+            probe_carried_ = true;
         }
     }
     // A full query that keeps its candidates. The margin follows the motion:
@@ -95,10 +149,11 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     }
     kept_.ready = false;
     kept_.calls = 0;
-    if (!same_scene_as_last()) {
+    if (!same_scene_as_last() && !ids_followed_) {
         // The first call on a scene knows no motion yet, and pairs kept from
         // bounds not widened would serve no call after a move: it answers
-        // as a plain query, and the next call keeps the pairs of widened bounds.
+        // as a plain query, and the next call keeps the pairs of widened
+        // bounds. Rows matched by id to the last call's are the same scene.
         kept_.resume();
         return answer_plainly(input);
     }
@@ -147,7 +202,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     keep_candidates(used_parts_);
     kept_filters_.take(input);
     kept_.ready = true;
-    test_kept(used_parts_, false);
+    test_kept(used_parts_, false, used_parts_);
     kept_.last_candidates = stats_.candidates;
     answer_from_kept(used_parts_);
     return pairs_;
@@ -161,9 +216,10 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
     const bool check_a = !input.a_checked;
     const bool check_b = !input.b_checked;
     std::vector<unsigned char> fits(parts, 1);
-    const bool stream = n_ * sizeof(record) > store_bytes_from_dram;
+    const std::size_t slots = slots_;
+    const bool stream = slots * sizeof(record) > store_bytes_from_dram;
     run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+        const auto [begin, end] = share_of(slots, share, parts);
         constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
         bool ok = true;
@@ -179,10 +235,19 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             record* const into = stream ? stage : records + run_begin;
             for (std::size_t k = run_begin; k < run_end; ++k) {
-                if (k + ahead < end) {
+                if (k + ahead < end && order[k + ahead] != no_row) {
                     fetch_into_l2(record_at(in, order[k + ahead]));
                 }
                 const std::uint32_t id = order[k];
+                if (id == no_row) {
+                    // The slot of a gone row (kept_changes.cpp): its pairs are
+                    // tested with the others and their verdicts dropped, so
+                    // it holds a valid box far from everything, apart from
+                    // every other gone row's (a square of half side 2^18 at
+                    // x = 2^40 + (k mod 2^20) 2^20, y = 2^40, all exact).
+                    empty_slot_record(kind_, k, into[k - run_begin].v);
+                    continue;
+                }
                 if (id < in.a_count ? check_a : check_b) {
                     ok &= valid_row(in.kind, record_at(in, id));
                 }
@@ -198,11 +263,20 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                                         static_cast<unsigned>(b.lo_y[r] >= in_lo_y_[k]) &
                                         static_cast<unsigned>(b.hi_x[r] <= in_hi_x_[k]) &
                                         static_cast<unsigned>(b.hi_y[r] <= in_hi_y_[k]);
-                ok &= inside != 0;
+                ok &= (inside | static_cast<unsigned>(order[k] == no_row)) != 0;
             }
             if (keep_bounds) {
                 for (std::size_t k = run_begin; k < run_end; ++k) {
                     kept_.now[k] = signed_bounds_of(b, k - run_begin);
+                }
+                if (kept_.empty_slots > 0) {
+                    // An empty slot's bounds meet none: its kept pairs are never taken.
+                    const float none = std::numeric_limits<float>::quiet_NaN();
+                    for (std::size_t k = run_begin; k < run_end; ++k) {
+                        if (order[k] == no_row) {
+                            kept_.now[k] = signed_bounds{{none, none, none, none}};
+                        }
+                    }
                 }
             }
         }
@@ -247,6 +321,7 @@ void pair_search::keep_candidates(std::size_t parts) {
     }
     stats_.kept_candidates = kept_.pairs.size();
     kept_.answer_parts = 0;
+    kept_.dropped.clear();
     stats_.output_seconds += seconds_since(start);
 }
 

@@ -100,6 +100,45 @@ struct kept_pairs {
     std::vector<std::uint64_t> answer_marks;
     std::size_t answer_parts = 0;  ///< 0 while answer_marks marks nothing
     std::vector<pair_sort_scratch<tagged_pair>> tag_scratch;
+
+    // Rows that came, went or changed places (pair_finder with ids; the
+    // steps are in kept_changes.cpp). The kept order's positions ("slots")
+    // then no longer are the rows of a full query: a gone row's slot stays,
+    // empty (order_ holds no_row there), and a new row gets a slot after the
+    // last. The kept candidates stay where they are; those of an empty slot
+    // are skipped (its bounds in `now` are NaN) and dropped from by_caller.
+    /// Set once a call has changed the rows since the last full query.
+    bool by_id = false;
+    std::size_t slots = 0;         ///< slots of the kept order, empty ones counted (records_, order_...)
+    std::size_t full_slots = 0;    ///< of those, the full query's (in its strips); the rest were added since
+    std::size_t empty_slots = 0;   ///< slots of rows gone since the full query
+    std::size_t rows = 0;          ///< rows of the last call (slots less the empty ones)
+    /// The widest quantized x extent (q_hi - q_lo) of any entry of each
+    /// strip, among the full query's entries and among those added since:
+    /// a search for the entries that reach x starts that far to its left.
+    std::vector<std::uint32_t> full_reach, added_reach;
+    /// The slots added since the full query, an entry for each strip each
+    /// touches (key: strip, then quantized lo_x), sorted by key.
+    std::vector<std::uint64_t> added_entries;  ///< key << 32 | slot
+    std::vector<std::uint64_t> added_spare;    ///< added_entries' next contents while they are merged
+    std::vector<std::uint32_t> added_begin;    ///< added_begin[s]: the first of added_entries in strip s
+    std::vector<std::uint32_t> near;           ///< the slots within reach of one new slot, before their test
+    /// Rows of the last call whose place in the order of rows changed
+    /// against the others (kept_changes.cpp): their pairs are sorted apart.
+    std::vector<std::uint8_t> row_moved;
+    /// Bit i % 64 of word i / 64: pairs[i] belongs to a gone row (dropped from
+    /// by_caller); the test skips it. Empty until a row has gone.
+    std::vector<std::uint64_t> dropped;
+    /// The widened bounds of each slot as (lo_x, lo_y, -hi_x, -hi_y), for the
+    /// search of new slots' candidates: one read per slot looked at.
+    scratch_vector<signed_bounds> widened;
+    std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
+    std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
+    /// Set while by_caller is in the last call's rows, to be carried to this
+    /// call's as the answer is read (pair_search::answer_by_id).
+    bool remap_pending = false;
+    bool remap_any_moved = false;
+    std::size_t remap_last_a = 0;  ///< rows of a in the last call
 };
 
 /// One thread's share of the kept candidates (a member of each part of the sweep).

@@ -34,6 +34,11 @@ void pair_search::set_query(const query_input& input) {
 void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     set_query(input);
     used_parts_ = 0;
+    // The order built below is this query's rows, slot for row.
+    kept_.by_id = false;
+    kept_.empty_slots = 0;
+    kept_.remap_pending = false;
+    slots_ = n_;
     for (part& p : parts_) {
         p.found.clear();
     }

@@ -53,10 +53,14 @@
 // timed cheaper. Its state is kept_pairs
 // (kept_pairs.hpp); its steps are in kept_pairs.cpp (the policy, collect,
 // and keeping the candidates) and kept_answer.cpp (their test and answer).
+// Rows with ids (box_view::with_ids) may come, go and change places between
+// calls: id_rows.hpp matches a call's ids with the last call's, and
+// kept_changes.cpp carries the kept candidates over to this call's rows.
 #pragma once
 
 #include "scene/filter_values.hpp"
 #include "scene/kept_filters.hpp"
+#include "scene/id_rows.hpp"
 #include "scene/kept_pairs.hpp"
 #include "scene/pair_blocks.hpp"
 #include "scene/query_input.hpp"
@@ -104,6 +108,8 @@ public:
     const executor* caller_executor() const { return options_.executor; }
 
 private:
+    /// collect() once the rows' ids (if any) are matched and taken.
+    const std::vector<pair_index>& collect_matched(const query_input& input);
     /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
     friend struct pair_search_test_access;
 
@@ -153,6 +159,8 @@ private:
     void input_bounds(const query_input& input, std::size_t begin, std::size_t end, bounds_run& out) const;
     /// Widens `count` bounds by the kept candidates' margin while a query keeps them.
     void widen(bounds_run& b, std::size_t count) const;
+    /// Widens `count` bounds, each by `margin` times its larger extent or `typical`, whichever is larger.
+    static void widen_bounds(bounds_run& b, std::size_t count, float margin, float typical);
     void measure_extent(const query_input& input, std::size_t parts, bool with_keys);
     /// While keeping is paused: checks `count` bounds of this call, from rectangle `first` in the
     /// caller's order, against the last call's widened ones (`compare`; clears `inside` if one
@@ -202,8 +210,37 @@ private:
     // Their test and the answer read from them: kept_answer.cpp.
     /// Marks, for an answer from kept candidates in `parts` shares, the share of each kept candidate.
     void mark_answer_shares(std::size_t parts);
-    void test_kept(std::size_t parts, bool unfiltered);
+    /// `shares`: the shares of the answer to count (answer_from_kept), 1 for answer_by_id.
+    void test_kept(std::size_t parts, bool unfiltered, std::size_t shares);
     void answer_from_kept(std::size_t parts);
+
+    // Rows that came, went or changed places, by id: kept_changes.cpp.
+    /// Matches this call's ids against the last call's (match_a_, match_b_);
+    /// throws invalid_input on a duplicate id before anything changes.
+    void match_ids(const query_input& input);
+    /// Takes this call's ids as the last call's.
+    void commit_ids(const query_input& input);
+    /// After a call that failed: the kept candidates and the ids are forgotten.
+    void abandon_kept();
+    /// Carries the kept candidates over to this call's rows (their slots, the
+    /// pairs of new rows, by_caller in this call's rows); false when the
+    /// change is too large to pay, and then nothing has changed.
+    bool absorb_changes(const query_input& input);
+    /// now_of_last_ from this call's match (rows_changed_).
+    void map_last_rows();
+    /// While keeping is paused: the last call's probe bounds (kept_pairs::last) moved to this call's rows.
+    void carry_probe_over();
+    /// The first change since the full query: the slots are its order; each strip's reach.
+    void start_changes();
+    /// Slots for the rows now in `fresh` (combined rows), with their records and widened bounds.
+    void add_slots(const query_input& input, const std::vector<std::uint32_t>& fresh);
+    /// Kept candidates of the slots from `first_new` on, against every slot whose widened bounds they meet.
+    void find_new_candidates(std::size_t first_new);
+    /// The kept pairs of rows that changed places against the others (kept_.row_moved; `any_moved`: there
+    /// are some), mapped to this call's rows through now_of_last_, sorted with the new ones (moved_pairs).
+    void sort_moved_pairs(std::size_t last_a_count, bool any_moved);
+    /// The answer of a call whose rows changed, read while by_caller is carried to this call's rows.
+    void answer_by_id();
 
     collide_options options_;
     find_pairs_stats stats_;
@@ -258,6 +295,17 @@ private:
 
     kept_pairs kept_;  ///< pair_finder's kept candidates and the policy that keeps them
     kept_filters kept_filters_;  ///< the pair filters kept_ was built with (kept_filters.hpp)
+
+    // The rows' ids (pair_finder with ids): the last call's, and this call's match against them.
+    id_rows ids_a_, ids_b_;
+    row_match match_a_, match_b_;
+    bool ids_self_ = true;  ///< the last call with ids was a query within one set
+    store_kind ids_kind_ = store_kind::poses;
+    bool ids_followed_ = false;  ///< this call's ids were matched against the last call's
+    bool rows_changed_ = false;  ///< and some row is not the one its position held
+    std::size_t slots_ = 0;      ///< entries of the kept order (kept_.slots while kept_.by_id, else n_)
+    std::vector<std::uint32_t> now_of_last_;  ///< the last call's rows (a before b) -> this call's (map_last_rows)
+    bool probe_carried_ = false;  ///< kept_.last was moved to this call's rows (carry_probe_over)
 };
 
 }  // namespace obbsat::detail

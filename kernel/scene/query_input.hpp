@@ -14,6 +14,7 @@
 #include <obbsat/ref/bounds.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 namespace obbsat::detail {
@@ -38,6 +39,12 @@ struct query_input {
     /// True iff some set of the query carries pair filters: the query then
     /// takes the filtered path, chosen once (pair_search::filtered_).
     bool filtered() const { return a_filters.any() || (b != nullptr && b_filters.any()); }
+
+    /// The caller's ids of the rows (box_view::with_ids), one per row of a
+    /// and of b; with_ids false when the rows carry none.
+    bool with_ids = false;
+    const std::uint64_t* a_ids = nullptr;
+    const std::uint64_t* b_ids = nullptr;
 };
 
 /// Row `id` of the query: of the first set below a_count, else of the second.

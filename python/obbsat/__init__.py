@@ -584,6 +584,24 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
                  against_groups=against_groups)
 
 
+def _ids(ids, what):
+    """``ids`` as a C-contiguous uint64 vector (None stays None): any integer
+    array whose values fit uint64 without loss."""
+    if ids is None:
+        return None
+    array = _np.asarray(ids)
+    if array.size == 0 and array.dtype.kind == "f":
+        array = array.astype(_np.uint64)  # [] is float64 to numpy
+    if array.dtype.kind not in "iu":
+        raise TypeError(f"{what}: expected an integer array, got dtype {array.dtype}")
+    if array.ndim != 1:
+        raise ValueError(f"{what}: expected shape (N,), got {array.shape}")
+    if array.dtype.kind == "i" and array.size and array.min() < 0:
+        row = int(_np.argmax(array < 0))
+        raise ValueError(f"{what}: row {row} holds the negative id {int(array[row])}; ids are unsigned 64-bit")
+    return _np.ascontiguousarray(array, dtype=_np.uint64)
+
+
 class PairFinder:
     """A scene query that persists between calls (``obbsat::pair_finder``),
     for simulations: it keeps the order of the rectangles, its buffers and the
@@ -610,7 +628,12 @@ class PairFinder:
     begun and none ended, and so does a call of the other kind (one set, two
     sets) than the last, which also ends every pair of the last; a call that
     raises changes no events; before the first call both are empty. With
-    events off they raise ``RuntimeError``. The default method is ``"exact"``, as in
+    events off they raise ``RuntimeError``. When the last call gave
+    ``ids=`` the events are id pairs instead: uint64 (K, 2), the smaller id
+    first within one set (the id in ``boxes`` first across two), sorted; a
+    removed box ends all its pairs, a new box's pairs begin, a box that
+    changed rows keeps its pairs. A call with ids after one without (or the
+    other way round) reports every pair as begun and none ended. The default method is ``"exact"``, as in
     :func:`find_pairs` (``method=None`` too; ``backend=None`` is ``"auto"``). One call runs at a time (another thread calling meanwhile waits, with
     the GIL released).
 
@@ -635,6 +658,12 @@ class PairFinder:
     array([[0, 1]], dtype=uint32)
     >>> len(finder.began())
     0
+    >>> finder = obbsat.PairFinder(events=True)
+    >>> _ = finder.find(poses, ids=[10, 11, 12])
+    >>> finder.find(poses[1:], ids=[11, 12])        # box 10 is gone; the others moved up a row
+    array([[0, 1]], dtype=uint32)
+    >>> finder.ended(), len(finder.began())
+    (array([], shape=(0, 2), dtype=uint64), 0)
     """
 
     def __init__(self, method="exact", backend="auto", threads=1, *, events=False):
@@ -652,16 +681,31 @@ class PairFinder:
         events = ", events=True" if self._events else ""
         return f"PairFinder(method={self._method!r}, backend={self._backend!r}, threads={self._threads}{events})"
 
-    def find(self, boxes, against=None, *, categories=None, masks=None, groups=None, against_categories=None,
-             against_masks=None, against_groups=None):
+    def find(self, boxes, against=None, *, ids=None, against_ids=None, categories=None, masks=None, groups=None,
+             against_categories=None, against_masks=None, against_groups=None):
         """The pairs of ``find_pairs(boxes, against, ...)`` with the finder's
         settings and the same pair filters: uint32 (K, 2), sorted, a new
         array. Filters that differ from the last call's in any value make
         the call a full query (the kept candidates hold only the pairs the
-        filters they were kept with let through)."""
+        filters they were kept with let through; with ids, rows that came,
+        went or changed places since the last full query too).
+
+        ``ids`` (and ``against_ids`` with ``against``; both or neither) give
+        each row a stable id: any integer array of shape (N,) whose values
+        fit uint64 (a negative value is a ValueError, a non-integer dtype a
+        TypeError). The finder then follows each box by its id from call to
+        call, so rows may be appended, removed, swap-removed or reordered
+        between calls and still be answered from the kept candidates; the
+        pairs are still row indices of this call. Without ids rows are
+        matched by position. Two rows with one id raise ValueError naming
+        both rows and the id, and change nothing."""
         form, boxes, against = _scene(boxes, against)
+        if against is None and against_ids is not None:
+            raise ValueError("against_ids given without against")
+        ids = _ids(ids, "ids")
+        against_ids = _ids(against_ids, "against_ids")
         find = self._query.find_poses if form == "poses" else self._query.find_corners
-        pairs = find(boxes, against, categories=categories, masks=masks, groups=groups,
+        pairs = find(boxes, against, ids, against_ids, categories=categories, masks=masks, groups=groups,
                      against_categories=against_categories, against_masks=against_masks,
                      against_groups=against_groups)
         self._ran = True

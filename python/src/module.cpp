@@ -665,6 +665,49 @@ py::array_t<std::uint32_t> find_pairs_of(const py::object& boxes, const py::obje
     }));
 }
 
+/// The ids of one side of a PairFinder query (the package converted them to
+/// uint64 and checked their sign): a C-contiguous uint64 vector of one id per
+/// row, read in place; None for no ids.
+struct side_ids {
+    const std::uint64_t* ids = nullptr;
+    std::size_t count = 0;
+    bool given = false;
+};
+
+side_ids ids_of(const py::object& ids, std::size_t rows, const char* what) {
+    side_ids out;
+    if (ids.is_none()) {
+        return out;
+    }
+    const py::array a = py::reinterpret_borrow<py::array>(ids);
+    if (!py::isinstance<py::array>(ids) || a.ndim() != 1 || !holds<std::uint64_t>(a) || !is_c_contiguous(a)) {
+        throw py::type_error(std::string(what) + ": expected a C-contiguous uint64 array of shape (N,)");
+    }
+    if (static_cast<std::size_t>(a.shape(0)) != rows) {
+        throw py::value_error(std::string(what) + ": " + std::to_string(a.shape(0)) + " ids for " +
+                              std::to_string(rows) + " rows; give one id per row");
+    }
+    out.ids = static_cast<const std::uint64_t*>(a.data());
+    out.count = rows;
+    out.given = true;
+    return out;
+}
+
+/// `view` with `ids` when they were given.
+obbsat::box_view with_ids_of(const obbsat::box_view& view, const side_ids& ids) {
+    return ids.given ? view.with_ids(ids.ids, ids.count) : view;
+}
+
+/// Id pairs as a uint64 (K, 2) array (a copy).
+py::array_t<std::uint64_t> id_pair_array(const std::vector<obbsat::id_pair>& pairs) {
+    static_assert(sizeof(obbsat::id_pair) == 2 * sizeof(std::uint64_t), "an id pair is two uint64");
+    py::array_t<std::uint64_t> out({static_cast<py::ssize_t>(pairs.size()), py::ssize_t{2}});
+    if (!pairs.empty()) {
+        std::memcpy(out.mutable_data(), pairs.data(), pairs.size() * sizeof(obbsat::id_pair));
+    }
+    return out;
+}
+
 /// A pair_finder shared with Python: one query at a time (a second thread
 /// waits, without the GIL), each answer copied out of the finder's buffer,
 /// which the next query reuses.
@@ -673,8 +716,9 @@ public:
     explicit scene_finder(const obbsat::collide_options& options) : options_(options), finder_(options) {}
 
     template <class Store>
-    py::array_t<std::uint32_t> find(const py::object& boxes, const py::object& against,
-                                    const py::object& categories, const py::object& masks, const py::object& groups,
+    py::array_t<std::uint32_t> find(const py::object& boxes, const py::object& against, const py::object& ids,
+                                    const py::object& against_ids, const py::object& categories,
+                                    const py::object& masks, const py::object& groups,
                                     const py::object& against_categories, const py::object& against_masks,
                                     const py::object& against_groups) {
         const bool cross = !against.is_none();
@@ -685,13 +729,22 @@ public:
             cross ? &b : nullptr);
         const obbsat::pair_filters fa = filters.first.view();
         const obbsat::pair_filters fb = filters.second.view();
+        const side_ids a_ids = ids_of(ids, view_of(a).size(), "ids");
+        const side_ids b_ids = cross ? ids_of(against_ids, view_of(b).size(), "against_ids") : side_ids{};
+        if (cross && a_ids.given != b_ids.given) {
+            throw py::value_error(std::string(a_ids.given ? "ids" : "against_ids") + " given without " +
+                                  (a_ids.given ? "against_ids" : "ids") +
+                                  ": a query across two sets takes ids for both or for neither");
+        }
         return pair_array(without_gil([&] {
             const std::lock_guard<std::mutex> lock(mutex_);
             require_runs_on(options_, store_traits<Store>::kind);
             const obbsat::box_view va = view_of(a).with_filters(fa);
             return with_side_names([&] {
                 const std::vector<obbsat::pair_index>& found =
-                    cross ? finder_.find(va, view_of(b).with_filters(fb)) : finder_.find(va);
+                    cross ? finder_.find(with_ids_of(va, a_ids), with_ids_of(view_of(b).with_filters(fb), b_ids))
+                          : finder_.find(with_ids_of(va, a_ids));
+                last_with_ids_ = a_ids.given;
                 return std::vector<obbsat::pair_index>(found);
             });
         }));
@@ -710,18 +763,33 @@ public:
         finder_.track_events(on);
     }
 
-    /// A copy of the pairs that began (or ended) at the last query.
-    py::array_t<std::uint32_t> events(bool began) {
-        return pair_array(without_gil([&] {
+    /// A copy of the pairs that began (or ended) at the last query: row
+    /// pairs, uint32 (K, 2); id pairs, uint64 (K, 2), when its rows had ids.
+    py::object events(bool began) {
+        bool by_id = false;
+        std::vector<obbsat::pair_index> rows;
+        std::vector<obbsat::id_pair> ids;
+        without_gil([&] {
             const std::lock_guard<std::mutex> lock(mutex_);
-            return std::vector<obbsat::pair_index>(began ? finder_.began() : finder_.ended());
-        }));
+            by_id = last_with_ids_;
+            if (by_id) {
+                ids = began ? finder_.began_ids() : finder_.ended_ids();
+            } else {
+                rows = began ? finder_.began() : finder_.ended();
+            }
+            return 0;
+        });
+        if (by_id) {
+            return id_pair_array(ids);
+        }
+        return pair_array(std::move(rows));
     }
 
 private:
     obbsat::collide_options options_;
     std::mutex mutex_;
     obbsat::pair_finder finder_;
+    bool last_with_ids_ = false;  ///< the last query that answered had ids
 };
 
 std::unique_ptr<scene_finder> make_scene_finder(const std::string& method, const std::string& backend,
@@ -1006,24 +1074,28 @@ PYBIND11_MODULE(_core, m) {
                              "obbsat::pair_finder: a scene query that keeps its order and buffers between calls.")
         .def(py::init(&make_scene_finder), py::arg("method"), py::arg("backend"), py::arg("threads"))
         .def("find_corners", &scene_finder::find<obbsat::rect_records>, py::arg("boxes"), py::arg("against"),
+             py::arg("ids"), py::arg("against_ids"),
              py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
              py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
              py::arg("against_groups") = py::none(),
-             "find_pairs_corners through the finder; the pairs are a copy of its buffer.")
+             "find_pairs_corners through the finder, rows matched by id when ids (uint64 (N,)) are given; the "
+             "pairs are a copy of its buffer.")
         .def("find_poses", &scene_finder::find<obbsat::pose_records>, py::arg("boxes"), py::arg("against"),
+             py::arg("ids"), py::arg("against_ids"),
              py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
              py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
              py::arg("against_groups") = py::none(),
-             "find_pairs_poses through the finder; the pairs are a copy of its buffer.")
+             "find_pairs_poses through the finder, rows matched by id when ids (uint64 (N,)) are given; the "
+             "pairs are a copy of its buffer.")
         .def_property_readonly("stats", &scene_finder::stats, "What the last query did.")
         .def("track_events", &scene_finder::track_events, py::arg("on"),
              "Turns the begin/end events on (the next query begins every pair) or off.")
         .def("began", [](scene_finder& f) { return f.events(true); },
-             "The pairs that began colliding at the last query: uint32 (K, 2) sorted, a copy (ValueError when "
-             "events are off).")
+             "The pairs that began colliding at the last query: uint32 (K, 2) sorted, a copy; uint64 id pairs "
+             "when its rows had ids (ValueError when events are off).")
         .def("ended", [](scene_finder& f) { return f.events(false); },
-             "The pairs that ended colliding at the last query: uint32 (K, 2) sorted, a copy (ValueError when "
-             "events are off).");
+             "The pairs that ended colliding at the last query: uint32 (K, 2) sorted, a copy; uint64 id pairs "
+             "when its rows had ids (ValueError when events are off).");
     m.def("corner_bounds", &bounds_of<obbsat::rect_records>, py::arg("boxes"),
           "The bounds lo_x, lo_y, hi_x, hi_y of corner boxes (float32 (N, 8) or (N, 4, 2), or a RectRecords) "
           "as obbsat/ref/bounds.hpp computes them: float32 (N, 4).");

@@ -50,6 +50,7 @@
 #include <obbsat/rect_records.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -66,10 +67,10 @@ struct find_pairs_stats {
     std::size_t slow_path_pairs = 0;  ///< candidates decided on the exact slow path (method exact)
     bool reused_order = false;   ///< the previous query's order was repaired, not rebuilt
     bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
-    std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls
+    std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls (of rows still there, with ids)
     bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
-    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits
+    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits; pair_finder with ids: carrying the kept candidates over rows that came, went or moved
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
     double kernel_seconds = 0;   ///< the method's kernels alone, summed over the threads (part of the sweep)
     double output_seconds = 0;   ///< mapping back to the caller's indices and sorting
@@ -114,6 +115,19 @@ public:
     }
     /// The pair filters of the rectangles; none given by default.
     const pair_filters& filters() const { return filters_; }
+    /// The same rows, each with a stable id (ids[r] names row r): a
+    /// pair_finder matches rows to the last call's by id (pair_finder below),
+    /// so rows may come, go and change places between calls. `count` must be
+    /// size() (invalid_input otherwise; `ids` may be nullptr when it is 0);
+    /// the ids are read in place, so they must outlive the query. find_pairs
+    /// and find_pairs_each ignore them.
+    box_view with_ids(const std::uint64_t* ids, std::size_t count) const;
+    /// The same rows with the ids of a vector (read in place).
+    box_view with_ids(const std::vector<std::uint64_t>& ids) const;
+    /// Whether the rows carry ids (with_ids).
+    bool has_ids() const { return has_ids_; }
+    /// The ids of the rows, one per row; nullptr when they carry none (or are none).
+    const std::uint64_t* ids() const { return ids_; }
 
 private:
     const float* floats_ = nullptr;
@@ -122,7 +136,19 @@ private:
     store_kind kind_ = store_kind::poses;
     bool checked_ = false;
     pair_filters filters_;  ///< nullptr arrays: the defaults
+    const std::uint64_t* ids_ = nullptr;  ///< with_ids: one per row, the caller's
+    bool has_ids_ = false;
 };
+
+/// A pair of ids (box_view::with_ids): a pair_finder's begin/end events when
+/// its rows carry ids.
+struct id_pair {
+    std::uint64_t a;
+    std::uint64_t b;
+};
+
+inline bool operator==(const id_pair& x, const id_pair& y) { return x.a == y.a && x.b == y.b; }
+inline bool operator!=(const id_pair& x, const id_pair& y) { return !(x == y); }
 
 /// Every pair (i, j), i < j, of `boxes` that collides under options.test,
 /// sorted by i then j. Throws invalid_input for a method that does not run on
@@ -185,6 +211,28 @@ class pair_events;
 /// call with filters compares them with a copy of the kept ones (up to 20
 /// bytes per rectangle, read in order). The answer is still always that of
 /// find_pairs with the same filters.
+/// Rows with ids (box_view::with_ids): the kept candidates follow each box by
+/// its id, so rows may be appended, removed (erased or swap-removed),
+/// inserted and reordered between calls; the pairs are still row indices of
+/// this call, sorted by (i, j). A call whose rows differ from the last one's
+/// carries the kept candidates over at a cost of the change plus a few
+/// linear passes: a gone row's candidates are dropped, a new row's are
+/// looked up in the kept strips (its widened bounds against every kept
+/// box's and the other new ones'), and the sorted kept pairs are mapped to
+/// this call's rows, those of rows that changed places against the others
+/// sorted apart and merged in. A change of more than an eighth of the rows,
+/// or gone and added rows since the last full query passing a quarter of
+/// them, makes the call a full query (which keeps again: the scene is the
+/// same by id). Two rows with one id throw invalid_input naming both rows and
+/// the id, before anything changes. Without ids rows are matched by position
+/// as above; a call with ids after calls without matches by position once.
+/// A query across two sets takes ids for both sets or for neither (its ids
+/// are per set: the same id in a and in b names two boxes). Memory with ids,
+/// per rectangle: 8 bytes for the last ids and 18 to 36 for a set of them,
+/// 8 for the last rows' places, 1 for the check of their order, and, once a
+/// row came or went since the last full query, 16 for the widened bounds and
+/// 1 bit per kept pair (those of gone rows); empty and added slots keep their
+/// per-rectangle memory until the next full query.
 ///
 /// Moving a pair_finder moves its buffers: the moved-from one holds nothing,
 /// and its find, stats, track_events, began and ended throw invalid_input
@@ -196,12 +244,21 @@ class pair_events;
 /// ended colliding since the last call, each sorted by (i, j) as find's pairs
 /// are (i < j within one set; i in a, j in b across two). Rows are matched by
 /// position, whatever the counts: a pair of a row that no longer exists ends,
-/// a pair of a new row begins. The first call after events were turned on
+/// a pair of a new row begins. When the last call's rows had ids, the events
+/// are id pairs instead (began_ids, ended_ids; began and ended then throw
+/// invalid_input): the smaller id first within one set, the id in a first
+/// across two, sorted by (id, id); a gone box's pairs end, a new box's begin,
+/// a box that changed rows keeps its pairs. A call with ids after one without,
+/// or the other way round, reports every pair as begun and none ended. The first call after events were turned on
 /// reports every pair as begun and none ended; so does a call of the other
 /// kind (within one set, across two) than the last, which also ends every pair
 /// of the last. A call that throws changes no events. Cost: one linear merge
 /// of the last answer and this one, 16 bytes per pair kept for it, no
-/// allocation once warm.
+/// allocation once warm. With ids, the answer is first read as id pairs: a
+/// pass over the rows and one over the pairs, the pairs of rows whose ids do
+/// not increase with the row sorted apart (few when ids are counted up as
+/// boxes are made and rows are appended, erased or swap-removed; all of them
+/// when ids are in random order), 32 bytes per pair kept for it.
 class pair_finder {
 public:
     explicit pair_finder(const collide_options& options);
@@ -227,6 +284,10 @@ public:
     const std::vector<pair_index>& began() const;
     /// The pairs of the call before the last that are not in the last, sorted; empty before the first call; invalid_input when events are off.
     const std::vector<pair_index>& ended() const;
+    /// began() when the last call's rows carried ids: id pairs, sorted by (id, id); invalid_input when events are off or the last call had no ids.
+    const std::vector<id_pair>& began_ids() const;
+    /// ended() when the last call's rows carried ids: id pairs, sorted by (id, id); invalid_input when events are off or the last call had no ids.
+    const std::vector<id_pair>& ended_ids() const;
 
 private:
     std::unique_ptr<detail::pair_search> search_;

@@ -1,0 +1,241 @@
+// The rows of a pair_finder's last call by id (id_rows.hpp).
+#include "scene/id_rows.hpp"
+
+#include <obbsat/error.hpp>
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+namespace obbsat::detail {
+
+namespace {
+
+/// How far the side-by-side walk looks ahead for a removed or inserted row.
+constexpr std::size_t look_ahead = 8;
+
+/// The place of `id` in a set of mask + 1 places: the high bits of a
+/// multiplicative hash, so that ids counted up from 0 spread out.
+std::size_t home_of(std::uint64_t id, std::size_t mask) {
+    return static_cast<std::size_t>((id * 0x9e3779b97f4a7c15ull) >> 32) & mask;
+}
+
+[[noreturn]] void refuse_duplicate(const char* label, std::size_t first, std::size_t second, std::uint64_t id) {
+    throw invalid_input(std::string(label) + "ids: rows " + std::to_string(std::min(first, second)) + " and " +
+                        std::to_string(std::max(first, second)) + " share the id " + std::to_string(id) +
+                        "; the ids of one call must be unique");
+}
+
+/// The row other than `row` of `ids` that holds `id` (there is one: a duplicate was found).
+std::size_t other_row_with(const std::uint64_t* ids, std::size_t count, std::size_t row, std::uint64_t id) {
+    for (std::size_t r = 0; r < count; ++r) {
+        if (r != row && ids[r] == id) {
+            return r;
+        }
+    }
+    return row;
+}
+
+}  // namespace
+
+std::size_t id_rows::find_place(std::uint64_t id) const {
+    std::size_t at = home_of(id, mask_);
+    while (used_places_[at] != 0 && keys_[at] != id) {
+        at = (at + 1) & mask_;
+    }
+    return at;
+}
+
+bool id_rows::contains(std::uint64_t id) const {
+    return !keys_.empty() && used_places_[find_place(id)] != 0;
+}
+
+void id_rows::grow_for(std::size_t count) {
+    if (!keys_.empty() && 2 * count <= keys_.size()) {
+        return;
+    }
+    std::size_t places = 16;
+    while (places < 2 * count) {
+        places *= 2;
+    }
+    std::vector<std::uint64_t> keys(places);
+    std::vector<std::uint8_t> used(places, 0);
+    keys.swap(keys_);
+    used.swap(used_places_);
+    mask_ = places - 1;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        if (used[i] != 0) {
+            const std::size_t at = find_place(keys[i]);
+            keys_[at] = keys[i];
+            used_places_[at] = 1;
+        }
+    }
+}
+
+void id_rows::insert(std::uint64_t id) {
+    const std::size_t at = find_place(id);
+    used_ += used_places_[at] == 0 ? std::size_t{1} : std::size_t{0};
+    keys_[at] = id;
+    used_places_[at] = 1;
+}
+
+void id_rows::erase(std::uint64_t id) {
+    std::size_t hole = find_place(id);
+    if (used_places_[hole] == 0) {
+        return;
+    }
+    --used_;
+    used_places_[hole] = 0;
+    // Backward shift: an entry after the hole whose home is not cyclically
+    // between the hole and itself would no longer be found past the hole, so
+    // it moves into it, and its place becomes the hole.
+    std::size_t at = (hole + 1) & mask_;
+    while (used_places_[at] != 0) {
+        const std::size_t home = home_of(keys_[at], mask_);
+        const bool stays = ((at - home) & mask_) < ((at - hole) & mask_);
+        if (!stays) {
+            keys_[hole] = keys_[at];
+            used_places_[hole] = 1;
+            used_places_[at] = 0;
+            hole = at;
+        }
+        at = (at + 1) & mask_;
+    }
+}
+
+void id_rows::match(const std::uint64_t* ids, std::size_t count, bool follow, const char* label,
+                    row_match& out) const {
+    const std::size_t last_count = ready_ && follow ? ids_.size() : 0;
+    const std::uint64_t* const last = ids_.data();
+    out.last_count = last_count;
+    out.count = count;
+    out.now_of_last.resize(last_count);
+    out.fresh.clear();
+    out.gone.clear();
+    // Side by side: equal ids are one row; a difference is a removed row when
+    // this call's id comes a few rows later in the last call's, an inserted
+    // one when the last call's id comes a few rows later in this call's, and
+    // otherwise both rows are left over.
+    std::vector<std::uint32_t> left_now, left_last;
+    std::size_t r = 0;
+    std::size_t l = 0;
+    while (r < count && l < last_count) {
+        if (ids[r] == last[l]) {
+            out.now_of_last[l] = static_cast<std::uint32_t>(r);
+            ++r;
+            ++l;
+            continue;
+        }
+        std::size_t skip_last = 0;
+        for (std::size_t d = 1; d <= look_ahead && l + d < last_count; ++d) {
+            if (last[l + d] == ids[r]) {
+                skip_last = d;
+                break;
+            }
+        }
+        if (skip_last != 0) {
+            for (std::size_t d = 0; d < skip_last; ++d) {
+                out.now_of_last[l + d] = no_row;
+                left_last.push_back(static_cast<std::uint32_t>(l + d));
+            }
+            l += skip_last;
+            continue;
+        }
+        std::size_t skip_now = 0;
+        for (std::size_t d = 1; d <= look_ahead && r + d < count; ++d) {
+            if (ids[r + d] == last[l]) {
+                skip_now = d;
+                break;
+            }
+        }
+        if (skip_now != 0) {
+            for (std::size_t d = 0; d < skip_now; ++d) {
+                left_now.push_back(static_cast<std::uint32_t>(r + d));
+            }
+            r += skip_now;
+            continue;
+        }
+        out.now_of_last[l] = no_row;
+        left_now.push_back(static_cast<std::uint32_t>(r));
+        left_last.push_back(static_cast<std::uint32_t>(l));
+        ++r;
+        ++l;
+    }
+    for (; r < count; ++r) {
+        left_now.push_back(static_cast<std::uint32_t>(r));
+    }
+    for (; l < last_count; ++l) {
+        out.now_of_last[l] = no_row;
+        left_last.push_back(static_cast<std::uint32_t>(l));
+    }
+    out.same_rows = left_now.empty() && left_last.empty() && count == last_count;
+    // The left-over rows: a row now whose id a left-over last row had is
+    // that row, moved; one whose id the last call had elsewhere shares it
+    // with the row now matched there (the last ids are unique); any other is
+    // fresh, and two fresh rows with one id are found by the sort.
+    std::unordered_map<std::uint64_t, std::uint32_t> left_ids;
+    left_ids.reserve(left_last.size());
+    for (const std::uint32_t row : left_last) {
+        left_ids.emplace(last[row], row);
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> fresh;
+    for (const std::uint32_t row : left_now) {
+        const std::uint64_t id = ids[row];
+        const auto found = left_ids.find(id);
+        if (found != left_ids.end()) {
+            std::uint32_t& now = out.now_of_last[found->second];
+            if (now != no_row) {
+                refuse_duplicate(label, now, row, id);
+            }
+            now = row;
+        } else if (last_count != 0 && contains(id)) {
+            refuse_duplicate(label, other_row_with(ids, count, row, id), row, id);
+        } else {
+            fresh.emplace_back(id, row);
+        }
+    }
+    std::sort(fresh.begin(), fresh.end());
+    for (std::size_t i = 1; i < fresh.size(); ++i) {
+        if (fresh[i].first == fresh[i - 1].first) {
+            refuse_duplicate(label, fresh[i - 1].second, fresh[i].second, fresh[i].first);
+        }
+    }
+    for (const auto& f : fresh) {
+        out.fresh.push_back(f.second);
+    }
+    std::sort(out.fresh.begin(), out.fresh.end());
+    for (const std::uint32_t row : left_last) {
+        if (out.now_of_last[row] == no_row) {
+            out.gone.push_back(row);
+        }
+    }
+}
+
+void id_rows::commit(const std::uint64_t* ids, const row_match& m) {
+    if (m.last_count == 0) {
+        std::fill(used_places_.begin(), used_places_.end(), std::uint8_t{0});
+        used_ = 0;
+    } else {
+        for (const std::uint32_t r : m.gone) {
+            erase(ids_[r]);
+        }
+    }
+    grow_for(used_ + m.fresh.size());
+    for (const std::uint32_t r : m.fresh) {
+        insert(ids[r]);
+    }
+    if (m.last_count == 0 || !m.same_rows) {
+        ids_.assign(ids, ids + m.count);
+    }
+    ready_ = true;
+}
+
+void id_rows::clear() {
+    ready_ = false;
+    ids_.clear();
+    std::fill(used_places_.begin(), used_places_.end(), std::uint8_t{0});
+    used_ = 0;
+}
+
+}  // namespace obbsat::detail

@@ -1,0 +1,529 @@
+// pair_finder's kept candidates when rows come, go and change places
+// between calls (box_view::with_ids; the state is kept_pairs' "by id" part).
+//
+// A call whose ids differ from the last call's carries the kept candidates
+// over instead of running a full query, at a cost of the change plus a few
+// linear passes (no sort of all rows, no sweep):
+//   1. Match: each row's id against the last call's (id_rows): same
+//      position, moved, new, or gone.
+//   2. Slots: each slot's row is mapped to this call's (one pass over the
+//      slots); a gone row's slot is emptied (order_ holds no_row there): its
+//      kept pairs stay in place, are tested with the others on a record far
+//      from everything (kept_pairs.cpp) and their verdicts cleared
+//      (kept_pairs::dropped), or, for a float method, never pass the bounds
+//      filter (NaN bounds). A new row gets a slot after the last, with its
+//      record, its widened bounds and its strips on the full query's grid.
+//   3. The new slots' candidates: each new slot is looked up in the strips
+//      it touches, among the full query's entries (each strip's own entries
+//      and visitors, sorted by quantized lo_x; see pair_search.hpp) and among
+//      the slots added since (added_entries, kept sorted by merging each
+//      call's few in), each search started where the key would lie in the
+//      strip (seek). A pair is taken in the strip holding the larger of the
+//      two lowest strips, as the sweep takes it, so it is found once; a pair
+//      of two new slots is taken from the earlier slot. The widened bounds
+//      decide, exactly as in the sweep.
+//   4. by_caller, the kept candidates sorted in the caller's rows, is
+//      carried to this call's rows: the pairs of rows that changed places
+//      against the others (out_of_order.hpp: none when rows are appended or
+//      erased, a few when one is swapped into a hole) are mapped and sorted
+//      apart with the new slots' pairs, and the kept pairs are tested; then
+//      one pass over by_caller maps each pair to this call's rows (their
+//      order is kept), merges the sorted ones in, drops those of gone rows,
+//      and reads the answer on the way (answer_by_id).
+// A change of more than an eighth of the rows, or empty and added slots
+// passing a quarter of the slots, makes the call a full query instead, which
+// lays the slots out anew (and keeps again: the scene is the same by id).
+#include "scene/pair_search.hpp"
+
+#include "dispatch/backend_registry.hpp"
+#include "scene/out_of_order.hpp"
+#include "scene/search_common.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace obbsat::detail {
+
+namespace {
+
+/// std::lower_bound over one strip's sorted keys, started where `key` would
+/// lie if the keys were spread evenly between the first and the last (they
+/// are quantized x positions), then galloping to the answer: a probe or two
+/// where a binary search takes a dozen dependent reads.
+template <class Key>
+const Key* seek(const Key* begin, const Key* end, Key key) {
+    if (begin == end || key <= *begin) {
+        return begin;
+    }
+    const Key first = *begin;
+    const Key last = *(end - 1);
+    if (key > last) {
+        return end;
+    }
+    // first < key <= last: the answer lies in (begin, end - 1].
+    const auto count = static_cast<std::size_t>(end - begin);
+    const double share = static_cast<double>(key - first) / static_cast<double>(last - first);
+    std::size_t at = std::min(count - 1, static_cast<std::size_t>(share * static_cast<double>(count - 1)));
+    if (begin[at] < key) {
+        // Forward: the answer is past `at`.
+        std::size_t step = 1;
+        std::size_t low = at;  // begin[low] < key
+        while (low + step < count && begin[low + step] < key) {
+            low += step;
+            step *= 2;
+        }
+        return std::lower_bound(begin + low + 1, begin + std::min(count, low + step + 1), key);
+    }
+    // Backward: begin[at] >= key, the answer is at or before `at`.
+    std::size_t step = 1;
+    std::size_t high = at;  // begin[high] >= key
+    while (high >= step && begin[high - step] >= key) {
+        high -= step;
+        step *= 2;
+    }
+    return std::lower_bound(begin + (high >= step ? high - step : 0), begin + high, key);
+}
+
+std::uint64_t order_key(const tagged_pair& p) { return (std::uint64_t{p.a} << 32) | p.b; }
+
+}  // namespace
+
+void pair_search::match_ids(const query_input& input) {
+    ids_followed_ = false;
+    rows_changed_ = false;
+    if (!input.with_ids) {
+        return;
+    }
+    const bool self = input.b == nullptr;
+    const bool follow = ids_a_.ready() && (self || ids_b_.ready()) && ids_self_ == self && ids_kind_ == input.kind;
+    ids_a_.match(input.a_ids, input.a_count, follow, self ? "" : "a: ", match_a_);
+    if (!self) {
+        ids_b_.match(input.b_ids, input.b_count, follow, "b: ", match_b_);
+    }
+    ids_followed_ = follow;
+    rows_changed_ = follow && !(match_a_.unchanged() && (self || match_b_.unchanged()));
+}
+
+void pair_search::commit_ids(const query_input& input) {
+    if (!input.with_ids) {
+        ids_a_.clear();
+        ids_b_.clear();
+        return;
+    }
+    ids_a_.commit(input.a_ids, match_a_);
+    if (self_) {
+        ids_b_.clear();
+    } else {
+        ids_b_.commit(input.b_ids, match_b_);
+    }
+    ids_self_ = self_;
+    ids_kind_ = kind_;
+}
+
+void pair_search::abandon_kept() {
+    kept_.ready = false;
+    kept_.keep = false;
+    if (kept_.by_id) {
+        have_order_ = false;  // the order's slots are no query's rows
+    }
+    ids_a_.clear();
+    ids_b_.clear();
+}
+
+void pair_search::map_last_rows() {
+    const row_match& ma = match_a_;
+    const std::size_t last_a = ma.last_count;
+    now_of_last_.resize(last_a + (self_ ? 0 : match_b_.last_count));
+    std::copy(ma.now_of_last.begin(), ma.now_of_last.end(), now_of_last_.begin());
+    if (!self_) {
+        const auto offset = static_cast<std::uint32_t>(a_count_);
+        for (std::size_t r = 0; r < match_b_.last_count; ++r) {
+            const std::uint32_t now = match_b_.now_of_last[r];
+            now_of_last_[last_a + r] = now == no_row ? no_row : now + offset;
+        }
+    }
+}
+
+void pair_search::carry_probe_over() {
+    // The last call's widened bounds, moved to this call's rows; a new row's
+    // bounds hold everything, so that it counts as calm.
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<signed_bounds> moved(n_, signed_bounds{{-inf, -inf, -inf, -inf}});
+    for (std::size_t r = 0; r < now_of_last_.size(); ++r) {
+        if (now_of_last_[r] != no_row) {
+            moved[now_of_last_[r]] = kept_.last[r];
+        }
+    }
+    kept_.last.resize(n_);
+    std::copy(moved.begin(), moved.end(), kept_.last.begin());
+}
+
+void pair_search::start_changes() {
+    // The slots are the full query's order: slot k holds row order_[k].
+    kept_.by_id = true;
+    kept_.slots = slots_;
+    kept_.full_slots = slots_;
+    kept_.empty_slots = 0;
+    kept_.rows = slots_;
+    // Each strip's widest entry, own entries and visitors alike.
+    const unsigned q_bits = grid_.q_bits;
+    kept_.full_reach.assign(grid_.strips, 0);
+    for (std::size_t k = 0; k < slots_; ++k) {
+        std::uint32_t& reach = kept_.full_reach[keys_[k] >> q_bits];
+        reach = std::max(reach, q_hi_[k] - std::min(q_lo_[k], q_hi_[k]));
+    }
+    const std::size_t visits = visit_keys_.size() - 1;
+    for (std::size_t v = 0; v < visits; ++v) {
+        const std::uint32_t k = visit_ids_[v];
+        std::uint32_t& reach = kept_.full_reach[visit_keys_[v] >> q_bits];
+        reach = std::max(reach, q_hi_[k] - std::min(q_lo_[k], q_hi_[k]));
+    }
+    kept_.added_reach.assign(grid_.strips, 0);
+    kept_.added_entries.clear();
+    kept_.added_begin.assign(grid_.strips + 1, 0);
+    kept_.widened.resize(slots_);
+    for (std::size_t k = 0; k < slots_; ++k) {
+        kept_.widened[k] = signed_bounds{{in_lo_x_[k], in_lo_y_[k], -in_hi_x_[k], -in_hi_y_[k]}};
+    }
+    kept_.dropped.assign((kept_.pairs.size() + 63) / 64, 0);
+}
+
+bool pair_search::absorb_changes(const query_input& input) {
+    const row_match& ma = match_a_;
+    const std::size_t last_a = ma.last_count;
+    const std::size_t last_n = last_a + (self_ ? 0 : match_b_.last_count);
+    if (last_n != (kept_.by_id ? kept_.rows : slots_)) {
+        return false;  // not the layout of the last call's rows
+    }
+    if (!rows_changed_) {
+        return true;  // the rows are the last call's, in their places
+    }
+    std::vector<std::uint32_t> fresh(ma.fresh.begin(), ma.fresh.end());
+    std::size_t gone_count = ma.gone.size();
+    if (!self_) {
+        for (const std::uint32_t r : match_b_.fresh) {
+            fresh.push_back(r + static_cast<std::uint32_t>(a_count_));
+        }
+        gone_count += match_b_.gone.size();
+    }
+    // The policy: a change of more than an eighth of the rows, or empty and
+    // added slots passing a quarter of the slots, is a full query's job.
+    const std::size_t moved_rows =
+        mark_out_of_order(now_of_last_.data(), now_of_last_.size(), true, no_row, kept_.row_moved);
+    const std::size_t change = moved_rows + fresh.size() + gone_count;
+    const std::size_t slots_before = kept_.by_id ? kept_.slots : slots_;
+    const std::size_t added_before = kept_.by_id ? kept_.slots - kept_.full_slots : 0;
+    const std::size_t empty_before = kept_.by_id ? kept_.empty_slots : 0;
+    if (8 * change > n_ ||
+        4 * (added_before + empty_before + fresh.size() + gone_count) > slots_before + fresh.size()) {
+        return false;
+    }
+    const auto start = clock_type::now();
+    if (!kept_.by_id) {
+        start_changes();
+    }
+    // Step 2: each slot names its row now, or no_row when the row is gone;
+    // the new rows get slots after the last.
+    std::uint32_t* const order = order_.data();
+    const std::uint32_t* const now_of = now_of_last_.data();
+    for (std::size_t k = 0; k < kept_.slots; ++k) {
+        const std::uint32_t row = order[k];
+        order[k] = row == no_row ? no_row : now_of[row];
+    }
+    kept_.empty_slots += gone_count;
+    kept_.rows = n_;
+    const std::size_t first_new = kept_.slots;
+    add_slots(input, fresh);
+    // Step 3: the new slots' candidates, appended to the kept ones.
+    const std::size_t kept_before = kept_.pairs.size();
+    find_new_candidates(first_new);
+    // Step 4: by_caller in this call's rows, with the new candidates.
+    kept_.moved_pairs.clear();
+    for (std::size_t i = kept_before; i < kept_.pairs.size(); ++i) {
+        const pair_index caller = caller_pair(kept_.pairs[i]);
+        kept_.moved_pairs.push_back(tagged_pair{caller.a, caller.b, static_cast<std::uint32_t>(i)});
+    }
+    sort_moved_pairs(last_a, moved_rows != 0);
+    kept_.answer_parts = 0;  // the shares of the answer are marked anew
+    stats_.order_seconds = seconds_since(start);
+    return true;
+}
+
+void pair_search::add_slots(const query_input& input, const std::vector<std::uint32_t>& fresh) {
+    const std::size_t first = kept_.slots;
+    const std::size_t count = fresh.size();
+    const std::size_t slots = first + count;
+    kept_.slots = slots;
+    slots_ = slots;
+    for (auto* v : {&order_, &keys_, &q_lo_, &q_hi_, &strip_hi_}) {
+        v->resize(slots);
+    }
+    for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
+        v->resize(slots);
+    }
+    records_.resize(slots);
+    side_.resize(slots);
+    kept_.now.resize(slots);
+    kept_.widened.resize(slots);
+    if (count == 0) {
+        return;
+    }
+    const bounds_fn bounds = kernels_for(ran_).bounds;
+    const unsigned q_bits = grid_.q_bits;
+    std::vector<std::uint64_t> entries;
+    bounds_run b;
+    for (std::size_t run_begin = first; run_begin < slots; run_begin += bounds_run::size) {
+        const std::size_t run_end = std::min(slots, run_begin + bounds_run::size);
+        for (std::size_t k = run_begin; k < run_end; ++k) {
+            const std::uint32_t row = fresh[k - first];
+            order_[k] = row;
+            copy_row(input, row, records_[k].v);
+            side_[k] = row >= a_count_ && !self_ ? 1 : 0;
+        }
+        // The bounds the refresh computes (the same function on the same
+        // floats), widened as the full query widened the others.
+        bounds(kind_, records_[run_begin].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+        widen_bounds(b, run_end - run_begin, kept_.margin, kept_.typical_extent);
+        for (std::size_t k = run_begin; k < run_end; ++k) {
+            const std::size_t r = k - run_begin;
+            in_lo_x_[k] = b.lo_x[r];
+            in_lo_y_[k] = b.lo_y[r];
+            in_hi_x_[k] = b.hi_x[r];
+            in_hi_y_[k] = b.hi_y[r];
+            kept_.widened[k] = signed_bounds{{b.lo_x[r], b.lo_y[r], -b.hi_x[r], -b.hi_y[r]}};
+            q_lo_[k] = grid_.q_of(b.lo_x[r]);
+            q_hi_[k] = grid_.q_of(b.hi_x[r]);
+            keys_[k] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
+            const std::uint32_t low = keys_[k] >> q_bits;
+            strip_hi_[k] = std::max(grid_.strip_of(b.hi_y[r]), low);
+            const std::uint32_t reach = q_hi_[k] - std::min(q_lo_[k], q_hi_[k]);
+            for (std::uint32_t s = low; s <= strip_hi_[k]; ++s) {
+                const std::uint64_t key = (std::uint64_t{s} << q_bits) | q_lo_[k];
+                entries.push_back((key << 32) | k);
+                kept_.added_reach[s] = std::max(kept_.added_reach[s], reach);
+            }
+        }
+    }
+    // The added entries: those of empty slots dropped, the new ones merged in.
+    std::sort(entries.begin(), entries.end());
+    std::vector<std::uint64_t>& merged = kept_.added_spare;
+    merged.clear();
+    merged.reserve(kept_.added_entries.size() + entries.size());
+    const std::uint32_t* const order = order_.data();
+    auto old = kept_.added_entries.begin();
+    auto add = entries.begin();
+    while (old != kept_.added_entries.end() || add != entries.end()) {
+        if (add == entries.end() || (old != kept_.added_entries.end() && *old < *add)) {
+            if (order[*old & 0xffffffffu] != no_row) {
+                merged.push_back(*old);
+            }
+            ++old;
+        } else {
+            merged.push_back(*add++);
+        }
+    }
+    kept_.added_entries.swap(merged);
+    // Where each strip's entries start, so that a search looks in one strip's few.
+    const std::size_t strips = grid_.strips;
+    kept_.added_begin.assign(strips + 1, 0);
+    for (const std::uint64_t e : kept_.added_entries) {
+        ++kept_.added_begin[((e >> 32) >> q_bits) + 1];
+    }
+    for (std::size_t t = 0; t < strips; ++t) {
+        kept_.added_begin[t + 1] += kept_.added_begin[t];
+    }
+}
+
+void pair_search::find_new_candidates(std::size_t first_new) {
+    const unsigned q_bits = grid_.q_bits;
+    const std::uint32_t* const order = order_.data();
+    const std::uint32_t* const keys = keys_.data();
+    const std::uint64_t* const added = kept_.added_entries.data();
+    const std::uint32_t* const added_begin = kept_.added_begin.data();
+    const signed_bounds* const widened = kept_.widened.data();
+    const auto offset = static_cast<std::uint32_t>(a_count_);
+    std::vector<std::uint32_t>& near = kept_.near;
+    for (std::size_t xs = first_new; xs < kept_.slots; ++xs) {
+        const auto x = static_cast<std::uint32_t>(xs);
+        const std::uint32_t low = keys[x] >> q_bits;
+        const std::uint32_t high = strip_hi_[x];
+        const std::uint32_t q_lo = q_lo_[x];
+        const std::uint32_t q_hi = q_hi_[x];
+        const signed_bounds bx = widened[x];
+        // The slots in reach are gathered first (sequential reads of the
+        // strips' sorted keys) and tested after, with no branch on the
+        // outcome, so that their random reads overlap.
+        near.clear();
+        const auto consider = [&](std::uint32_t y) { near.push_back(y); };
+        for (std::uint32_t t = low; t <= high; ++t) {
+            const std::uint32_t strip_key = t << q_bits;
+            const std::uint32_t hi_key = strip_key | q_hi;
+            // The full query's entries of strip t: its own, and on x's lowest strip its visitors.
+            {
+                const std::uint32_t reach = kept_.full_reach[t];
+                const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
+                const std::uint32_t* const begin = keys + own_begin_[t];
+                const std::uint32_t* const end = keys + own_begin_[t + 1];
+                for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
+                    consider(static_cast<std::uint32_t>(k - keys));
+                }
+                if (t == low) {
+                    const std::uint32_t* const vbegin = visit_keys_.data() + visit_begin_[t];
+                    const std::uint32_t* const vend = visit_keys_.data() + visit_begin_[t + 1];
+                    for (const std::uint32_t* v = seek(vbegin, vend, lo_key); v != vend && *v <= hi_key;
+                         ++v) {
+                        consider(visit_ids_[static_cast<std::size_t>(v - visit_keys_.data())]);
+                    }
+                }
+            }
+            // The slots added since, in the strip holding the larger of the two lowest strips.
+            {
+                const std::uint32_t reach = kept_.added_reach[t];
+                const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
+                const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
+                const std::uint64_t* const strip_end = added + added_begin[t + 1];
+                for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);
+                     e != strip_end && *e <= hi_entry; ++e) {
+                    const auto y = static_cast<std::uint32_t>(*e & 0xffffffffu);
+                    if (t == std::max(low, keys[y] >> q_bits)) {
+                        consider(y);
+                    }
+                }
+            }
+        }
+        // The widened bounds, the sweep's test; and not an empty slot, x
+        // itself, a new slot that finds x itself, or one of the same set.
+        // Each pair is put in the caller's order, as the sweep puts its
+        // candidates (flush_candidates).
+        const std::size_t at = kept_.pairs.size();
+        kept_.pairs.resize(at + near.size());
+        pair_index* const out = kept_.pairs.data() + at;
+        std::size_t found = 0;
+        const std::uint32_t x_row = order[x];
+        const std::uint8_t x_side = side_[x];
+        for (const std::uint32_t y : near) {
+            const signed_bounds& by = widened[y];
+            const std::uint32_t y_row = order[y];
+            const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
+                                 (bx.v[1] <= -by.v[3]);
+            const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
+                               (self_ | (side_[y] != x_side));
+            const bool swap = self_ ? x_row > y_row : x_row >= offset;
+            out[found] = swap ? pair_index{y, x} : pair_index{x, y};
+            found += (overlap & other) ? 1u : 0u;
+        }
+        kept_.pairs.resize(at + found);
+    }
+}
+
+void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
+    // Rows that keep their order against each other keep their pairs' order:
+    // those pairs are mapped where they lie when the answer is read
+    // (answer_by_id); the pairs of moved rows are mapped here and sorted
+    // apart with the new ones (moved_pairs), to be merged in then.
+    const std::uint32_t b_last = self_ ? 0u : static_cast<std::uint32_t>(last_a_count);
+    const std::uint32_t b_now = self_ ? 0u : static_cast<std::uint32_t>(a_count_);
+    const std::uint32_t* const now_of = now_of_last_.data();
+    const std::uint8_t* const moved = kept_.row_moved.data();
+    if (any_moved) {
+        for (const tagged_pair& p : kept_.by_caller) {
+            const std::uint32_t la = p.a;
+            const std::uint32_t lb = p.b + b_last;
+            if ((moved[la] | moved[lb]) == 0 || now_of[la] == no_row || now_of[lb] == no_row) {
+                continue;
+            }
+            std::uint32_t a = now_of[la];
+            std::uint32_t b = now_of[lb] - b_now;
+            if (self_ && a > b) {
+                // The caller's order of the two changed: the method is asked the other way round.
+                std::swap(a, b);
+                pair_index& kept = kept_.pairs[p.tag];
+                std::swap(kept.a, kept.b);
+            }
+            kept_.moved_pairs.push_back(tagged_pair{a, b, p.tag});
+        }
+    }
+    std::sort(kept_.moved_pairs.begin(), kept_.moved_pairs.end(),
+              [](const tagged_pair& x, const tagged_pair& y) { return order_key(x) < order_key(y); });
+    kept_.remap_pending = true;
+    kept_.remap_any_moved = any_moved;
+    kept_.remap_last_a = last_a_count;
+}
+
+void pair_search::answer_by_id() {
+    // One pass over the kept pairs in the last call's rows: each is mapped
+    // to this call's rows (dropped for good when a row is gone, left to
+    // moved_pairs when a row moved), the sorted moved and new pairs merged
+    // in; the result is by_caller for the next call, and the pairs the method
+    // called colliding, read on the way, are the answer.
+    const auto start = clock_type::now();
+    const std::uint32_t b_last = self_ ? 0u : static_cast<std::uint32_t>(kept_.remap_last_a);
+    const std::uint32_t b_now = self_ ? 0u : static_cast<std::uint32_t>(a_count_);
+    const bool any_moved = kept_.remap_any_moved;
+    const std::uint32_t* const now_of = now_of_last_.data();
+    const std::uint8_t* const moved = kept_.row_moved.data();
+    const std::uint64_t* const verdicts = kept_.verdicts.data();
+    const std::size_t most = kept_.by_caller.size() + kept_.moved_pairs.size();
+    std::vector<tagged_pair>& next = kept_.by_caller_spare;
+    next.resize(most);
+    pairs_.resize(most);
+    kept_.dropped.resize((kept_.pairs.size() + 63) / 64, 0);
+    std::uint64_t* const dropped = kept_.dropped.data();
+    tagged_pair* const into = next.data();
+    pair_index* const out = pairs_.data();
+    std::size_t written = 0;
+    std::size_t found = 0;
+    // Each pair is written where the next colliding one goes, and counted
+    // if it collides: no branch on the verdicts.
+    const auto take = [&](const tagged_pair& p) {
+        into[written++] = p;
+        out[found] = pair_index{p.a, p.b};
+        found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
+    };
+    const tagged_pair* side = kept_.moved_pairs.data();
+    const tagged_pair* const side_end = side + kept_.moved_pairs.size();
+    const tagged_pair* const kept = kept_.by_caller.data();
+    const std::size_t kept_count = kept_.by_caller.size();
+    constexpr std::size_t ahead = 32;
+    for (std::size_t j = 0; j < kept_count; ++j) {
+        const tagged_pair& p = kept[j];
+        if (j + ahead < kept_count) {
+            // The second rows and the verdicts are in no order: fetched ahead, they arrive in parallel.
+            __builtin_prefetch(now_of + kept[j + ahead].b + b_last);
+            __builtin_prefetch(verdicts + kept[j + ahead].tag / 64);
+        }
+        const std::uint32_t a = now_of[p.a];
+        const std::uint32_t b = now_of[p.b + b_last];
+        if ((a == no_row) | (b == no_row)) {
+            // A gone row's pair: dropped for good, and never answers again.
+            dropped[p.tag / 64] |= std::uint64_t{1} << (p.tag % 64);
+            continue;
+        }
+        if (any_moved && (moved[p.a] | moved[p.b + b_last]) != 0) {
+            continue;  // in moved_pairs
+        }
+        const tagged_pair mapped{a, b - b_now, p.tag};
+        if (side != side_end) {
+            const std::uint64_t key = order_key(mapped);
+            while (side != side_end && order_key(*side) < key) {
+                take(*side++);
+            }
+        }
+        take(mapped);
+    }
+    while (side != side_end) {
+        take(*side++);
+    }
+    next.resize(written);
+    kept_.by_caller.swap(next);
+    pairs_.resize(found);
+    kept_.remap_pending = false;
+    kept_.answer_parts = 0;  // by_caller changed: the shares of an answer are marked anew
+    stats_.pairs = found;
+    stats_.kept_candidates = written;
+    stats_.output_seconds += seconds_since(start);
+}
+
+}  // namespace obbsat::detail

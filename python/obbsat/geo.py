@@ -91,10 +91,11 @@ def _describe(geometry, shapely):
     if not isinstance(geometry, shapely.geometry.base.BaseGeometry):
         return f"is a {type(geometry).__name__}, not a shapely geometry"
     kind = geometry.geom_type
+    if geometry.is_empty:
+        # shapely 1.8 calls an empty Polygon() a GeometryCollection.
+        return f"is an empty geometry ({kind}), expected a Polygon of 4 corners"
     if kind != "Polygon":
         return f"is a {kind}, expected a Polygon of 4 corners"
-    if geometry.is_empty:
-        return "is an empty Polygon, expected 4 corners"
     holes = len(geometry.interiors)
     if holes:
         return f"has {holes} interior ring{'s' if holes > 1 else ''} (holes), expected none"

@@ -111,15 +111,22 @@ def _rows(geometries, names, shapely):
     five-point little-endian ring is read through shapely, or refused with a
     ValueError naming it."""
     count = len(geometries)
-    blobs = _np.zeros((count, _WKB_SIZE), dtype=_np.uint8)
+    parts = []
     slow = []
     base = shapely.geometry.base.BaseGeometry
+    placeholder = bytes(_WKB_SIZE)
     for position, geometry in enumerate(geometries):
-        blob = geometry.wkb if isinstance(geometry, base) and not geometry.is_empty else b""
-        if len(blob) == _WKB_SIZE:
-            blobs[position] = _np.frombuffer(blob, dtype=_np.uint8)
-        else:
+        blob = b""
+        if isinstance(geometry, base):
+            try:
+                blob = geometry.wkb
+            except Exception:  # some GEOS versions cannot write an empty geometry: the slow path names it
+                pass
+        if len(blob) != _WKB_SIZE:
             slow.append(position)
+            blob = placeholder
+        parts.append(blob)
+    blobs = _np.frombuffer(b"".join(parts), dtype=_np.uint8).reshape(count, _WKB_SIZE)
     head = blobs[:, :_WKB_HEAD]
     counts = head[:, 1:].copy().view("<u4")     # type, rings, points
     fast = (head[:, 0] == 1) & (counts[:, 0] == 3) & (counts[:, 1] == 1) & (counts[:, 2] == 5)

@@ -135,6 +135,8 @@ def _rows(geometries, names, shapely):
         geometry = geometries[position]
         reason = _describe(geometry, shapely)
         if reason is not None:
+            # An earlier row whose corners are wrong is named first.
+            _check_outline(rows[:position], names)
             raise ValueError(f"{names(position)} {reason}")
         # A polygon of four corners that was not 2D little-endian (a z
         # coordinate, say): its x and y as shapely reads them.

@@ -165,6 +165,14 @@ def test_a_valid_geometry_next_to_a_bad_one_is_not_blamed():
         obbsat.geo.corners_from_shapely(geometries)
 
 
+def test_the_first_bad_row_is_named_whatever_is_wrong_with_it():
+    geometries = [box(0, 0, 1, 1), BAD_GEOMETRIES["bow tie"][0], Point(0, 0)]
+    with pytest.raises(ValueError, match=r"^geometry 1 has an outline that crosses"):
+        obbsat.geo.corners_from_shapely(geometries)
+    with pytest.raises(ValueError, match=r"^geometry 0 is a Point"):
+        obbsat.geo.corners_from_shapely(geometries[::-1])
+
+
 def test_wrong_containers_and_arrays():
     with pytest.raises(TypeError, match="sequence of shapely Polygons"):
         obbsat.geo.corners_from_shapely(box(0, 0, 1, 1))

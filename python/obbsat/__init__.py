@@ -42,6 +42,18 @@ from ._core import FindPairsStats, PoseRecords, RectRecords, UnsupportedBackendE
 
 __version__ = _core.__version__
 
+# Submodules imported on first use (``obbsat.geo``), so that ``import obbsat``
+# needs none of their optional dependencies (shapely, geopandas).
+_LAZY_SUBMODULES = ("geo",)
+
+
+def __getattr__(name):
+    if name in _LAZY_SUBMODULES:
+        import importlib
+
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 __all__ = [
     "FindPairsStats",
     "PairFinder",

@@ -3,6 +3,7 @@ from typing import Any, TypeVar, overload
 import numpy as np
 import numpy.typing as npt
 
+from . import geo as geo
 from . import testing as testing
 from ._core import FindPairsStats as FindPairsStats
 from ._core import PoseRecords as PoseRecords

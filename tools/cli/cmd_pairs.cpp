@@ -49,6 +49,7 @@ const std::vector<option_spec>& pairs_option_specs() {
         {"threads", "N", "cores to split the query over, 0 for all (default: 1)"},
         {"out", "FILE", "write the pairs here, all or nothing (default: standard output)"},
         {"header", "", "start the output with the header line 'i,j'"},
+        {"precision", "P", "float (default); double is not available yet for pairs"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -327,6 +328,15 @@ int run_pairs(const arguments& args) {
     if (against && input.path == "-" && against->path == "-") {
         throw usage_error("--" + input.option + " and --" + against->option +
                           " cannot both read standard input ('-')");
+    }
+    // The scene query (find_pairs) takes float stores only so far: the double
+    // stores are read by io::read_pose_records64 and read_rect_records64, and
+    // once box_view takes them, reading them in pairs_of_files is all that is
+    // left to do. Until then, refused before any file is read.
+    if (precision_option(options) == precision::double_) {
+        throw usage_error("--precision double: not yet available for 'obbsat pairs' (the scene query runs on "
+                          "float stores only); for double input list the candidate pairs and use "
+                          "'obbsat collide --precision double'");
     }
     const std::optional<std::string_view> out_path = output_option(options, "out");
     collide_options run;

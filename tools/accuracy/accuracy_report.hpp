@@ -78,8 +78,12 @@ struct method_result {
     error_counts total;
     double mpairs_per_second = 0.0;        ///< on the throughput scene (see accuracy_report)
 
-    /// method_label of this row.
-    std::string label() const { return method_label({test, store}); }
+    /// A label of its own (the double report's rows, drawn by the same plot);
+    /// empty for the float report's rows.
+    std::string name;
+
+    /// `name` if set, else method_label of this row.
+    std::string label() const { return name.empty() ? method_label({test, store}) : name; }
 };
 
 struct accuracy_settings {

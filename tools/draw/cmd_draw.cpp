@@ -14,9 +14,12 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
+#include <obbsat/collide64.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/contact64.hpp>
 #include <obbsat/oracle/pose_contact.hpp>
+#include <obbsat/oracle/pose_contact64.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -47,6 +50,7 @@ const std::vector<option_spec>& draw_option_specs() {
         {"out", "FILE", "the SVG file to write, all or nothing (required)"},
         {"method", "NAME", method_help},
         {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
+        precision_option_spec(),
         {"help", "", "show this help"},
     };
     return specs;
@@ -197,6 +201,7 @@ void print_draw_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat draw (--rects FILE | --poses FILE) --pairs FILE --select LIST\n"
                  "                   --out FILE.svg [--method NAME] [--backend NAME]\n"
+                 "                   [--precision float|double]\n"
                  "\n"
                  "Draws the chosen pairs as an SVG picture, one panel per pair: both rectangles\n"
                  "(A blue, B purple), the four axes of the method's test through the pair's\n"
@@ -213,6 +218,13 @@ void print_draw_help(std::FILE* out) {
                  "extent is the pose's centre plus or minus its reach on the axis; the exact\n"
                  "class is the pose oracle's, and the caption lists the poses as hex floats.\n"
                  "The methods on each kind of file are those of obbsat collide.\n"
+                 "\n"
+                 "With --precision double, the file is read in double (as 'obbsat collide\n"
+                 "--precision double' reads it) and the double methods decide; each panel is\n"
+                 "measured from the pair's own origin (A's centre, or A's UL corner), so pairs\n"
+                 "at UTM or larger coordinates draw as well as pairs at the origin, and an\n"
+                 "inset measures its width in double ulps. The exact class is the double\n"
+                 "oracle's; the caption lists the doubles as hex floats.\n"
                  "\n"
                  "options:\n");
     print_options(out, draw_option_specs());
@@ -237,9 +249,20 @@ int run_draw(const arguments& args) {
     const std::string pairs_path(options.required("pairs"));
     const std::vector<std::uint64_t> chosen = parse_selection(options.required("select"));
     const std::string out_path(*output_option(options, "out", true));
+    const precision digits = precision_option(options);
     collide_options run;
-    run.test = store_method_option(options, input);
+    run.test = digits == precision::double_ ? double_store_method_option(options, input)
+                                            : store_method_option(options, input);
     run.use = resolve_backend(backend_option(options));
+    if (digits == precision::double_ && input.kind == store_kind::corners) {
+        // Double corners run on the scalar backend only.
+        const backend asked = backend_option(options);
+        if (asked != backend::automatic && asked != backend::scalar) {
+            throw usage_error(std::string("--backend ") + backend_name(asked) +
+                              ": double corners (--rects with --precision double) run on the scalar backend only");
+        }
+        run.use = backend::scalar;
+    }
 
     const io::input_file rects_file(input.path);
     const io::input_file pairs_file(pairs_path);
@@ -250,7 +273,47 @@ int run_draw(const arguments& args) {
     io::atomic_output output(out_path);
 
     std::string text;
-    if (input.kind == store_kind::corners) {
+    if (digits == precision::double_ && input.kind == store_kind::corners) {
+        rect_records64 rects;
+        {
+            io::line_reader lines(rects_file.get(), rects_file.name());
+            rects = io::read_rect_records64(lines);
+        }
+        const std::vector<pair_index> pairs = read_chosen_pairs(pairs_file, rects.size(), rects_file.name(), chosen);
+        std::vector<std::uint8_t> verdicts(pairs.size());
+        const backend ran = collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), run);
+        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
+            svg::rect64_pair_drawing pair{};
+            pair.pair_number = chosen[i];
+            pair.rects = pairs[i];
+            pair.a = rects[pairs[i].a];
+            pair.b = rects[pairs[i].b];
+            pair.test = run.test;
+            pair.collides = verdicts[i] != 0;
+            pair.exact = oracle::classify(pair.a, pair.b);
+            return pair;
+        });
+    } else if (digits == precision::double_) {
+        pose_records64 poses;
+        {
+            io::line_reader lines(rects_file.get(), rects_file.name());
+            poses = io::read_pose_records64(lines);
+        }
+        const std::vector<pair_index> pairs = read_chosen_pairs(pairs_file, poses.size(), rects_file.name(), chosen);
+        std::vector<std::uint8_t> verdicts(pairs.size());
+        const backend ran = collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), run);
+        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
+            svg::pose64_pair_drawing pair{};
+            pair.pair_number = chosen[i];
+            pair.poses = pairs[i];
+            pair.a = poses[pairs[i].a];
+            pair.b = poses[pairs[i].b];
+            pair.test = run.test;
+            pair.collides = verdicts[i] != 0;
+            pair.exact = oracle::classify(pair.a, pair.b);
+            return pair;
+        });
+    } else if (input.kind == store_kind::corners) {
         rect_records rects;
         {
             io::line_reader lines(rects_file.get(), rects_file.name());

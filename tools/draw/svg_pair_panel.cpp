@@ -1,5 +1,7 @@
 #include "draw/svg_pair_panel.hpp"
 
+#include "draw/svg_double_axes.hpp"
+
 #include "draw/svg_pair_axes.hpp"
 #include "draw/svg_pair_contact.hpp"
 #include "draw/svg_pose_axes.hpp"
@@ -65,6 +67,31 @@ outline outline_of(const rect_pose& p, world_point origin) {
                      {(cx + ux) - vx, (cy + uy) - vy},
                      {(cx - ux) - vx, (cy - uy) - vy}}},
                    false};
+}
+
+// The corners of double pose `p` measured from `origin`: the centre
+// difference first (exact for nearby doubles), then the rotated half extents.
+outline outline_of(const rect_pose64& p, world_point origin) {
+    const double cx = p.center.x - origin.x;
+    const double cy = p.center.y - origin.y;
+    const double hx = p.half_extents.x, hy = p.half_extents.y;
+    const double ux = hx * p.rotation.x, uy = hx * p.rotation.y;
+    const double vx = -(hy * p.rotation.y), vy = hy * p.rotation.x;
+    return outline{{{{(cx - ux) + vx, (cy - uy) + vy},
+                     {(cx + ux) + vx, (cy + uy) + vy},
+                     {(cx + ux) - vx, (cy + uy) - vy},
+                     {(cx - ux) - vx, (cy - uy) - vy}}},
+                   false};
+}
+
+// The corners of double quad `r` measured from `origin`, named UL UR LR LL.
+outline outline_of(const rect64& r, world_point origin) {
+    outline o{{}, true};
+    const std::array<point64, 4> corners = {r.ul, r.ur, r.lr, r.ll};
+    for (std::size_t i = 0; i < 4; ++i) {
+        o.corners[i] = world_point{corners[i].x - origin.x, corners[i].y - origin.y};
+    }
+    return o;
 }
 
 // Everything a panel draws, whatever kind of pair it shows.
@@ -444,7 +471,7 @@ void draw_inset(writer& out, const panel_content& pair, const method_view& axes,
                "#111", "start");
     draw_label(out, svg_point{w.left + 5, w.top + 21}, "width " + format("%.3g", contact.inset_span) + " = " +
                    format("%.3g", contact.inset_span / contact.inset_ulp) +
-                   " float ulps there", 8,
+                   " " + contact.ulp_name + " ulps there", 8,
                "#333", "start");
     const std::string measure =
         contact.outlines_meet
@@ -616,6 +643,36 @@ std::string hex_pose(const rect_pose& p) {
            hex_float(p.half_extents.y) + "," + hex_float(p.rotation.x) + "," + hex_float(p.rotation.y);
 }
 
+std::string hex_double(double value) { return format("%a", value); }
+
+std::string hex_pose(const rect_pose64& p) {
+    return hex_double(p.center.x) + "," + hex_double(p.center.y) + "," + hex_double(p.half_extents.x) + "," +
+           hex_double(p.half_extents.y) + "," + hex_double(p.rotation.x) + "," + hex_double(p.rotation.y);
+}
+
+std::string hex_rect(const rect64& r) {
+    std::string out;
+    for (const point64& c : {r.ul, r.ur, r.lr, r.ll}) {
+        out += (out.empty() ? "" : ",") + hex_double(c.x) + "," + hex_double(c.y);
+    }
+    return out;
+}
+
+std::string pose_remark(const std::string& name, const rect_pose64& p) {
+    std::string shape;
+    if (p.half_extents.x == 0.0 && p.half_extents.y == 0.0) {
+        shape = name + " is a point (hx = hy = 0)";
+    } else if (p.half_extents.x == 0.0 || p.half_extents.y == 0.0) {
+        shape = name + " is a segment (" + (p.half_extents.x == 0.0 ? "hx" : "hy") + " = 0)";
+    }
+    const double length = std::hypot(p.rotation.x, p.rotation.y);
+    if (std::fabs(length - 1.0) <= 1e-3) {
+        return shape;
+    }
+    const std::string scale = "|(c, s)| = " + format("%.3g", length) + " scales it";
+    return shape.empty() ? name + ": " + scale : shape + "; " + scale;
+}
+
 }  // namespace
 
 const char* verdict_word(bool collides) { return collides ? "collide" : "apart"; }
@@ -662,6 +719,49 @@ void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, do
     }
     content.caption_a = "A pose " + std::to_string(pair.poses.a) + ": " + hex_pose(pair.a);
     content.caption_b = "B pose " + std::to_string(pair.poses.b) + ": " + hex_pose(pair.b);
+    draw_panel(out, content, left, top);
+}
+
+void draw_pair_panel(writer& out, const pose64_pair_drawing& pair, double left, double top) {
+    const world_point origin{pair.a.center.x, pair.a.center.y};
+    panel_content content{};
+    content.pair_number = pair.pair_number;
+    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b) +
+                      ", doubles";
+    content.test = pair.test;
+    content.collides = pair.collides;
+    content.exact = pair.exact;
+    content.a = outline_of(pair.a, origin);
+    content.b = outline_of(pair.b, origin);
+    content.axes = view_of_pose64_method(pair.test, pair.a, pair.b, pair.collides);
+    content.contact =
+        view_of_contact(content.a.corners, content.b.corners, pair.exact, origin, value_type::float64);
+    for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
+        if (!remark.empty()) {
+            content.remarks.push_back(remark);
+        }
+    }
+    content.caption_a = "A pose " + std::to_string(pair.poses.a) + ": " + hex_pose(pair.a);
+    content.caption_b = "B pose " + std::to_string(pair.poses.b) + ": " + hex_pose(pair.b);
+    draw_panel(out, content, left, top);
+}
+
+void draw_pair_panel(writer& out, const rect64_pair_drawing& pair, double left, double top) {
+    const world_point origin{pair.a.ul.x, pair.a.ul.y};
+    panel_content content{};
+    content.pair_number = pair.pair_number;
+    content.members = "A = rect " + std::to_string(pair.rects.a) + ", B = rect " + std::to_string(pair.rects.b) +
+                      ", doubles";
+    content.test = pair.test;
+    content.collides = pair.collides;
+    content.exact = pair.exact;
+    content.a = outline_of(pair.a, origin);
+    content.b = outline_of(pair.b, origin);
+    content.axes = view_of_rect64_method(pair.test, pair.a, pair.b, pair.collides, origin);
+    content.contact =
+        view_of_contact(content.a.corners, content.b.corners, pair.exact, origin, value_type::float64);
+    content.caption_a = "A rect " + std::to_string(pair.rects.a) + ": " + hex_rect(pair.a);
+    content.caption_b = "B rect " + std::to_string(pair.rects.b) + ": " + hex_rect(pair.b);
     draw_panel(out, content, left, top);
 }
 

@@ -57,6 +57,9 @@ struct family_truth {
     std::uint64_t overlapping = 0;
 };
 
+/// The oracle's classes of `truth`, counted, under `name`.
+family_truth truth_of(const std::string& name, const std::vector<oracle::contact>& truth);
+
 /// A method on one kind of store: one row of the report.
 struct method_on_store {
     method test = method::sat4;

@@ -27,18 +27,6 @@ const std::vector<family_truth>& families_of(const double_accuracy_report& repor
 
 namespace {
 
-family_truth truth_counts(std::string_view name, const std::vector<oracle::contact>& truth) {
-    family_truth out;
-    out.name = std::string(name);
-    out.pairs = truth.size();
-    for (const oracle::contact c : truth) {
-        out.separated += c == oracle::contact::separated;
-        out.touching += c == oracle::contact::touching;
-        out.overlapping += c == oracle::contact::overlapping;
-    }
-    return out;
-}
-
 // `v` rounded to float, or nothing when it lies beyond float range (the
 // conversion of such a double is undefined; a float store would refuse it).
 std::optional<float> to_float(double v) {
@@ -158,7 +146,7 @@ double_accuracy_report measure_double_accuracy(const accuracy_settings& settings
     for (std::size_t f = 0; f < pose_count; ++f) {
         const double_pose_suite s = make_double_pose_family(f, settings.seed, settings.pairs_per_family);
         const std::vector<oracle::contact> truth = double_truth(s);
-        report.pose_families.push_back(truth_counts(s.family, truth));
+        report.pose_families.push_back(truth_of(s.family, truth));
         const pose_records64 store(s.poses);
         const float32_pairs<rect_pose> rounded_set = rounded_pairs<rect_pose>(s.poses, s.pairs, truth);
         const pose_records float_store(rounded_set.shapes);
@@ -183,7 +171,7 @@ double_accuracy_report measure_double_accuracy(const accuracy_settings& settings
     for (std::size_t f = 0; f < double_corner_family_names().size(); ++f) {
         const double_rect_suite s = make_double_corner_family(f, settings.seed, settings.pairs_per_family);
         const std::vector<oracle::contact> truth = double_truth(s);
-        report.corner_families.push_back(truth_counts(s.family, truth));
+        report.corner_families.push_back(truth_of(s.family, truth));
         const rect_records64 store(s.rects);
         const float32_pairs<rect> rounded_set = rounded_pairs<rect>(s.rects, s.pairs, truth);
         const rect_records float_store(rounded_set.shapes);

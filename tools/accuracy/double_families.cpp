@@ -98,38 +98,36 @@ std::optional<std::size_t> find_name(const std::vector<std::string_view>& names,
     return std::nullopt;
 }
 
-double_pose_suite make_double_pose_family(std::size_t family, std::uint64_t seed, std::size_t pairs) {
-    const pose_family_entry& entry = pose_entries().at(family);
-    seeded_random random = random_for(family, seed, 1);
-    double_pose_suite s;
+namespace {
+
+// `pairs` pairs of `entry`'s make into a suite whose shapes are `Suite::*shapes`:
+// pair i is shapes 2i and 2i+1.
+template <class Suite, class Entry, class Shapes>
+Suite make_suite(const Entry& entry, std::size_t family, std::uint64_t seed, std::size_t pairs, std::uint64_t kind,
+                 Shapes Suite::*shapes) {
+    seeded_random random = random_for(family, seed, kind);
+    Suite s;
     s.family = std::string(entry.name);
     s.seed = seed;
-    s.poses.reserve(2 * pairs);
+    (s.*shapes).reserve(2 * pairs);
     s.pairs.reserve(pairs);
     for (std::size_t i = 0; i < pairs; ++i) {
-        const suites::pose_pair64 p = entry.make(random);
+        const auto p = entry.make(random);
         s.pairs.push_back(pair_index{static_cast<std::uint32_t>(2 * i), static_cast<std::uint32_t>(2 * i + 1)});
-        s.poses.push_back(p.a);
-        s.poses.push_back(p.b);
+        (s.*shapes).push_back(p.a);
+        (s.*shapes).push_back(p.b);
     }
     return s;
 }
 
+}  // namespace
+
+double_pose_suite make_double_pose_family(std::size_t family, std::uint64_t seed, std::size_t pairs) {
+    return make_suite(pose_entries().at(family), family, seed, pairs, 1, &double_pose_suite::poses);
+}
+
 double_rect_suite make_double_corner_family(std::size_t family, std::uint64_t seed, std::size_t pairs) {
-    const corner_family_entry& entry = corner_entries().at(family);
-    seeded_random random = random_for(family, seed, 2);
-    double_rect_suite s;
-    s.family = std::string(entry.name);
-    s.seed = seed;
-    s.rects.reserve(2 * pairs);
-    s.pairs.reserve(pairs);
-    for (std::size_t i = 0; i < pairs; ++i) {
-        const suites::rect_pair64 p = entry.make(random);
-        s.pairs.push_back(pair_index{static_cast<std::uint32_t>(2 * i), static_cast<std::uint32_t>(2 * i + 1)});
-        s.rects.push_back(p.a);
-        s.rects.push_back(p.b);
-    }
-    return s;
+    return make_suite(corner_entries().at(family), family, seed, pairs, 2, &double_rect_suite::rects);
 }
 
 std::vector<oracle::contact> double_truth(const double_pose_suite& s) {

@@ -188,16 +188,7 @@ int run_collide(const arguments& args) {
     // Resolved once, before any file is read, so a backend this CPU lacks (or
     // a bad OBBSAT_BACKEND) fails at once, and every chunk runs on the same one.
     run.use = resolve_backend(backend_option(options));
-    if (digits == precision::double_ && input.kind == store_kind::corners) {
-        // Double corners have no SIMD lanes yet: the library runs them on the
-        // scalar backend and refuses an explicit other one.
-        const backend asked = backend_option(options);
-        if (asked != backend::automatic && asked != backend::scalar) {
-            throw usage_error(std::string("--backend ") + backend_name(asked) +
-                              ": double corners (--rects with --precision double) run on the scalar backend only");
-        }
-        run.use = backend::scalar;
-    }
+    run.use = store_backend(options, input, digits, run.use);
 
     // Open everything before the long parse, so a missing file or an
     // unwritable --out is reported at once.

@@ -254,15 +254,7 @@ int run_draw(const arguments& args) {
     run.test = digits == precision::double_ ? double_store_method_option(options, input)
                                             : store_method_option(options, input);
     run.use = resolve_backend(backend_option(options));
-    if (digits == precision::double_ && input.kind == store_kind::corners) {
-        // Double corners run on the scalar backend only.
-        const backend asked = backend_option(options);
-        if (asked != backend::automatic && asked != backend::scalar) {
-            throw usage_error(std::string("--backend ") + backend_name(asked) +
-                              ": double corners (--rects with --precision double) run on the scalar backend only");
-        }
-        run.use = backend::scalar;
-    }
+    run.use = store_backend(options, input, digits, run.use);
 
     const io::input_file rects_file(input.path);
     const io::input_file pairs_file(pairs_path);

@@ -53,27 +53,15 @@ outline outline_of(const rect& r) {
     return o;
 }
 
-// The corners of pose `p` in double, measured from `origin`, in the order of
-// ref::corners_of (UL, UR, LR, LL): each product of two floats is exact, each
-// corner two roundings from the pose's own, whatever the pose's scale.
-outline outline_of(const rect_pose& p, world_point origin) {
+// The corners of pose `p` (a rect_pose or a rect_pose64) in double, measured
+// from `origin`, in the order of ref::corners_of (UL, UR, LR, LL): the centre
+// difference first (exact for nearby values), then the rotated half extents;
+// for float poses each product of two floats is exact, so each corner is two
+// roundings from the pose's own, whatever the pose's scale.
+template <class Pose>
+outline outline_of_pose(const Pose& p, world_point origin) {
     const double cx = static_cast<double>(p.center.x) - origin.x;
     const double cy = static_cast<double>(p.center.y) - origin.y;
-    const double hx = p.half_extents.x, hy = p.half_extents.y;
-    const double ux = hx * p.rotation.x, uy = hx * p.rotation.y;
-    const double vx = -(hy * p.rotation.y), vy = hy * p.rotation.x;
-    return outline{{{{(cx - ux) + vx, (cy - uy) + vy},
-                     {(cx + ux) + vx, (cy + uy) + vy},
-                     {(cx + ux) - vx, (cy + uy) - vy},
-                     {(cx - ux) - vx, (cy - uy) - vy}}},
-                   false};
-}
-
-// The corners of double pose `p` measured from `origin`: the centre
-// difference first (exact for nearby doubles), then the rotated half extents.
-outline outline_of(const rect_pose64& p, world_point origin) {
-    const double cx = p.center.x - origin.x;
-    const double cy = p.center.y - origin.y;
     const double hx = p.half_extents.x, hy = p.half_extents.y;
     const double ux = hx * p.rotation.x, uy = hx * p.rotation.y;
     const double vx = -(hy * p.rotation.y), vy = hy * p.rotation.x;
@@ -623,12 +611,13 @@ void draw_panel(writer& out, const panel_content& pair, double left, double top)
 
 // The shape of a pose in words, when it has no area or its rotation vector
 // scales it noticeably; empty otherwise.
-std::string pose_remark(const std::string& name, const rect_pose& p) {
+template <class Pose>
+std::string pose_remark(const std::string& name, const Pose& p) {
     std::string shape;
-    if (p.half_extents.x == 0.0f && p.half_extents.y == 0.0f) {
+    if (p.half_extents.x == 0 && p.half_extents.y == 0) {
         shape = name + " is a point (hx = hy = 0)";
-    } else if (p.half_extents.x == 0.0f || p.half_extents.y == 0.0f) {
-        shape = name + " is a segment (" + (p.half_extents.x == 0.0f ? "hx" : "hy") + " = 0)";
+    } else if (p.half_extents.x == 0 || p.half_extents.y == 0) {
+        shape = name + " is a segment (" + (p.half_extents.x == 0 ? "hx" : "hy") + " = 0)";
     }
     const double length = std::hypot(static_cast<double>(p.rotation.x), static_cast<double>(p.rotation.y));
     if (std::fabs(length - 1.0) <= 1e-3) {
@@ -656,21 +645,6 @@ std::string hex_rect(const rect64& r) {
         out += (out.empty() ? "" : ",") + hex_double(c.x) + "," + hex_double(c.y);
     }
     return out;
-}
-
-std::string pose_remark(const std::string& name, const rect_pose64& p) {
-    std::string shape;
-    if (p.half_extents.x == 0.0 && p.half_extents.y == 0.0) {
-        shape = name + " is a point (hx = hy = 0)";
-    } else if (p.half_extents.x == 0.0 || p.half_extents.y == 0.0) {
-        shape = name + " is a segment (" + (p.half_extents.x == 0.0 ? "hx" : "hy") + " = 0)";
-    }
-    const double length = std::hypot(p.rotation.x, p.rotation.y);
-    if (std::fabs(length - 1.0) <= 1e-3) {
-        return shape;
-    }
-    const std::string scale = "|(c, s)| = " + format("%.3g", length) + " scales it";
-    return shape.empty() ? name + ": " + scale : shape + "; " + scale;
 }
 
 }  // namespace
@@ -708,8 +682,8 @@ void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, do
     content.test = pair.test;
     content.collides = pair.collides;
     content.exact = pair.exact;
-    content.a = outline_of(pair.a, origin);
-    content.b = outline_of(pair.b, origin);
+    content.a = outline_of_pose(pair.a, origin);
+    content.b = outline_of_pose(pair.b, origin);
     content.axes = view_of_pose_method(pair.test, pair.a, pair.b, pair.collides);
     content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin);
     for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
@@ -731,8 +705,8 @@ void draw_pair_panel(writer& out, const pose64_pair_drawing& pair, double left, 
     content.test = pair.test;
     content.collides = pair.collides;
     content.exact = pair.exact;
-    content.a = outline_of(pair.a, origin);
-    content.b = outline_of(pair.b, origin);
+    content.a = outline_of_pose(pair.a, origin);
+    content.b = outline_of_pose(pair.b, origin);
     content.axes = view_of_pose64_method(pair.test, pair.a, pair.b, pair.collides);
     content.contact =
         view_of_contact(content.a.corners, content.b.corners, pair.exact, origin, value_type::float64);

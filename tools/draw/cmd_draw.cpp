@@ -195,6 +195,27 @@ std::string picture(std::size_t count, method m, backend ran, const std::string&
     return out.finish();
 }
 
+// The picture of the chosen pairs of the file `rects_file`, read whole by
+// `read` into a store, each pair decided by the library on it and drawn as a
+// `Drawing` (svg_pair_panel.hpp) with the exact class of its kind of pair.
+template <class Drawing, class Read>
+std::string picture_of_file(Read read, const io::input_file& rects_file, const io::input_file& pairs_file,
+                            const std::vector<std::uint64_t>& chosen, const collide_options& run) {
+    const auto store = [&] {
+        io::line_reader lines(rects_file.get(), rects_file.name());
+        return read(lines);
+    }();
+    const std::vector<pair_index> pairs = read_chosen_pairs(pairs_file, store.size(), rects_file.name(), chosen);
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    const backend ran = collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), run);
+    return picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
+        Drawing pair{chosen[i], pairs[i],  store[pairs[i].a], store[pairs[i].b],
+                     run.test,  verdicts[i] != 0, oracle::contact::separated};
+        pair.exact = oracle::classify(pair.a, pair.b);
+        return pair;
+    });
+}
+
 }  // namespace
 
 void print_draw_help(std::FILE* out) {
@@ -264,90 +285,19 @@ int run_draw(const arguments& args) {
     }
     io::atomic_output output(out_path);
 
-    std::string text;
-    if (digits == precision::double_ && input.kind == store_kind::corners) {
-        rect_records64 rects;
-        {
-            io::line_reader lines(rects_file.get(), rects_file.name());
-            rects = io::read_rect_records64(lines);
-        }
-        const std::vector<pair_index> pairs = read_chosen_pairs(pairs_file, rects.size(), rects_file.name(), chosen);
-        std::vector<std::uint8_t> verdicts(pairs.size());
-        const backend ran = collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), run);
-        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
-            svg::rect64_pair_drawing pair{};
-            pair.pair_number = chosen[i];
-            pair.rects = pairs[i];
-            pair.a = rects[pairs[i].a];
-            pair.b = rects[pairs[i].b];
-            pair.test = run.test;
-            pair.collides = verdicts[i] != 0;
-            pair.exact = oracle::classify(pair.a, pair.b);
-            return pair;
-        });
-    } else if (digits == precision::double_) {
-        pose_records64 poses;
-        {
-            io::line_reader lines(rects_file.get(), rects_file.name());
-            poses = io::read_pose_records64(lines);
-        }
-        const std::vector<pair_index> pairs = read_chosen_pairs(pairs_file, poses.size(), rects_file.name(), chosen);
-        std::vector<std::uint8_t> verdicts(pairs.size());
-        const backend ran = collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), run);
-        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
-            svg::pose64_pair_drawing pair{};
-            pair.pair_number = chosen[i];
-            pair.poses = pairs[i];
-            pair.a = poses[pairs[i].a];
-            pair.b = poses[pairs[i].b];
-            pair.test = run.test;
-            pair.collides = verdicts[i] != 0;
-            pair.exact = oracle::classify(pair.a, pair.b);
-            return pair;
-        });
-    } else if (input.kind == store_kind::corners) {
-        rect_records rects;
-        {
-            io::line_reader lines(rects_file.get(), rects_file.name());
-            rects = io::read_rect_records(lines);
-        }
-        const std::vector<pair_index> pairs =
-            read_chosen_pairs(pairs_file, rects.size(), rects_file.name(), chosen);
-        std::vector<std::uint8_t> verdicts(pairs.size());
-        const backend ran = collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), run);
-        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
-            svg::pair_drawing pair{};
-            pair.pair_number = chosen[i];
-            pair.rects = pairs[i];
-            pair.a = rects[pairs[i].a];
-            pair.b = rects[pairs[i].b];
-            pair.test = run.test;
-            pair.collides = verdicts[i] != 0;
-            pair.exact = oracle::classify(pair.a, pair.b);
-            return pair;
-        });
-    } else {
-        pose_records poses;
-        {
-            io::line_reader lines(rects_file.get(), rects_file.name());
-            poses = io::read_pose_records(lines);
-        }
-        const std::vector<pair_index> pairs =
-            read_chosen_pairs(pairs_file, poses.size(), rects_file.name(), chosen);
-        std::vector<std::uint8_t> verdicts(pairs.size());
-        const backend ran = collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), run);
-        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
-            svg::pose_pair_drawing pair{};
-            pair.pair_number = chosen[i];
-            pair.poses = pairs[i];
-            pair.a = poses[pairs[i].a];
-            pair.b = poses[pairs[i].b];
-            pair.test = run.test;
-            pair.collides = verdicts[i] != 0;
-            pair.exact = oracle::classify(pair.a, pair.b);
-            return pair;
-        });
-    }
+    // The panels of each kind of file: the drawing types list their fields in
+    // one order (pair number, indices, A, B, method, verdict, exact class).
+    const auto draw = [&](auto drawing, auto read) {
+        return picture_of_file<decltype(drawing)>(read, rects_file, pairs_file, chosen, run);
+    };
+    const std::string text =
+        digits == precision::double_
+            ? (input.kind == store_kind::corners
+                   ? draw(svg::rect64_pair_drawing{}, [](io::line_reader& l) { return io::read_rect_records64(l); })
+                   : draw(svg::pose64_pair_drawing{}, [](io::line_reader& l) { return io::read_pose_records64(l); }))
+            : (input.kind == store_kind::corners
+                   ? draw(svg::pair_drawing{}, [](io::line_reader& l) { return io::read_rect_records(l); })
+                   : draw(svg::pose_pair_drawing{}, [](io::line_reader& l) { return io::read_pose_records(l); }));
     output.write(text.data(), text.size());
     output.commit();
     return exit_success;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace obbsat::svg {
@@ -673,19 +674,35 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     draw_panel(out, content, left, top);
 }
 
-void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top) {
+namespace {
+
+// The pose test's view of a float or a double pose pair.
+method_view view_of_poses(method m, const rect_pose& a, const rect_pose& b, bool collides) {
+    return view_of_pose_method(m, a, b, collides);
+}
+
+method_view view_of_poses(method m, const rect_pose64& a, const rect_pose64& b, bool collides) {
+    return view_of_pose64_method(m, a, b, collides);
+}
+
+// The panel of a pair of float or double poses.
+template <class PoseDrawing>
+void draw_pose_pair_panel(writer& out, const PoseDrawing& pair, double left, double top) {
+    constexpr bool doubles = std::is_same_v<decltype(PoseDrawing::a), rect_pose64>;
     // Everything is measured from A's centre, where the axes' scalars start.
     const world_point origin{pair.a.center.x, pair.a.center.y};
     panel_content content{};
     content.pair_number = pair.pair_number;
-    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b);
+    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b) +
+                      (doubles ? ", doubles" : "");
     content.test = pair.test;
     content.collides = pair.collides;
     content.exact = pair.exact;
     content.a = outline_of_pose(pair.a, origin);
     content.b = outline_of_pose(pair.b, origin);
-    content.axes = view_of_pose_method(pair.test, pair.a, pair.b, pair.collides);
-    content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin);
+    content.axes = view_of_poses(pair.test, pair.a, pair.b, pair.collides);
+    content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin,
+                                      doubles ? value_type::float64 : value_type::float32);
     for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
         if (!remark.empty()) {
             content.remarks.push_back(remark);
@@ -696,28 +713,14 @@ void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, do
     draw_panel(out, content, left, top);
 }
 
+}  // namespace
+
+void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top) {
+    draw_pose_pair_panel(out, pair, left, top);
+}
+
 void draw_pair_panel(writer& out, const pose64_pair_drawing& pair, double left, double top) {
-    const world_point origin{pair.a.center.x, pair.a.center.y};
-    panel_content content{};
-    content.pair_number = pair.pair_number;
-    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b) +
-                      ", doubles";
-    content.test = pair.test;
-    content.collides = pair.collides;
-    content.exact = pair.exact;
-    content.a = outline_of_pose(pair.a, origin);
-    content.b = outline_of_pose(pair.b, origin);
-    content.axes = view_of_pose64_method(pair.test, pair.a, pair.b, pair.collides);
-    content.contact =
-        view_of_contact(content.a.corners, content.b.corners, pair.exact, origin, value_type::float64);
-    for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
-        if (!remark.empty()) {
-            content.remarks.push_back(remark);
-        }
-    }
-    content.caption_a = "A pose " + std::to_string(pair.poses.a) + ": " + hex_pose(pair.a);
-    content.caption_b = "B pose " + std::to_string(pair.poses.b) + ": " + hex_pose(pair.b);
-    draw_panel(out, content, left, top);
+    draw_pose_pair_panel(out, pair, left, top);
 }
 
 void draw_pair_panel(writer& out, const rect64_pair_drawing& pair, double left, double top) {

@@ -201,36 +201,30 @@ int run_collide(const arguments& args) {
     verdict_writer writer(output_option(options, "out"), options.has("header"));
 
     io::status_line status("obbsat collide");
-    std::string summary;
-    if (digits == precision::double_ && input.kind == store_kind::corners) {
-        const rect_records64 rects =
-            read_whole(rects_file, status, "rectangles", [](io::line_reader& lines, const io::record_progress& p) {
-                return io::read_rect_records64(lines, UINT32_MAX, p);
-            });
-        const std::uint64_t pairs = collide_pair_file(rects, rects_file, pairs_file, run, writer, status);
-        summary = std::to_string(rects.size()) + " rectangles, " + std::to_string(pairs) + " pairs";
-    } else if (digits == precision::double_) {
-        const pose_records64 poses =
-            read_whole(rects_file, status, "poses", [](io::line_reader& lines, const io::record_progress& p) {
-                return io::read_pose_records64(lines, UINT32_MAX, p);
-            });
-        const std::uint64_t pairs = collide_pair_file(poses, rects_file, pairs_file, run, writer, status);
-        summary = std::to_string(poses.size()) + " poses, " + std::to_string(pairs) + " pairs";
-    } else if (input.kind == store_kind::corners) {
-        const rect_records rects =
-            read_whole(rects_file, status, "rectangles", [](io::line_reader& lines, const io::record_progress& p) {
-                return io::read_rect_records(lines, UINT32_MAX, p);
-            });
-        const std::uint64_t pairs = collide_pair_file(rects, rects_file, pairs_file, run, writer, status);
-        summary = std::to_string(rects.size()) + " rectangles, " + std::to_string(pairs) + " pairs";
-    } else {
-        const pose_records poses =
-            read_whole(rects_file, status, "poses", [](io::line_reader& lines, const io::record_progress& p) {
-                return io::read_pose_records(lines, UINT32_MAX, p);
-            });
-        const std::uint64_t pairs = collide_pair_file(poses, rects_file, pairs_file, run, writer, status);
-        summary = std::to_string(poses.size()) + " poses, " + std::to_string(pairs) + " pairs";
-    }
+    // Reads the rectangle file whole with `read`, decides every pair over it
+    // and says what was done.
+    const auto decide = [&](const char* plural, auto read) {
+        const auto store = read_whole(rects_file, status, plural, read);
+        const std::uint64_t pairs = collide_pair_file(store, rects_file, pairs_file, run, writer, status);
+        return std::to_string(store.size()) + " " + plural + ", " + std::to_string(pairs) + " pairs";
+    };
+    using io::line_reader;
+    using io::record_progress;
+    const bool corners = input.kind == store_kind::corners;
+    const std::string summary =
+        digits == precision::double_
+            ? (corners ? decide("rectangles", [](line_reader& l, const record_progress& p) {
+                   return io::read_rect_records64(l, UINT32_MAX, p);
+               })
+                       : decide("poses", [](line_reader& l, const record_progress& p) {
+                             return io::read_pose_records64(l, UINT32_MAX, p);
+                         }))
+            : (corners ? decide("rectangles", [](line_reader& l, const record_progress& p) {
+                   return io::read_rect_records(l, UINT32_MAX, p);
+               })
+                       : decide("poses", [](line_reader& l, const record_progress& p) {
+                             return io::read_pose_records(l, UINT32_MAX, p);
+                         }));
     writer.finish();
     status.finish(summary);
     return exit_success;

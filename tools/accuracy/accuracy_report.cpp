@@ -63,7 +63,9 @@ double median_of(std::vector<double> values) {
     return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
-family_truth truth_of(const char* name, const std::vector<oracle::contact>& truth) {
+}  // namespace
+
+family_truth truth_of(const std::string& name, const std::vector<oracle::contact>& truth) {
     family_truth out;
     out.name = name;
     out.pairs = truth.size();
@@ -74,8 +76,6 @@ family_truth truth_of(const char* name, const std::vector<oracle::contact>& trut
     }
     return out;
 }
-
-}  // namespace
 
 std::string cpu_model_name() {
     std::ifstream info("/proc/cpuinfo");

@@ -57,6 +57,9 @@ struct family_truth {
     std::uint64_t overlapping = 0;
 };
 
+/// The oracle's classes of `truth`, counted, under `name`.
+family_truth truth_of(const std::string& name, const std::vector<oracle::contact>& truth);
+
 /// A method on one kind of store: one row of the report.
 struct method_on_store {
     method test = method::sat4;
@@ -78,8 +81,12 @@ struct method_result {
     error_counts total;
     double mpairs_per_second = 0.0;        ///< on the throughput scene (see accuracy_report)
 
-    /// method_label of this row.
-    std::string label() const { return method_label({test, store}); }
+    /// A label of its own (the double report's rows, drawn by the same plot);
+    /// empty for the float report's rows.
+    std::string name;
+
+    /// `name` if set, else method_label of this row.
+    std::string label() const { return name.empty() ? method_label({test, store}) : name; }
 };
 
 struct accuracy_settings {

@@ -51,6 +51,7 @@ const std::vector<option_spec>& gen_option_specs() {
         {"pairs-per-box", "D", "with --scene: colliding pairs per rectangle, about (default: 2)"},
         {"hex", "", "write floats as C99 hex floats (%a), not shortest decimal"},
         {"header", "", "start each CSV file with its header line (e.g. cx,cy,hx,hy,c,s)"},
+        {"precision", "P", "float (default) or double: FAMILY is a double family, written in doubles"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -160,6 +161,15 @@ void print_gen_help(std::FILE* out) {
                  "\n"
                  "pose families: %s\n"
                  "\n"
+                 "With --precision double, FAMILY is a double family: pairs at coordinates\n"
+                 "float32 rounds (UTM-like 1e5..1e7 m with millimetre and 1-4 ulp gaps, exact\n"
+                 "contacts from decimals such as 500000.125, 1e9..1e15, slivers, near-parallel,\n"
+                 "rotation lengths 1e-60..1e60), written as doubles (shortest round-trip\n"
+                 "decimal, or %%a with --hex) for 'obbsat collide --precision double', the truth\n"
+                 "by the exact double oracle. Tags name the family.\n"
+                 "  double families:      %s\n"
+                 "  double pose families: %s\n"
+                 "\n"
                  "all or nothing: the files are written and flushed in a temporary directory\n"
                  "beside DIR (inside it, if DIR exists) and only then moved into place; a new\n"
                  "DIR appears whole in one rename, an existing DIR gets each of the five files\n"
@@ -184,7 +194,9 @@ void print_gen_help(std::FILE* out) {
                  "terminal, standard error gets a one-line summary at the end.\n"
                  "\n"
                  "options:\n",
-                 family_list().c_str(), pose_family_list().c_str());
+                 family_list().c_str(), pose_family_list().c_str(),
+                 accuracy::name_list(accuracy::double_corner_family_names()).c_str(),
+                 accuracy::name_list(accuracy::double_pose_family_names()).c_str());
     print_options(out, gen_option_specs());
     std::fprintf(out,
                  "\n"
@@ -195,6 +207,9 @@ void print_gen_help(std::FILE* out) {
                  "  obbsat gen --poses contact --out contact\n"
                  "  obbsat collide --poses contact/poses.csv --pairs contact/pairs.csv --method exact"
                  " | cmp - contact/truth.txt\n"
+                 "  obbsat gen --precision double --poses utm_contact --out utm\n"
+                 "  obbsat collide --poses utm/poses.csv --pairs utm/pairs.csv --precision double"
+                 " --method exact | cmp - utm/truth.txt\n"
                  "  obbsat gen --scene mixed --boxes 1000000 --seed 7 --out scene.csv\n"
                  "  obbsat pairs --poses scene.csv --out pairs.csv\n");
 }
@@ -229,6 +244,20 @@ void gen_poses(const gen_request& request, suites::pose_family family) {
     std::printf("%s: %zu pairs of pose family %s (seed %" PRIu64 ") over %zu poses\n",
                 request.dir.c_str(), s.pairs.size(), suites::pose_family_name(family), request.seed,
                 s.poses.size());
+}
+
+void gen_double_rects(const gen_request& request, std::size_t family) {
+    const accuracy::double_rect_suite s = accuracy::make_double_corner_family(family, request.seed, request.pairs);
+    write_suite_dir(request.dir, request.dir_exists, s, accuracy::double_truth(s), request.style);
+    std::printf("%s: %zu pairs of double family %s (seed %" PRIu64 ") over %zu rects\n", request.dir.c_str(),
+                s.pairs.size(), s.family.c_str(), request.seed, s.rects.size());
+}
+
+void gen_double_poses(const gen_request& request, std::size_t family) {
+    const accuracy::double_pose_suite s = accuracy::make_double_pose_family(family, request.seed, request.pairs);
+    write_suite_dir(request.dir, request.dir_exists, s, accuracy::double_truth(s), request.style);
+    std::printf("%s: %zu pairs of double pose family %s (seed %" PRIu64 ") over %zu poses\n",
+                request.dir.c_str(), s.pairs.size(), s.family.c_str(), request.seed, s.poses.size());
 }
 
 // The options that shape a scene, and those that shape a family: one set
@@ -308,6 +337,12 @@ int run_gen(const arguments& args) {
     const split_words words = split_positional(args);
     const parsed_options options = parse_options(words.options, gen_option_specs());
     io::status_line status("obbsat gen");
+    const bool doubles = precision_option(options) == precision::double_;
+    if (doubles && options.has("scene")) {
+        throw usage_error("--scene with --precision double: scenes are float poses only; the double families "
+                          "are " + accuracy::name_list(accuracy::double_corner_family_names()) +
+                          " and, with --poses, " + accuracy::name_list(accuracy::double_pose_family_names()));
+    }
     if (options.has("scene")) {
         gen_scene(words, options, status);
         return exit_success;
@@ -318,7 +353,9 @@ int run_gen(const arguments& args) {
         }
     }
     const bool poses = options.has("poses");
-    const std::string known = poses ? pose_family_list() : family_list();
+    const std::vector<std::string_view>& double_names =
+        poses ? accuracy::double_pose_family_names() : accuracy::double_corner_family_names();
+    const std::string known = doubles ? accuracy::name_list(double_names) : poses ? pose_family_list() : family_list();
     if (words.positional.empty()) {
         throw usage_error("missing FAMILY (one of " + known + ")");
     }
@@ -326,12 +363,17 @@ int run_gen(const arguments& args) {
         throw usage_error("unexpected argument '" + std::string(words.positional[1]) + "'");
     }
     const std::string_view family_word = words.positional.front();
-    const std::optional<suites::family> family = poses ? std::nullopt : find_family(family_word);
+    const std::optional<suites::family> family = poses || doubles ? std::nullopt : find_family(family_word);
     const std::optional<suites::pose_family> pose_family =
-        poses ? find_pose_family(family_word) : std::nullopt;
-    if (!family && !pose_family) {
-        throw usage_error("unknown " + std::string(poses ? "pose family" : "family") + " '" +
-                          std::string(family_word) + "' (known: " + known + ")");
+        poses && !doubles ? find_pose_family(family_word) : std::nullopt;
+    // An index, not an optional: GCC 12 sees the optional's value as maybe
+    // uninitialised on the paths below.
+    const std::size_t no_family = double_names.size();
+    const std::size_t double_family =
+        doubles ? accuracy::find_name(double_names, family_word).value_or(no_family) : no_family;
+    if (!family && !pose_family && double_family == no_family) {
+        const std::string kind = std::string(doubles ? "double " : "") + (poses ? "pose family" : "family");
+        throw usage_error("unknown " + kind + " '" + std::string(family_word) + "' (known: " + known + ")");
     }
     gen_request request;
     request.style = style_option(options);
@@ -352,7 +394,11 @@ int run_gen(const arguments& args) {
         throw io::output_error(request.dir + ": exists and is not a directory");
     }
 
-    if (pose_family) {
+    if (double_family != no_family && poses) {
+        gen_double_poses(request, double_family);
+    } else if (double_family != no_family) {
+        gen_double_rects(request, double_family);
+    } else if (pose_family) {
         gen_poses(request, *pose_family);
     } else {
         gen_rects(request, *family);

@@ -167,8 +167,10 @@ void sync_directory(const std::string& path) {
 // float (promoted to double, exactly) as a C99 hex float that strtof and
 // from_chars read back to the same float, the format gen wrote before
 // decimal became the default.
-template <std::size_t N>
-std::size_t float_line(char* text, std::size_t size, const std::array<float, N>& values, bool hex) {
+// The same for doubles (--precision double): to_chars(double) gives the
+// shortest text that reads back to the same double, %a the double exactly.
+template <class Real, std::size_t N>
+std::size_t float_line(char* text, std::size_t size, const std::array<Real, N>& values, bool hex) {
     char* at = text;
     char* const end = text + size;
     for (std::size_t k = 0; k < N; ++k) {
@@ -186,20 +188,33 @@ std::size_t float_line(char* text, std::size_t size, const std::array<float, N>&
 }
 
 std::size_t shape_line(char* text, std::size_t size, const rect& r, bool hex) {
-    return float_line<8>(text, size, {r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x, r.lr.y, r.ll.x, r.ll.y}, hex);
+    return float_line<float, 8>(text, size, {r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x, r.lr.y, r.ll.x, r.ll.y}, hex);
 }
 
 std::size_t shape_line(char* text, std::size_t size, const rect_pose& p, bool hex) {
-    return float_line<6>(text, size,
-                         {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y},
-                         hex);
+    return float_line<float, 6>(text, size,
+                                {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y},
+                                hex);
+}
+
+std::size_t shape_line(char* text, std::size_t size, const rect64& r, bool hex) {
+    return float_line<double, 8>(text, size, {r.ul.x, r.ul.y, r.ur.x, r.ur.y, r.lr.x, r.lr.y, r.ll.x, r.ll.y}, hex);
+}
+
+std::size_t shape_line(char* text, std::size_t size, const rect_pose64& p, bool hex) {
+    return float_line<double, 6>(
+        text, size, {p.center.x, p.center.y, p.half_extents.x, p.half_extents.y, p.rotation.x, p.rotation.y}, hex);
 }
 
 std::string_view header_of(const suites::suite&) { return io::rect_header; }
 std::string_view header_of(const suites::pose_suite&) { return io::pose_header; }
+std::string_view header_of(const accuracy::double_rect_suite&) { return io::rect_header; }
+std::string_view header_of(const accuracy::double_pose_suite&) { return io::pose_header; }
 
 const std::vector<rect>& shapes_of(const suites::suite& s) { return s.rects; }
 const std::vector<rect_pose>& shapes_of(const suites::pose_suite& s) { return s.poses; }
+const std::vector<rect64>& shapes_of(const accuracy::double_rect_suite& s) { return s.rects; }
+const std::vector<rect_pose64>& shapes_of(const accuracy::double_pose_suite& s) { return s.poses; }
 
 // Suite is suites::suite or suites::pose_suite; names[0] is its shapes' file.
 template <class Suite>
@@ -207,7 +222,7 @@ void write_suite_files(const std::string& temp, const std::string& dir, const Su
                        const std::vector<oracle::contact>& truth, const file_set& names, const csv_style& style) {
     auto temp_path = [&](const char* name) { return temp + "/" + name; };
     auto final_path = [&](const char* name) { return dir + "/" + name; };
-    char text[256];
+    char text[512];  // eight doubles of at most 24 characters, seven commas
 
     {
         suite_file shapes(temp_path(names[0]), final_path(names[0]));
@@ -331,6 +346,16 @@ void write_suite_dir(const std::string& dir, bool dir_exists, const suites::suit
 }
 
 void write_suite_dir(const std::string& dir, bool dir_exists, const suites::pose_suite& s,
+                     const std::vector<oracle::contact>& truth, const csv_style& style) {
+    write_suite(dir, dir_exists, s, truth, pose_file_names, style);
+}
+
+void write_suite_dir(const std::string& dir, bool dir_exists, const accuracy::double_rect_suite& s,
+                     const std::vector<oracle::contact>& truth, const csv_style& style) {
+    write_suite(dir, dir_exists, s, truth, rect_file_names, style);
+}
+
+void write_suite_dir(const std::string& dir, bool dir_exists, const accuracy::double_pose_suite& s,
                      const std::vector<oracle::contact>& truth, const csv_style& style) {
     write_suite(dir, dir_exists, s, truth, pose_file_names, style);
 }

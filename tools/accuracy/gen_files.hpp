@@ -3,6 +3,7 @@
 // nothing, and a scene's poses one line each.
 #pragma once
 
+#include "accuracy/double_families.hpp"
 #include "io/output_target.hpp"
 
 #include <obbsat/oracle/contact.hpp>
@@ -33,6 +34,15 @@ void write_suite_dir(const std::string& dir, bool dir_exists, const suites::suit
                      const std::vector<oracle::contact>& truth, const csv_style& style);
 /// The same with poses.csv in place of rects.csv.
 void write_suite_dir(const std::string& dir, bool dir_exists, const suites::pose_suite& s,
+                     const std::vector<oracle::contact>& truth, const csv_style& style);
+
+/// The same for a double family (gen --precision double): rects.csv of
+/// doubles, each written as the shortest decimal that reads back to the same
+/// double (or %a with style.hex).
+void write_suite_dir(const std::string& dir, bool dir_exists, const accuracy::double_rect_suite& s,
+                     const std::vector<oracle::contact>& truth, const csv_style& style);
+/// The same with poses.csv of doubles.
+void write_suite_dir(const std::string& dir, bool dir_exists, const accuracy::double_pose_suite& s,
                      const std::vector<oracle::contact>& truth, const csv_style& style);
 
 /// The poses of a scene, one line each in `style`, handed to `out` a megabyte

@@ -1,5 +1,7 @@
 #include "cli/cli_args.hpp"
 
+#include <obbsat/collide64.hpp>
+
 #include <algorithm>
 #include <charconv>
 
@@ -179,6 +181,46 @@ method store_method_option(const parsed_options& options, const rectangle_input&
         throw usage_error("--method " + std::string(method_name(m)) + " does not run on " + store + " (--" +
                           input.option + "); the methods on " + store + " are " +
                           method_list(methods_on(input.kind)));
+    }
+    return m;
+}
+
+option_spec precision_option_spec() {
+    return {"precision", "P", "float or double: read and decide numbers as float32 or as double (default: float)"};
+}
+
+precision precision_option(const parsed_options& options) {
+    const auto word = options.value("precision");
+    if (!word || *word == "float") {
+        return precision::single;
+    }
+    if (*word == "double") {
+        return precision::double_;
+    }
+    throw usage_error("--precision: unknown precision '" + std::string(*word) + "' (expected float or double)");
+}
+
+const char* precision_name(precision p) { return p == precision::double_ ? "double" : "float"; }
+
+backend store_backend(const parsed_options& options, const rectangle_input& input, precision p, backend resolved) {
+    if (p != precision::double_ || input.kind != store_kind::corners) {
+        return resolved;
+    }
+    const backend asked = backend_option(options);
+    if (asked != backend::automatic && asked != backend::scalar) {
+        throw usage_error(std::string("--backend ") + backend_name(asked) +
+                          ": double corners (--rects with --precision double) run on the scalar backend only");
+    }
+    return backend::scalar;
+}
+
+method double_store_method_option(const parsed_options& options, const rectangle_input& input) {
+    const method m = method_option(options, input.kind == store_kind::corners ? method::exact : method::local);
+    if (!runs_on_doubles(m, input.kind)) {
+        const std::string store = store_name(input.kind);
+        throw usage_error("--method " + std::string(method_name(m)) + " does not run on " + store + " (--" +
+                          input.option + ") with --precision double; the methods on double " + store + " are " +
+                          method_list(methods_on_doubles(input.kind)));
     }
     return m;
 }

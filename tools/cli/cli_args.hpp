@@ -93,4 +93,28 @@ rectangle_input rectangle_option(const parsed_options& options);
 /// that does not run there, naming those that do (the library would refuse it at the first pair).
 method store_method_option(const parsed_options& options, const rectangle_input& input);
 
+/// The precision numbers are read and decided in: float (the float stores, the
+/// default) or double (the double stores, obbsat/collide64.hpp).
+enum class precision { single, double_ };
+
+/// The option spec of --precision, shared by the commands that take it.
+option_spec precision_option_spec();
+
+/// The --precision option (default float); throws usage_error for another word.
+precision precision_option(const parsed_options& options);
+
+/// "float" or "double".
+const char* precision_name(precision p);
+
+/// The --method option for the double store of `input` (default local on
+/// poses, exact on corners); throws usage_error, before any file is read, for a
+/// method that does not run on doubles, naming it, --precision double and the
+/// methods that do.
+method double_store_method_option(const parsed_options& options, const rectangle_input& input);
+
+/// The backend a command runs on: `resolved` (resolve_backend of --backend),
+/// except for double corners, which run on the scalar backend only: there an
+/// explicit --backend other than scalar is a usage error.
+backend store_backend(const parsed_options& options, const rectangle_input& input, precision p, backend resolved);
+
 }  // namespace obbsat::cli

@@ -16,6 +16,7 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
+#include <obbsat/collide64.hpp>
 #include <obbsat/method.hpp>
 
 #include <optional>
@@ -39,6 +40,7 @@ const std::vector<option_spec>& collide_option_specs() {
         {"threads", "N", "cores to split each chunk over, 0 for all (default: 1)"},
         {"method", "NAME", "collision test (default: sat4 on --rects, local on --poses)"},
         {"header", "", "start the output with the header line 'verdict'"},
+        precision_option_spec(),
         {"help", "", "show this help"},
     };
     return specs;
@@ -112,6 +114,7 @@ void print_collide_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat collide (--rects FILE | --poses FILE) --pairs FILE [--out FILE]\n"
                  "                      [--backend NAME] [--threads N] [--method NAME] [--header]\n"
+                 "                      [--precision float|double]\n"
                  "\n"
                  "Writes one line per pair, in pair order: 1 if the two rectangles collide\n"
                  "(touching counts), else 0. The rectangles come from --rects or --poses (one\n"
@@ -127,6 +130,16 @@ void print_collide_help(std::FILE* out) {
                  "  on --poses: %s\n",
                  method_list(methods_on(store_kind::corners)).c_str(),
                  method_list(methods_on(store_kind::poses)).c_str());
+    std::fprintf(out,
+                 "\n"
+                 "--precision double reads every number as a double (std::from_chars, strtod;\n"
+                 "decimal or hex) into the double stores and decides the pairs for those\n"
+                 "doubles, not for a float rounding of them (UTM metres, for one). Methods\n"
+                 "(default: exact on --rects, local on --poses; any other is an error):\n"
+                 "  on --rects: %s (scalar backend only)\n"
+                 "  on --poses: %s\n",
+                 method_list(methods_on_doubles(store_kind::corners)).c_str(),
+                 method_list(methods_on_doubles(store_kind::poses)).c_str());
     std::fprintf(out,
                  "\n"
                  "poses: 'cx,cy,hx,hy,c,s' is the rectangle with center (cx,cy), half extents\n"
@@ -152,7 +165,8 @@ void print_collide_help(std::FILE* out) {
                  "\n"
                  "example:\n"
                  "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt --threads 2\n"
-                 "  obbsat collide --poses poses.csv --pairs pairs.csv --method conservative\n");
+                 "  obbsat collide --poses poses.csv --pairs pairs.csv --method conservative\n"
+                 "  obbsat collide --poses utm.csv --pairs pairs.csv --precision double --method exact\n");
 }
 
 int run_collide(const arguments& args) {
@@ -164,14 +178,17 @@ int run_collide(const arguments& args) {
     if (input.path == "-" && pairs_path == "-") {
         throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
     }
+    const precision digits = precision_option(options);
     collide_options run;
-    run.test = store_method_option(options, input);
+    run.test = digits == precision::double_ ? double_store_method_option(options, input)
+                                            : store_method_option(options, input);
     if (const auto threads = options.value("threads")) {
         run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
     }
     // Resolved once, before any file is read, so a backend this CPU lacks (or
     // a bad OBBSAT_BACKEND) fails at once, and every chunk runs on the same one.
     run.use = resolve_backend(backend_option(options));
+    run.use = store_backend(options, input, digits, run.use);
 
     // Open everything before the long parse, so a missing file or an
     // unwritable --out is reported at once.
@@ -184,22 +201,30 @@ int run_collide(const arguments& args) {
     verdict_writer writer(output_option(options, "out"), options.has("header"));
 
     io::status_line status("obbsat collide");
-    std::string summary;
-    if (input.kind == store_kind::corners) {
-        const rect_records rects =
-            read_whole(rects_file, status, "rectangles", [](io::line_reader& lines, const io::record_progress& p) {
-                return io::read_rect_records(lines, UINT32_MAX, p);
-            });
-        const std::uint64_t pairs = collide_pair_file(rects, rects_file, pairs_file, run, writer, status);
-        summary = std::to_string(rects.size()) + " rectangles, " + std::to_string(pairs) + " pairs";
-    } else {
-        const pose_records poses =
-            read_whole(rects_file, status, "poses", [](io::line_reader& lines, const io::record_progress& p) {
-                return io::read_pose_records(lines, UINT32_MAX, p);
-            });
-        const std::uint64_t pairs = collide_pair_file(poses, rects_file, pairs_file, run, writer, status);
-        summary = std::to_string(poses.size()) + " poses, " + std::to_string(pairs) + " pairs";
-    }
+    // Reads the rectangle file whole with `read`, decides every pair over it
+    // and says what was done.
+    const auto decide = [&](const char* plural, auto read) {
+        const auto store = read_whole(rects_file, status, plural, read);
+        const std::uint64_t pairs = collide_pair_file(store, rects_file, pairs_file, run, writer, status);
+        return std::to_string(store.size()) + " " + plural + ", " + std::to_string(pairs) + " pairs";
+    };
+    using io::line_reader;
+    using io::record_progress;
+    const bool corners = input.kind == store_kind::corners;
+    const std::string summary =
+        digits == precision::double_
+            ? (corners ? decide("rectangles", [](line_reader& l, const record_progress& p) {
+                   return io::read_rect_records64(l, UINT32_MAX, p);
+               })
+                       : decide("poses", [](line_reader& l, const record_progress& p) {
+                             return io::read_pose_records64(l, UINT32_MAX, p);
+                         }))
+            : (corners ? decide("rectangles", [](line_reader& l, const record_progress& p) {
+                   return io::read_rect_records(l, UINT32_MAX, p);
+               })
+                       : decide("poses", [](line_reader& l, const record_progress& p) {
+                             return io::read_pose_records(l, UINT32_MAX, p);
+                         }));
     writer.finish();
     status.finish(summary);
     return exit_success;

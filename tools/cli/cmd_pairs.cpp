@@ -16,6 +16,8 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_pairs.hpp>
+#include <obbsat/pose_records64.hpp>
+#include <obbsat/rect_records64.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
 
@@ -28,6 +30,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <sys/stat.h>
@@ -49,6 +52,7 @@ const std::vector<option_spec>& pairs_option_specs() {
         {"threads", "N", "cores to split the query over, 0 for all (default: 1)"},
         {"out", "FILE", "write the pairs here, all or nothing (default: standard output)"},
         {"header", "", "start the output with the header line 'i,j'"},
+        {"precision", "P", "float (default) or double, once the scene query takes the double stores"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -106,15 +110,29 @@ io::record_progress reading(io::status_line& status, const io::input_file& file,
     };
 }
 
-void read_store(const io::input_file& file, rect_records& out, io::status_line& status) {
+// Every record of `file` into `out`: a float or (--precision double) a
+// double store of corners or of poses.
+template <class Store>
+void read_store(const io::input_file& file, Store& out, io::status_line& status) {
     io::line_reader lines(file.get(), file.name());
-    out = io::read_rect_records(lines, UINT32_MAX, reading(status, file, "rectangles"));
+    if constexpr (std::is_same_v<Store, rect_records>) {
+        out = io::read_rect_records(lines, UINT32_MAX, reading(status, file, "rectangles"));
+    } else if constexpr (std::is_same_v<Store, pose_records>) {
+        out = io::read_pose_records(lines, UINT32_MAX, reading(status, file, "poses"));
+    } else if constexpr (std::is_same_v<Store, rect_records64>) {
+        out = io::read_rect_records64(lines, UINT32_MAX, reading(status, file, "rectangles"));
+    } else {
+        static_assert(std::is_same_v<Store, pose_records64>, "a store the program reads");
+        out = io::read_pose_records64(lines, UINT32_MAX, reading(status, file, "poses"));
+    }
 }
 
-void read_store(const io::input_file& file, pose_records& out, io::status_line& status) {
-    io::line_reader lines(file.get(), file.name());
-    out = io::read_pose_records(lines, UINT32_MAX, reading(status, file, "poses"));
-}
+// True once the scene query takes `Store` (a box_view can be made of it). The
+// double stores are read above; the query is the other half, and until
+// box_view takes them `--precision double` is refused before any file is read.
+// When it does, the double path below is compiled in with no other change.
+template <class Store>
+constexpr bool scene_query_takes = std::is_constructible_v<box_view, const Store&>;
 
 // The colliding pairs grouped by first index: row i holds the j of every
 // pair (i, j), sorted, so the rows in order are find_pairs' sorted list.
@@ -198,6 +216,7 @@ struct side_files {
 
 // The colliding pairs of `first`, or across `first` and `against` (its
 // rects nullptr for none); the records are gone when the pairs come back.
+// Instantiated only for the stores the scene query takes.
 template <class Store>
 pair_rows pairs_of_files(const side_files& first, const side_files& against, const collide_options& run,
                          io::status_line& status, std::uint64_t& records) {
@@ -214,6 +233,41 @@ pair_rows pairs_of_files(const side_files& first, const side_files& against, con
     records += b.size();
     const box_view vb = with_filter_file(b, against.filters, *against.rects, b_filters);
     return pair_rows(a.size(), run, status, va, vb);
+}
+
+// The pairs of double files, through pairs_of_files once the scene query
+// takes the double store of `kind` (checked in run_pairs before any file is
+// read, so the throw below is never reached from there).
+template <class Store>
+pair_rows pairs_of_double_files(const side_files& first, const side_files& against, const collide_options& run,
+                                io::status_line& status, std::uint64_t& records) {
+    if constexpr (scene_query_takes<Store>) {
+        return pairs_of_files<Store>(first, against, run, status, records);
+    } else {
+        throw std::logic_error("the scene query does not take this double store");
+    }
+}
+
+pair_rows double_pairs_of_files(store_kind kind, const side_files& first, const side_files& against,
+                                const collide_options& run, io::status_line& status, std::uint64_t& records) {
+    return kind == store_kind::corners ? pairs_of_double_files<rect_records64>(first, against, run, status, records)
+                                       : pairs_of_double_files<pose_records64>(first, against, run, status, records);
+}
+
+// The method check of require_method_on for a double store, once the query takes it.
+template <class Store>
+void require_method_on_double(const collide_options& run) {
+    if constexpr (scene_query_takes<Store>) {
+        require_method_on<Store>(run);
+    }
+}
+
+void require_double_method_on(store_kind kind, const collide_options& run) {
+    if (kind == store_kind::corners) {
+        require_method_on_double<rect_records64>(run);
+    } else {
+        require_method_on_double<pose_records64>(run);
+    }
 }
 
 // Writes "i,j\n" per pair, formatted by to_chars into a buffer handed out a
@@ -328,6 +382,13 @@ int run_pairs(const arguments& args) {
         throw usage_error("--" + input.option + " and --" + against->option +
                           " cannot both read standard input ('-')");
     }
+    const bool doubles = precision_option(options) == precision::double_;
+    if (doubles && !(input.kind == store_kind::corners ? scene_query_takes<rect_records64>
+                                                       : scene_query_takes<pose_records64>)) {
+        throw usage_error("--precision double: not yet available for 'obbsat pairs' (the scene query runs on "
+                          "float stores only); for double input list the candidate pairs and use "
+                          "'obbsat collide --precision double'");
+    }
     const std::optional<std::string_view> out_path = output_option(options, "out");
     collide_options run;
     run.test = method_option(options, method::exact);
@@ -337,7 +398,9 @@ int run_pairs(const arguments& args) {
     // Resolved once, before any file is read, so a backend this CPU lacks (or
     // a bad OBBSAT_BACKEND) fails at once.
     run.use = resolve_backend(backend_option(options));
-    if (input.kind == store_kind::corners) {
+    if (doubles) {
+        require_double_method_on(input.kind, run);
+    } else if (input.kind == store_kind::corners) {
         require_method_on<rect_records>(run);
     } else {
         require_method_on<pose_records>(run);
@@ -375,7 +438,8 @@ int run_pairs(const arguments& args) {
     const side_files second{against_file ? &*against_file : nullptr,
                             against_filters_file ? &*against_filters_file : nullptr};
     std::uint64_t records = 0;
-    const pair_rows pairs = input.kind == store_kind::corners
+    const pair_rows pairs = doubles ? double_pairs_of_files(input.kind, first, second, run, status, records)
+                            : input.kind == store_kind::corners
                                 ? pairs_of_files<rect_records>(first, second, run, status, records)
                                 : pairs_of_files<pose_records>(first, second, run, status, records);
     if (status.due()) {

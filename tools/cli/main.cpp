@@ -76,7 +76,8 @@ void print_main_help(std::FILE* out) {
                  "example:\n"
                  "  obbsat collide --rects rects.csv --pairs pairs.csv --out verdicts.txt\n"
                  "  obbsat collide --poses poses.csv --pairs pairs.csv\n"
-                 "  obbsat pairs --poses poses.csv --out colliding.csv\n");
+                 "  obbsat pairs --poses poses.csv --out colliding.csv\n"
+                 "  obbsat collide --poses utm.csv --pairs pairs.csv --precision double\n");
 }
 
 void report(const std::string& message) { std::fprintf(stderr, "obbsat: %s\n", message.c_str()); }

@@ -14,9 +14,12 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
+#include <obbsat/collide64.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
+#include <obbsat/oracle/contact64.hpp>
 #include <obbsat/oracle/pose_contact.hpp>
+#include <obbsat/oracle/pose_contact64.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -47,6 +50,7 @@ const std::vector<option_spec>& draw_option_specs() {
         {"out", "FILE", "the SVG file to write, all or nothing (required)"},
         {"method", "NAME", method_help},
         {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
+        precision_option_spec(),
         {"help", "", "show this help"},
     };
     return specs;
@@ -191,12 +195,34 @@ std::string picture(std::size_t count, method m, backend ran, const std::string&
     return out.finish();
 }
 
+// The picture of the chosen pairs of the file `rects_file`, read whole by
+// `read` into a store, each pair decided by the library on it and drawn as a
+// `Drawing` (svg_pair_panel.hpp) with the exact class of its kind of pair.
+template <class Drawing, class Read>
+std::string picture_of_file(Read read, const io::input_file& rects_file, const io::input_file& pairs_file,
+                            const std::vector<std::uint64_t>& chosen, const collide_options& run) {
+    const auto store = [&] {
+        io::line_reader lines(rects_file.get(), rects_file.name());
+        return read(lines);
+    }();
+    const std::vector<pair_index> pairs = read_chosen_pairs(pairs_file, store.size(), rects_file.name(), chosen);
+    std::vector<std::uint8_t> verdicts(pairs.size());
+    const backend ran = collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), run);
+    return picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
+        Drawing pair{chosen[i], pairs[i],  store[pairs[i].a], store[pairs[i].b],
+                     run.test,  verdicts[i] != 0, oracle::contact::separated};
+        pair.exact = oracle::classify(pair.a, pair.b);
+        return pair;
+    });
+}
+
 }  // namespace
 
 void print_draw_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat draw (--rects FILE | --poses FILE) --pairs FILE --select LIST\n"
                  "                   --out FILE.svg [--method NAME] [--backend NAME]\n"
+                 "                   [--precision float|double]\n"
                  "\n"
                  "Draws the chosen pairs as an SVG picture, one panel per pair: both rectangles\n"
                  "(A blue, B purple), the four axes of the method's test through the pair's\n"
@@ -213,6 +239,13 @@ void print_draw_help(std::FILE* out) {
                  "extent is the pose's centre plus or minus its reach on the axis; the exact\n"
                  "class is the pose oracle's, and the caption lists the poses as hex floats.\n"
                  "The methods on each kind of file are those of obbsat collide.\n"
+                 "\n"
+                 "With --precision double, the file is read in double (as 'obbsat collide\n"
+                 "--precision double' reads it) and the double methods decide; each panel is\n"
+                 "measured from the pair's own origin (A's centre, or A's UL corner), so pairs\n"
+                 "at UTM or larger coordinates draw as well as pairs at the origin, and an\n"
+                 "inset measures its width in double ulps. The exact class is the double\n"
+                 "oracle's; the caption lists the doubles as hex floats.\n"
                  "\n"
                  "options:\n");
     print_options(out, draw_option_specs());
@@ -237,9 +270,12 @@ int run_draw(const arguments& args) {
     const std::string pairs_path(options.required("pairs"));
     const std::vector<std::uint64_t> chosen = parse_selection(options.required("select"));
     const std::string out_path(*output_option(options, "out", true));
+    const precision digits = precision_option(options);
     collide_options run;
-    run.test = store_method_option(options, input);
+    run.test = digits == precision::double_ ? double_store_method_option(options, input)
+                                            : store_method_option(options, input);
     run.use = resolve_backend(backend_option(options));
+    run.use = store_backend(options, input, digits, run.use);
 
     const io::input_file rects_file(input.path);
     const io::input_file pairs_file(pairs_path);
@@ -249,50 +285,19 @@ int run_draw(const arguments& args) {
     }
     io::atomic_output output(out_path);
 
-    std::string text;
-    if (input.kind == store_kind::corners) {
-        rect_records rects;
-        {
-            io::line_reader lines(rects_file.get(), rects_file.name());
-            rects = io::read_rect_records(lines);
-        }
-        const std::vector<pair_index> pairs =
-            read_chosen_pairs(pairs_file, rects.size(), rects_file.name(), chosen);
-        std::vector<std::uint8_t> verdicts(pairs.size());
-        const backend ran = collide_pairs(rects, pairs.data(), pairs.size(), verdicts.data(), run);
-        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
-            svg::pair_drawing pair{};
-            pair.pair_number = chosen[i];
-            pair.rects = pairs[i];
-            pair.a = rects[pairs[i].a];
-            pair.b = rects[pairs[i].b];
-            pair.test = run.test;
-            pair.collides = verdicts[i] != 0;
-            pair.exact = oracle::classify(pair.a, pair.b);
-            return pair;
-        });
-    } else {
-        pose_records poses;
-        {
-            io::line_reader lines(rects_file.get(), rects_file.name());
-            poses = io::read_pose_records(lines);
-        }
-        const std::vector<pair_index> pairs =
-            read_chosen_pairs(pairs_file, poses.size(), rects_file.name(), chosen);
-        std::vector<std::uint8_t> verdicts(pairs.size());
-        const backend ran = collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), run);
-        text = picture(pairs.size(), run.test, ran, rects_file.name(), pairs_file.name(), [&](std::size_t i) {
-            svg::pose_pair_drawing pair{};
-            pair.pair_number = chosen[i];
-            pair.poses = pairs[i];
-            pair.a = poses[pairs[i].a];
-            pair.b = poses[pairs[i].b];
-            pair.test = run.test;
-            pair.collides = verdicts[i] != 0;
-            pair.exact = oracle::classify(pair.a, pair.b);
-            return pair;
-        });
-    }
+    // The panels of each kind of file: the drawing types list their fields in
+    // one order (pair number, indices, A, B, method, verdict, exact class).
+    const auto draw = [&](auto drawing, auto read) {
+        return picture_of_file<decltype(drawing)>(read, rects_file, pairs_file, chosen, run);
+    };
+    const std::string text =
+        digits == precision::double_
+            ? (input.kind == store_kind::corners
+                   ? draw(svg::rect64_pair_drawing{}, [](io::line_reader& l) { return io::read_rect_records64(l); })
+                   : draw(svg::pose64_pair_drawing{}, [](io::line_reader& l) { return io::read_pose_records64(l); }))
+            : (input.kind == store_kind::corners
+                   ? draw(svg::pair_drawing{}, [](io::line_reader& l) { return io::read_rect_records(l); })
+                   : draw(svg::pose_pair_drawing{}, [](io::line_reader& l) { return io::read_pose_records(l); }));
     output.write(text.data(), text.size());
     output.commit();
     return exit_success;

@@ -232,17 +232,28 @@ double float_spacing(double magnitude) {
     return std::ldexp(1.0, exponent - 24);
 }
 
+double double_spacing(double magnitude) {
+    if (!(magnitude >= 0x1p-1022)) {
+        return 0x1p-1074;
+    }
+    int exponent = 0;
+    std::frexp(magnitude, &exponent);
+    return std::ldexp(1.0, exponent - 53);
+}
+
 namespace {
 
-// The float spacing at `p`, a point measured from the world point `origin`.
-double spacing_at(world_point origin, world_point p) {
-    return float_spacing(std::max(std::fabs(origin.x + p.x), std::fabs(origin.y + p.y)));
+// The spacing of `values` at `p`, a point measured from the world point `origin`.
+double spacing_at(world_point origin, world_point p, value_type values) {
+    const double magnitude = std::max(std::fabs(origin.x + p.x), std::fabs(origin.y + p.y));
+    return values == value_type::float64 ? double_spacing(magnitude) : float_spacing(magnitude);
 }
 
 template <class Corner>
 contact_view contact_of(const std::array<Corner, 4>& fa, const std::array<Corner, 4>& fb, oracle::contact exact,
-                        world_point origin) {
+                        world_point origin, value_type values) {
     contact_view view;
+    view.ulp_name = values == value_type::float64 ? "double" : "float";
     double x_min = HUGE_VAL, x_max = -HUGE_VAL, y_min = HUGE_VAL, y_max = -HUGE_VAL;
     for (const auto* quad : {&fa, &fb}) {
         for (const Corner& corner : *quad) {
@@ -257,7 +268,7 @@ contact_view contact_of(const std::array<Corner, 4>& fa, const std::array<Corner
     view.size = std::max(x_max - x_min, y_max - y_min);
     if (view.size == 0.0) {
         // Eight equal corners: show a few ulps around them.
-        view.size = inset_min_ulps * spacing_at(origin, view.center);
+        view.size = inset_min_ulps * spacing_at(origin, view.center, values);
     }
 
     const outline_geometry geometry(view.center);
@@ -291,7 +302,7 @@ contact_view contact_of(const std::array<Corner, 4>& fa, const std::array<Corner
         const vec middle = 0.5 * (best.on_a + best.on_b);
         view.inset_center = geometry.absolute(middle);
         const double measure = view.outlines_meet ? view.depth : view.distance;
-        view.inset_ulp = spacing_at(origin, view.inset_center);
+        view.inset_ulp = spacing_at(origin, view.inset_center, values);
         view.inset_span = std::max(inset_gaps_across * measure, inset_min_ulps * view.inset_ulp);
         view.has_inset = view.inset_span * inset_min_zoom <= view.size;
     }
@@ -301,12 +312,12 @@ contact_view contact_of(const std::array<Corner, 4>& fa, const std::array<Corner
 }  // namespace
 
 contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact) {
-    return contact_of(corners_of(a), corners_of(b), exact, world_point{0.0, 0.0});
+    return contact_of(corners_of(a), corners_of(b), exact, world_point{0.0, 0.0}, value_type::float32);
 }
 
 contact_view view_of_contact(const std::array<world_point, 4>& a, const std::array<world_point, 4>& b,
-                             oracle::contact exact, world_point origin) {
-    return contact_of(a, b, exact, origin);
+                             oracle::contact exact, world_point origin, value_type values) {
+    return contact_of(a, b, exact, origin, values);
 }
 
 }  // namespace obbsat::svg

@@ -38,8 +38,12 @@ struct contact_view {
     bool has_inset = false;  ///< the closest features are too close to see at the pair's scale
     world_point inset_center;
     double inset_span = 0;  ///< side of the square region the inset shows
-    double inset_ulp = 0;   ///< the float spacing at the inset's centre, in the world
+    double inset_ulp = 0;   ///< the float (or double) spacing at the inset's centre, in the world
+    const char* ulp_name = "float";  ///< which spacing inset_ulp is: "float" or "double"
 };
+
+/// The numbers a pair is given in, which set the spacing an inset measures in.
+enum class value_type { float32, float64 };
 
 /// A contact is grazing when the outline distance, or the overlap depth of
 /// outlines that meet, is below this fraction of the pair's size.
@@ -51,10 +55,15 @@ contact_view view_of_contact(const rect& a, const rect& b, oracle::contact exact
 /// The same for two quads whose corners (in order around each) are given in
 /// double, measured from the world point `origin`; the view's points are
 /// measured from it too, and its float spacings are those at origin + point.
+/// With `values` float64 (the double pairs of --precision double), the
+/// spacings are double's.
 contact_view view_of_contact(const std::array<world_point, 4>& a, const std::array<world_point, 4>& b,
-                             oracle::contact exact, world_point origin);
+                             oracle::contact exact, world_point origin, value_type values = value_type::float32);
 
 /// The spacing of float values near `magnitude` (the float ulp there).
 double float_spacing(double magnitude);
+
+/// The spacing of double values near `magnitude` (the double ulp there).
+double double_spacing(double magnitude);
 
 }  // namespace obbsat::svg

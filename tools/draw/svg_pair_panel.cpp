@@ -1,5 +1,7 @@
 #include "draw/svg_pair_panel.hpp"
 
+#include "draw/svg_double_axes.hpp"
+
 #include "draw/svg_pair_axes.hpp"
 #include "draw/svg_pair_contact.hpp"
 #include "draw/svg_pose_axes.hpp"
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace obbsat::svg {
@@ -51,10 +54,13 @@ outline outline_of(const rect& r) {
     return o;
 }
 
-// The corners of pose `p` in double, measured from `origin`, in the order of
-// ref::corners_of (UL, UR, LR, LL): each product of two floats is exact, each
-// corner two roundings from the pose's own, whatever the pose's scale.
-outline outline_of(const rect_pose& p, world_point origin) {
+// The corners of pose `p` (a rect_pose or a rect_pose64) in double, measured
+// from `origin`, in the order of ref::corners_of (UL, UR, LR, LL): the centre
+// difference first (exact for nearby values), then the rotated half extents;
+// for float poses each product of two floats is exact, so each corner is two
+// roundings from the pose's own, whatever the pose's scale.
+template <class Pose>
+outline outline_of_pose(const Pose& p, world_point origin) {
     const double cx = static_cast<double>(p.center.x) - origin.x;
     const double cy = static_cast<double>(p.center.y) - origin.y;
     const double hx = p.half_extents.x, hy = p.half_extents.y;
@@ -65,6 +71,16 @@ outline outline_of(const rect_pose& p, world_point origin) {
                      {(cx + ux) - vx, (cy + uy) - vy},
                      {(cx - ux) - vx, (cy - uy) - vy}}},
                    false};
+}
+
+// The corners of double quad `r` measured from `origin`, named UL UR LR LL.
+outline outline_of(const rect64& r, world_point origin) {
+    outline o{{}, true};
+    const std::array<point64, 4> corners = {r.ul, r.ur, r.lr, r.ll};
+    for (std::size_t i = 0; i < 4; ++i) {
+        o.corners[i] = world_point{corners[i].x - origin.x, corners[i].y - origin.y};
+    }
+    return o;
 }
 
 // Everything a panel draws, whatever kind of pair it shows.
@@ -444,7 +460,7 @@ void draw_inset(writer& out, const panel_content& pair, const method_view& axes,
                "#111", "start");
     draw_label(out, svg_point{w.left + 5, w.top + 21}, "width " + format("%.3g", contact.inset_span) + " = " +
                    format("%.3g", contact.inset_span / contact.inset_ulp) +
-                   " float ulps there", 8,
+                   " " + contact.ulp_name + " ulps there", 8,
                "#333", "start");
     const std::string measure =
         contact.outlines_meet
@@ -596,12 +612,13 @@ void draw_panel(writer& out, const panel_content& pair, double left, double top)
 
 // The shape of a pose in words, when it has no area or its rotation vector
 // scales it noticeably; empty otherwise.
-std::string pose_remark(const std::string& name, const rect_pose& p) {
+template <class Pose>
+std::string pose_remark(const std::string& name, const Pose& p) {
     std::string shape;
-    if (p.half_extents.x == 0.0f && p.half_extents.y == 0.0f) {
+    if (p.half_extents.x == 0 && p.half_extents.y == 0) {
         shape = name + " is a point (hx = hy = 0)";
-    } else if (p.half_extents.x == 0.0f || p.half_extents.y == 0.0f) {
-        shape = name + " is a segment (" + (p.half_extents.x == 0.0f ? "hx" : "hy") + " = 0)";
+    } else if (p.half_extents.x == 0 || p.half_extents.y == 0) {
+        shape = name + " is a segment (" + (p.half_extents.x == 0 ? "hx" : "hy") + " = 0)";
     }
     const double length = std::hypot(static_cast<double>(p.rotation.x), static_cast<double>(p.rotation.y));
     if (std::fabs(length - 1.0) <= 1e-3) {
@@ -614,6 +631,21 @@ std::string pose_remark(const std::string& name, const rect_pose& p) {
 std::string hex_pose(const rect_pose& p) {
     return hex_float(p.center.x) + "," + hex_float(p.center.y) + "," + hex_float(p.half_extents.x) + "," +
            hex_float(p.half_extents.y) + "," + hex_float(p.rotation.x) + "," + hex_float(p.rotation.y);
+}
+
+std::string hex_double(double value) { return format("%a", value); }
+
+std::string hex_pose(const rect_pose64& p) {
+    return hex_double(p.center.x) + "," + hex_double(p.center.y) + "," + hex_double(p.half_extents.x) + "," +
+           hex_double(p.half_extents.y) + "," + hex_double(p.rotation.x) + "," + hex_double(p.rotation.y);
+}
+
+std::string hex_rect(const rect64& r) {
+    std::string out;
+    for (const point64& c : {r.ul, r.ur, r.lr, r.ll}) {
+        out += (out.empty() ? "" : ",") + hex_double(c.x) + "," + hex_double(c.y);
+    }
+    return out;
 }
 
 }  // namespace
@@ -642,19 +674,35 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     draw_panel(out, content, left, top);
 }
 
-void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top) {
+namespace {
+
+// The pose test's view of a float or a double pose pair.
+method_view view_of_poses(method m, const rect_pose& a, const rect_pose& b, bool collides) {
+    return view_of_pose_method(m, a, b, collides);
+}
+
+method_view view_of_poses(method m, const rect_pose64& a, const rect_pose64& b, bool collides) {
+    return view_of_pose64_method(m, a, b, collides);
+}
+
+// The panel of a pair of float or double poses.
+template <class PoseDrawing>
+void draw_pose_pair_panel(writer& out, const PoseDrawing& pair, double left, double top) {
+    constexpr bool doubles = std::is_same_v<decltype(PoseDrawing::a), rect_pose64>;
     // Everything is measured from A's centre, where the axes' scalars start.
     const world_point origin{pair.a.center.x, pair.a.center.y};
     panel_content content{};
     content.pair_number = pair.pair_number;
-    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b);
+    content.members = "A = pose " + std::to_string(pair.poses.a) + ", B = pose " + std::to_string(pair.poses.b) +
+                      (doubles ? ", doubles" : "");
     content.test = pair.test;
     content.collides = pair.collides;
     content.exact = pair.exact;
-    content.a = outline_of(pair.a, origin);
-    content.b = outline_of(pair.b, origin);
-    content.axes = view_of_pose_method(pair.test, pair.a, pair.b, pair.collides);
-    content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin);
+    content.a = outline_of_pose(pair.a, origin);
+    content.b = outline_of_pose(pair.b, origin);
+    content.axes = view_of_poses(pair.test, pair.a, pair.b, pair.collides);
+    content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin,
+                                      doubles ? value_type::float64 : value_type::float32);
     for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
         if (!remark.empty()) {
             content.remarks.push_back(remark);
@@ -662,6 +710,35 @@ void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, do
     }
     content.caption_a = "A pose " + std::to_string(pair.poses.a) + ": " + hex_pose(pair.a);
     content.caption_b = "B pose " + std::to_string(pair.poses.b) + ": " + hex_pose(pair.b);
+    draw_panel(out, content, left, top);
+}
+
+}  // namespace
+
+void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top) {
+    draw_pose_pair_panel(out, pair, left, top);
+}
+
+void draw_pair_panel(writer& out, const pose64_pair_drawing& pair, double left, double top) {
+    draw_pose_pair_panel(out, pair, left, top);
+}
+
+void draw_pair_panel(writer& out, const rect64_pair_drawing& pair, double left, double top) {
+    const world_point origin{pair.a.ul.x, pair.a.ul.y};
+    panel_content content{};
+    content.pair_number = pair.pair_number;
+    content.members = "A = rect " + std::to_string(pair.rects.a) + ", B = rect " + std::to_string(pair.rects.b) +
+                      ", doubles";
+    content.test = pair.test;
+    content.collides = pair.collides;
+    content.exact = pair.exact;
+    content.a = outline_of(pair.a, origin);
+    content.b = outline_of(pair.b, origin);
+    content.axes = view_of_rect64_method(pair.test, pair.a, pair.b, pair.collides, origin);
+    content.contact =
+        view_of_contact(content.a.corners, content.b.corners, pair.exact, origin, value_type::float64);
+    content.caption_a = "A rect " + std::to_string(pair.rects.a) + ": " + hex_rect(pair.a);
+    content.caption_b = "B rect " + std::to_string(pair.rects.b) + ": " + hex_rect(pair.b);
     draw_panel(out, content, left, top);
 }
 

@@ -25,7 +25,9 @@
 #include <obbsat/method.hpp>
 #include <obbsat/oracle/contact.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 
 #include <cstdint>
 #include <string>
@@ -63,6 +65,28 @@ struct pose_pair_drawing {
     oracle::contact exact;  ///< the exact class, by the pose oracle
 };
 
+/// Everything a panel shows about one pair of double poses (--precision double).
+struct pose64_pair_drawing {
+    std::uint64_t pair_number;
+    pair_index poses;
+    rect_pose64 a;
+    rect_pose64 b;
+    method test;
+    bool collides;
+    oracle::contact exact;  ///< by the double pose oracle
+};
+
+/// Everything a panel shows about one pair of double corners (--precision double).
+struct rect64_pair_drawing {
+    std::uint64_t pair_number;
+    pair_index rects;
+    rect64 a;
+    rect64 b;
+    method test;
+    bool collides;
+    oracle::contact exact;  ///< by the double oracle
+};
+
 /// "collide" or "apart".
 const char* verdict_word(bool collides);
 
@@ -71,5 +95,14 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
 
 /// Draws the panel of a pair of poses with its top-left corner at (left, top).
 void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, double top);
+
+/// Draws the panel of a pair of double poses, measured from A's centre (a
+/// double), so that poses at UTM or larger coordinates keep their shape and a
+/// gap of a few double ulps still gets its inset; the caption lists the doubles
+/// as hex floats.
+void draw_pair_panel(writer& out, const pose64_pair_drawing& pair, double left, double top);
+
+/// Draws the panel of a pair of double corners, measured from A's UL corner.
+void draw_pair_panel(writer& out, const rect64_pair_drawing& pair, double left, double top);
 
 }  // namespace obbsat::svg

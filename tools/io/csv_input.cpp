@@ -108,12 +108,14 @@ std::string field_label(std::size_t index, const char* name) {
 
 // The common number, read by std::from_chars: a decimal float, or a C99 hex
 // float "0x..." ("-0x...", "0X..."), consumed whole and finite. Anything else
-// (a '+', an infinity, a NaN, a value beyond float range or one that
+// (a '+', an infinity, a NaN, a value beyond the type's range or one that
 // underflows, text that is not a number) returns false and takes the strtof
-// path below, which accepts and refuses exactly as before and gives the
-// precise error. On the forms both read, both round correctly to nearest, so
-// they give the same float; tests/cli/test_csv_input.cpp checks it.
-bool parse_plain_number(std::string_view field, float& out) {
+// (strtod) path below, which accepts and refuses exactly as before and gives
+// the precise error. On the forms both read, both round correctly to nearest,
+// so they give the same value; tests/cli/test_csv_input.cpp checks it. `Real`
+// is float (the float stores) or double (--precision double).
+template <class Real>
+bool parse_plain_number(std::string_view field, Real& out) {
     const char* const first = field.data();
     const char* const last = first + field.size();
     const char* digits = first;
@@ -121,7 +123,7 @@ bool parse_plain_number(std::string_view field, float& out) {
     if (negative) {
         ++digits;
     }
-    float value = 0.0f;
+    Real value = 0;
     std::from_chars_result result{};
     if (last - digits > 2 && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
         // from_chars reads hex without its prefix, and would take a sign
@@ -142,10 +144,19 @@ bool parse_plain_number(std::string_view field, float& out) {
     return true;
 }
 
-// The float in `field`, the field at 0-based `index` called `name`: every
-// number of the rectangle and pose files is read here.
-float parse_number(std::string_view field, std::size_t index, const char* name, const line_reader& where) {
-    float plain = 0.0f;
+// strtof or strtod, as the type read asks.
+float parse_c_number(const char* text, char** stop, float) { return std::strtof(text, stop); }
+double parse_c_number(const char* text, char** stop, double) { return std::strtod(text, stop); }
+
+const char* range_text(float) { return "float range (magnitude above 3.40282347e+38)"; }
+const char* range_text(double) { return "double range (magnitude above 1.7976931348623157e+308)"; }
+
+// The number in `field`, the field at 0-based `index` called `name`: every
+// number of the rectangle and pose files is read here, as a float or (for
+// the double stores) a double.
+template <class Real>
+Real parse_number(std::string_view field, std::size_t index, const char* name, const line_reader& where) {
+    Real plain = 0;
     if (parse_plain_number(field, plain)) {
         return plain;
     }
@@ -166,20 +177,19 @@ float parse_number(std::string_view field, std::size_t index, const char* name, 
     }
     char* stop = nullptr;
     errno = 0;
-    const float value = std::strtof(text, &stop);
+    const Real value = parse_c_number(text, &stop, Real{});
     const int parse_errno = errno;
     if (stop != text + field.size()) {
         where.fail(field_label(index, name) + ": " + quoted(field) + " is not a number");
     }
     if (std::isinf(value) && parse_errno == ERANGE) {
-        where.fail(field_label(index, name) + ": " + quoted(field) +
-                   " is out of float range (magnitude above 3.40282347e+38)");
+        where.fail(field_label(index, name) + ": " + quoted(field) + " is out of " + range_text(Real{}));
     }
     if (!std::isfinite(value)) {
         where.fail(field_label(index, name) + ": " + quoted(field) + " is not finite");
     }
     // ERANGE with a finite result is underflow: the value rounded to a
-    // subnormal or to zero, which is a valid float, so it is accepted.
+    // subnormal or to zero, which is a valid number, so it is accepted.
     return value;
 }
 
@@ -428,44 +438,87 @@ bool is_header_line(std::string_view line, const line_reader& where, std::initia
     return false;
 }
 
-rect parse_rect_line(std::string_view line, const line_reader& where) {
+namespace {
+
+// The eight corner coordinates of a line, as `Real`.
+template <class Real>
+std::array<Real, coord_count> corner_values(std::string_view line, const line_reader& where) {
     const auto fields = split_fields<coord_count>(line, where, "ulx,uly,urx,ury,lrx,lry,llx,lly");
-    float v[coord_count];
+    std::array<Real, coord_count> v{};
     for (std::size_t k = 0; k < coord_count; ++k) {
-        v[k] = parse_number(fields[k], k, coord_name(static_cast<coord>(k)), where);
+        v[k] = parse_number<Real>(fields[k], k, coord_name(static_cast<coord>(k)), where);
     }
-    return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+    return v;
 }
 
-rect_pose parse_pose_line(std::string_view line, const line_reader& where) {
+// A pose line's values as `Real`: cx, cy, hx, hy and either c, s (`count` 6)
+// or the angle (`count` 5), with the half extents and the rotation vector
+// checked; the pose is built by the caller, who knows how to turn an angle.
+template <class Real>
+struct pose_values {
+    std::array<Real, 6> v{};
+    std::size_t count = 0;
+};
+
+template <class Real>
+pose_values<Real> pose_line_values(std::string_view line, const line_reader& where) {
     // Field 5 is the angle on a line of five fields, c on a line of six.
     constexpr const char* names[6] = {"cx", "cy", "hx", "hy", "c", "s"};
     std::array<std::string_view, 6> fields;
-    const std::size_t count = split_at_commas(line, fields);
-    if (count != 5 && count != 6) {
-        fail_field_count(where, "5 or 6", "cx,cy,hx,hy,angle or cx,cy,hx,hy,c,s", count);
+    pose_values<Real> out;
+    out.count = split_at_commas(line, fields);
+    if (out.count != 5 && out.count != 6) {
+        fail_field_count(where, "5 or 6", "cx,cy,hx,hy,angle or cx,cy,hx,hy,c,s", out.count);
     }
-    const bool has_angle = count == 5;
-    float v[6] = {};  // the first `count` are set below
-    for (std::size_t k = 0; k < count; ++k) {
+    const bool has_angle = out.count == 5;
+    for (std::size_t k = 0; k < out.count; ++k) {
         const char* name = has_angle && k == 4 ? "angle" : names[k];
-        v[k] = parse_number(fields[k], k, name, where);
+        out.v[k] = parse_number<Real>(fields[k], k, name, where);
         // -0 and values that round to -0 are zero, and accepted.
-        if ((k == 2 || k == 3) && v[k] < 0.0f) {
+        if ((k == 2 || k == 3) && out.v[k] < 0) {
             where.fail(field_label(k, name) + ": " + quoted(fields[k]) +
                        " is negative (a half extent must be >= 0)");
         }
     }
-    const point center{v[0], v[1]};
-    const point half_extents{v[2], v[3]};
-    if (has_angle) {
-        return rect_pose_of(pose{center, half_extents, v[4]});
-    }
-    if (v[4] == 0.0f && v[5] == 0.0f) {
+    if (!has_angle && out.v[4] == 0 && out.v[5] == 0) {
         where.fail("fields 5 and 6 (c, s): " + quoted(fields[4]) + ", " + quoted(fields[5]) +
                    " make the rotation vector (0, 0), which has no direction");
     }
-    return rect_pose{center, half_extents, point{v[4], v[5]}};
+    return out;
+}
+
+}  // namespace
+
+rect parse_rect_line(std::string_view line, const line_reader& where) {
+    const auto v = corner_values<float>(line, where);
+    return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+}
+
+rect64 parse_rect64_line(std::string_view line, const line_reader& where) {
+    const auto v = corner_values<double>(line, where);
+    return rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+}
+
+rect_pose parse_pose_line(std::string_view line, const line_reader& where) {
+    const pose_values<float> p = pose_line_values<float>(line, where);
+    const point center{p.v[0], p.v[1]};
+    const point half_extents{p.v[2], p.v[3]};
+    if (p.count == 5) {
+        return rect_pose_of(pose{center, half_extents, p.v[4]});
+    }
+    return rect_pose{center, half_extents, point{p.v[4], p.v[5]}};
+}
+
+rect_pose64 parse_pose64_line(std::string_view line, const line_reader& where) {
+    const pose_values<double> p = pose_line_values<double>(line, where);
+    const point64 center{p.v[0], p.v[1]};
+    const point64 half_extents{p.v[2], p.v[3]};
+    if (p.count == 5) {
+        // (cos, sin) of a finite angle is never (0, 0): cos and sin are not
+        // both zero, rounded or not.
+        return rect_pose64{center, half_extents, point64{std::cos(p.v[4]), std::sin(p.v[4])}};
+    }
+    return rect_pose64{center, half_extents, point64{p.v[4], p.v[5]}};
 }
 
 pair_index parse_pair_line(std::string_view line, const line_reader& where,
@@ -532,6 +585,16 @@ rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects, cons
 pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses, const record_progress& progress) {
     return read_records<pose_records>(lines, max_poses, "poses", {pose_header, pose_angle_header}, "pose",
                                       progress, parse_pose_line);
+}
+
+rect_records64 read_rect_records64(line_reader& lines, std::uint64_t max_rects, const record_progress& progress) {
+    return read_records<rect_records64>(lines, max_rects, "rectangles", {rect_header}, "rectangle", progress,
+                                        parse_rect64_line);
+}
+
+pose_records64 read_pose_records64(line_reader& lines, std::uint64_t max_poses, const record_progress& progress) {
+    return read_records<pose_records64>(lines, max_poses, "poses", {pose_header, pose_angle_header}, "pose",
+                                        progress, parse_pose64_line);
 }
 
 rect_soa read_rects_file(const std::string& path) {

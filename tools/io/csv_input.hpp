@@ -22,15 +22,23 @@
 //     rect_pose_of(const pose&)); the two kinds of line may be mixed. Numbers
 //     as in the rectangle file; a half extent below zero (-0 is zero) and a
 //     rotation vector (0, 0) are rejected.
+//   - With --precision double, the same files are read into the double
+//     stores (obbsat/rect_records64.hpp, pose_records64.hpp): every number as
+//     std::from_chars or strtod reads it (decimal or hex), a value beyond
+//     double range is rejected, and the same checks apply.
 //   - Pair file: 2 fields i,j, each an unsigned decimal index below the number
 //     of rectangles or poses (so at most 4294967294).
 // Line numbers count every line of the file from 1, skipped lines included.
 #pragma once
 
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 #include <obbsat/rect_soa.hpp>
 
 #include <cstddef>
@@ -163,6 +171,16 @@ rect parse_rect_line(std::string_view line, const line_reader& where);
 /// The pose on one line (5 or 6 fields); throws input_error through `where`.
 rect_pose parse_pose_line(std::string_view line, const line_reader& where);
 
+/// The rectangle on one line read in double (--precision double): every
+/// number as std::from_chars or strtod reads it, so decimal text with more
+/// digits than a float holds keeps them; a value beyond double range is an
+/// error. Throws input_error through `where`.
+rect64 parse_rect64_line(std::string_view line, const line_reader& where);
+
+/// The pose on one line read in double, with the checks of parse_pose_line;
+/// an angle gives (c, s) = (cos, sin) in double. Throws input_error through `where`.
+rect_pose64 parse_pose64_line(std::string_view line, const line_reader& where);
+
 /// The pair on one line (2 fields), each index below `rect_count`; throws
 /// input_error through `where`, naming `rect_file` when an index is out of range.
 pair_index parse_pair_line(std::string_view line, const line_reader& where,
@@ -182,6 +200,15 @@ rect_records read_rect_records(line_reader& lines, std::uint64_t max_rects = UIN
 /// error, as for read_rects.
 pose_records read_pose_records(line_reader& lines, std::uint64_t max_poses = UINT32_MAX,
                                const record_progress& progress = {});
+
+/// Every rectangle of `lines` read in double (parse_rect64_line), as double
+/// records; the same checks and limits as read_rect_records.
+rect_records64 read_rect_records64(line_reader& lines, std::uint64_t max_rects = UINT32_MAX,
+                                   const record_progress& progress = {});
+
+/// Every pose of `lines` read in double (parse_pose64_line), as double records.
+pose_records64 read_pose_records64(line_reader& lines, std::uint64_t max_poses = UINT32_MAX,
+                                   const record_progress& progress = {});
 
 /// Every rectangle of the file at `path`.
 rect_soa read_rects_file(const std::string& path);

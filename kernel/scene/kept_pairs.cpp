@@ -161,6 +161,9 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
     const bool check_a = !input.a_checked;
     const bool check_b = !input.b_checked;
     std::vector<unsigned char> fits(parts, 1);
+    if (input.doubles) {
+        records64_.resize(n_);  // the last full query may have read float rows
+    }
     const bool stream = n_ * sizeof(record) > store_bytes_from_dram;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(n_, share, parts);
@@ -187,6 +190,9 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                     ok &= valid_row(in.kind, record_at(in, id));
                 }
                 copy_row(in, id, into[k - run_begin].v);
+                if (in.doubles) {
+                    copy_double_row(in, id, records64_[k].v);  // what the double method reads
+                }
             }
             bounds(kind_, into[0].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
             if (stream) {

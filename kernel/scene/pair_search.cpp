@@ -17,7 +17,11 @@ namespace obbsat::detail {
 pair_search::pair_search(const collide_options& options) : options_(options) {}
 
 void pair_search::set_query(const query_input& input) {
-    detail::require_method_on(options_, input.kind);
+    if (!input.doubles) {
+        detail::require_method_on(options_, input.kind);  // a double query's is checked by bound_doubles
+    }
+    doubles_ = input.doubles;
+    double_kind_ = input.double_kind;
     ran_ = resolve_backend(options_.use);
     stats_ = find_pairs_stats{};
     kind_ = input.kind;

@@ -45,9 +45,13 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 
 #include <cstddef>
 #include <functional>
@@ -55,6 +59,9 @@
 #include <vector>
 
 namespace obbsat {
+
+/// The floating-point type of a box_view's rectangles.
+enum class precision { float32, float64 };
 
 /// What one query did, for reports and benchmarks.
 struct find_pairs_stats {
@@ -92,14 +99,30 @@ public:
     box_view(const std::vector<rect_pose>& poses);
     /// The rectangles of a vector, in place, checked by every query.
     box_view(const std::vector<rect>& rects);
+    /// A double pose store, checked when it was built.
+    box_view(const pose_records64& poses);
+    /// A double corner store, checked when it was built.
+    box_view(const rect_records64& rects);
+    /// `count` double poses in the caller's memory (48 bytes each), checked by every query.
+    box_view(const rect_pose64* poses, std::size_t count);
+    /// `count` double corner rectangles in the caller's memory (64 bytes each), checked by every query.
+    box_view(const rect64* rects, std::size_t count);
+    /// The double poses of a vector, in place, checked by every query.
+    box_view(const std::vector<rect_pose64>& poses);
+    /// The double rectangles of a vector, in place, checked by every query.
+    box_view(const std::vector<rect64>& rects);
 
     /// Poses or corners.
     store_kind kind() const { return kind_; }
+    /// float32 (rect_pose, rect and their stores) or float64 (rect_pose64, rect64 and theirs).
+    obbsat::precision precision() const { return precision_; }
     /// The number of rectangles.
     std::size_t size() const { return count_; }
-    /// The first value of the first rectangle (a center x or an UL x); nullptr when empty.
-    const float* floats() const { return floats_; }
-    /// Floats from one rectangle to the next: 8 for records and corners, 6 for rect_pose rows.
+    /// The first value of the first rectangle (a center x or an UL x); nullptr when empty or float64.
+    const float* floats() const { return precision_ == obbsat::precision::float32 ? static_cast<const float*>(data_) : nullptr; }
+    /// The first value of the first rectangle; nullptr when empty or float32.
+    const double* doubles() const { return precision_ == obbsat::precision::float64 ? static_cast<const double*>(data_) : nullptr; }
+    /// Values (floats or doubles) from one rectangle to the next: 8 for records and corners, 6 for pose rows.
     std::size_t stride() const { return stride_; }
     /// True for a store (checked when built), false for rows checked by each query.
     bool checked() const { return checked_; }
@@ -116,10 +139,11 @@ public:
     const pair_filters& filters() const { return filters_; }
 
 private:
-    const float* floats_ = nullptr;
+    const void* data_ = nullptr;  ///< floats or doubles, as precision_ says
     std::size_t count_ = 0;
-    std::size_t stride_ = 0;  ///< floats from one rectangle to the next
+    std::size_t stride_ = 0;  ///< values from one rectangle to the next
     store_kind kind_ = store_kind::poses;
+    obbsat::precision precision_ = obbsat::precision::float32;
     bool checked_ = false;
     pair_filters filters_;  ///< nullptr arrays: the defaults
 };

@@ -84,10 +84,12 @@ void require_method_on_double_rows(const collide_options& options, store_kind ki
 }  // namespace
 
 query_input pair_search::bound_doubles(const query_input& input) {
+    double_bounds_seconds_ = 0;
     if (!input.doubles) {
         return input;
     }
     require_method_on_double_rows(options_, input.double_kind);
+    const auto start = clock_type::now();
     const bool self = input.b64 == nullptr;
     const std::size_t n = input.a_count + (self ? 0 : input.b_count);
     double_bounds_.resize(n);
@@ -117,6 +119,7 @@ query_input pair_search::bound_doubles(const query_input& input) {
             refuse_double_row(input, bad);  // units are in order: the first bad row of all
         }
     }
+    double_bounds_seconds_ = seconds_since(start);
     static const float none[8] = {};
     query_input out = input;
     out.kind = store_kind::corners;

@@ -63,7 +63,7 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
         // call beyond the check that they fit.
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
         const bool fits = refresh_records(input, parts, !exact);
-        stats_.bounds_seconds = seconds_since(start);
+        stats_.bounds_seconds += seconds_since(start);
         if (fits) {
             ++kept_.calls;
             stats_.reused_order = true;

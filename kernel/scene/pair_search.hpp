@@ -255,6 +255,7 @@ private:
     store_kind double_kind_ = store_kind::poses;
     scratch_records<record64> records64_;
     scratch_records<record> double_bounds_;
+    double double_bounds_seconds_ = 0;  ///< bound_doubles' time, counted in stats_.bounds_seconds
     scratch_vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
     scratch_vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
     scratch_vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store

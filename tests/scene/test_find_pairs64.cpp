@@ -312,3 +312,30 @@ TEST(FindPairs64, Errors) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(FindPairs64, OutwardRoundingStepsAsNextafter) {
+    // float_step against std::nextafter on values around every kind of float: zero, subnormal, normal, the largest, infinite.
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const float f : {0.0f, -0.0f, 1e-45f, -1e-45f, 1e-38f, 1.0f, -1.0f, 5712345.5f, -3e5f,
+                          std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(), inf, -inf}) {
+        if (f != inf) {
+            EXPECT_EQ(obbsat::ref::float_step(f, true), std::nextafter(f, inf)) << f;
+        }
+        if (f != -inf) {
+            EXPECT_EQ(obbsat::ref::float_step(f, false), std::nextafter(f, -inf)) << f;
+        }
+    }
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> coordinate(-6e6, 6e6);
+    for (int i = 0; i < 100000; ++i) {
+        const double d = coordinate(rng);
+        const float lo = obbsat::ref::float_at_most(d), hi = obbsat::ref::float_at_least(d);
+        ASSERT_LE(static_cast<double>(lo), d);
+        ASSERT_GE(static_cast<double>(hi), d);
+        ASSERT_LE(hi, std::nextafter(lo, inf));  // the tightest: at most one float apart
+    }
+}
+
+}  // namespace

@@ -14,8 +14,11 @@ decides the whole batch in C++ with the SIMD backend this CPU runs best, with
 the GIL released; every backend gives verdicts bitwise identical to the
 method's scalar reference. The methods differ per form (:func:`methods`).
 
+float64 data is decided in float64 (never rounded to float32 unless a call
+is given ``precision="float32"``); see docs/python.md.
+
 Zero copy: a C-contiguous float32 corner or pose array and a C-contiguous
-uint32 pair array are read where they are. Anything else (float64 corners,
+uint32 pair array are read where they are. Anything else (float16 corners,
 int64 pairs, a strided view) is converted once per call, which costs one pass
 and a temporary of N * 32 (corners) or N * 24 bytes (poses), or M * 8 bytes
 (pairs). A :func:`records` store is checked once, when built, where an array
@@ -215,7 +218,9 @@ def records(rects):
     coordinates on every call (one pass over the N rectangles), and copies a
     pose array into pose records on every call; a store is checked (and
     copied) when it is built, so calls over it read only the pairs. Use one
-    when many pair lists meet the same rectangles. ``store.corners`` (or
+    when many pair lists meet the same rectangles. A store holds float32: a
+    float64 array is rounded to float32 here (the calls decide a float64
+    array itself in float64). ``store.corners`` (or
     ``store.poses``) is a read-only view of its records. A store pickles (for
     Dask workers, say) as its corners (or poses).
 

@@ -25,6 +25,16 @@
 // rotation vector is refused with invalid_input naming the row and the field,
 // prefixed "a: " or "b: " in a query across two sets; no pair is reported then.
 //
+// Double rows (rect_pose64, rect64 and their stores pose_records64,
+// rect_records64; box_view::precision() float64): the methods are those of
+// the double stores (obbsat/collide64.hpp: exact, conservative and local on
+// poses; exact and conservative on corners), deciding the candidates on the
+// doubles as given. The broadphase stays in float32 over bounds rounded
+// outward from double bounds that contain each exact point set
+// (obbsat/ref/bounds64.hpp), so the statement above holds unchanged: exact
+// on doubles is the exact answer over all N(N−1)/2 pairs. Both sets of a
+// cross query hold the same kind and precision (invalid_input otherwise).
+//
 // Pair filters (obbsat/pair_filters.hpp): a box_view may carry a category,
 // a collide-with mask and a group per rectangle (box_view::with_filters),
 // each side of a cross query its own; a pair the filters refuse is dropped
@@ -33,7 +43,9 @@
 // no view carries any.
 //
 // Memory: about 100 bytes per rectangle while the pairs are found (one copy
-// of the records in the query's own order, its bounds, order and strips)
+// of the records in the query's own order, its bounds, order and strips;
+// about 200 for double rows: their outward bounds as a 32-byte float row in
+// the caller's order and a 64-byte double record in the query's order)
 // and 8 bytes per reported pair; find_pairs releases the per-rectangle
 // memory before it sorts the pairs, which takes 8 more bytes per pair, so
 // its peak is the larger of the two phases. find_pairs_each holds no pairs

@@ -250,7 +250,12 @@ private:
     scratch_records<record> records_;
     /// A double query (query_input::doubles): its rows in the query's order,
     /// which the double method reads (test_pairs), and the float rows its
-    /// sweep runs on (bound_doubles), in the caller's order.
+    /// sweep runs on (bound_doubles), in the caller's order. The rows are
+    /// copied rather than read in place through order_ (possible for a
+    /// pose_records64): on the 1M-box uniform scene at UTM coordinates,
+    /// exact, one thread, the copy took 306 to 430 ms against 475 to 489 ms
+    /// in place (best of 5, a busy machine), as the candidates of the sweep
+    /// then read rows far apart in the caller's order.
     bool doubles_ = false;
     store_kind double_kind_ = store_kind::poses;
     scratch_records<record64> records64_;

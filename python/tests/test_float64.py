@@ -202,3 +202,17 @@ def test_errors_name_method_dtype_and_row():
         obbsat.PairFinder().find(bad)
     with pytest.raises(ValueError, match=r"^pose 2: "):
         obbsat.corners_of_poses(bad)
+
+
+def test_dask_keeps_float64(scene):
+    da = pytest.importorskip("dask.array")
+    import obbsat.dask
+
+    poses, rects, truth_poses, truth_rects = scene
+    got = obbsat.dask.find_pairs(da.from_array(poses, chunks=(100, 6)), 40.0).compute(scheduler="synchronous")
+    assert got.tolist() == truth_poses.tolist()
+    got = obbsat.dask.find_pairs(rects, 40.0).compute(scheduler="synchronous")
+    assert got.tolist() == truth_rects.tolist()
+    pairs = np.array(list(itertools.combinations(range(60), 2)), dtype=np.uint32)
+    lazy = obbsat.dask.collide(rects, da.from_array(pairs, chunks=(500, 2)))
+    assert lazy.compute(scheduler="synchronous").tolist() == obbsat.collide(rects, pairs).tolist()

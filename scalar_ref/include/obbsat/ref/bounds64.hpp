@@ -35,7 +35,10 @@
 //     becomes −FLT_MAX, an infinite bound stays infinite.
 //
 // So float lo <= exact lo and float hi >= exact hi, for every valid double
-// rectangle, and the bounds are never NaN.
+// rectangle, and the bounds are never NaN. (Rounding to nearest, being monotone, would
+// already keep every overlap of the double bounds; rounding outward also
+// makes the float bounds themselves contain the rectangle, which
+// obbsat.bounds in Python and the tests rely on.)
 #pragma once
 
 #include <obbsat/rect64.hpp>

@@ -339,3 +339,43 @@ TEST(FindPairs64, OutwardRoundingStepsAsNextafter) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(FindPairs64, PairFinderAcrossTwoSetsAndBetweenPrecisions) {
+    std::vector<rect_pose64> poses = utm_scene(2000, 13, 700);
+    const collide_options o = options_for(method::exact, 1);
+    obbsat::pair_finder finder(o);
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> step(-0.01, 0.01);
+    for (int frame = 0; frame < 8; ++frame) {
+        for (rect_pose64& p : poses) {
+            p.center.x += step(rng);
+        }
+        const std::vector<rect_pose64> a(poses.begin(), poses.begin() + 800), b(poses.begin() + 800, poses.end());
+        ASSERT_TRUE(same_pairs(finder.find(a, b), obbsat::find_pairs(a, b, o))) << "frame " << frame;
+    }
+    // The same number of rows in float and then in double: the kept candidates of the float
+    // calls serve the double ones only through their bounds, and the double rows are read anew.
+    obbsat::pair_finder switching(o);
+    std::vector<obbsat::rect64> corners = corners_of(poses);
+    for (int frame = 0; frame < 8; ++frame) {
+        for (obbsat::rect64& r : corners) {
+            for (obbsat::point64* q : {&r.ul, &r.ur, &r.lr, &r.ll}) {
+                q->y += 0.002;
+            }
+        }
+        if (frame % 3 == 0) {
+            std::vector<obbsat::rect> rounded;
+            for (const obbsat::rect64& r : corners) {
+                const auto f = [](obbsat::point64 q) { return obbsat::point{static_cast<float>(q.x), static_cast<float>(q.y)}; };
+                rounded.push_back({f(r.ul), f(r.ur), f(r.lr), f(r.ll)});
+            }
+            ASSERT_TRUE(same_pairs(switching.find(rounded), obbsat::find_pairs(rounded, o))) << "frame " << frame;
+        } else {
+            ASSERT_TRUE(same_pairs(switching.find(corners), obbsat::find_pairs(corners, o))) << "frame " << frame;
+        }
+    }
+}
+
+}  // namespace

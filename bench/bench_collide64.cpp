@@ -6,6 +6,11 @@
 // verdicts against the double scalar references, pair by pair, then times.
 // The float rows collide/<method>/indexed_sorted/.../poses are the same pairs
 // in float32.
+//
+// collide64/<method>/pose_stream/<backend>/pairs:4096/threads:1: a stream of
+// 4096 pairs a[i], b[i] (the first pairs of the list above), as the double
+// stores have it: one pose_records64 holding a then b, and the pairs
+// (i, 4096 + i). The float rows of the same size are collide/.../stream/...
 #include "bench_registry.hpp"
 #include "bench_workload.hpp"
 
@@ -28,10 +33,14 @@ namespace {
 
 constexpr std::size_t double_pairs = 262144;
 
+constexpr std::size_t double_stream_pairs = 4096;
+
 struct double_workload {
     obbsat::pose_records64 poses;
     obbsat::rect_records64 corners;
     const std::vector<obbsat::pair_index>* pairs;
+    obbsat::pose_records64 stream;  ///< a[0..4096) then b[0..4096)
+    std::vector<obbsat::pair_index> stream_pairs;  ///< (i, 4096 + i)
 };
 
 obbsat::rect64 corners_of(const obbsat::rect_pose64& p) {
@@ -58,7 +67,17 @@ double_workload& double_workload_of() {
             corners.push_back(corners_of(q));
         }
         built.reset(new double_workload{obbsat::pose_records64(wide), obbsat::rect_records64(corners),
-                                        &w.sorted_pairs()});
+                                        &w.sorted_pairs(), {}, {}});
+        const std::vector<obbsat::pair_index>& first = w.sorted_pairs();
+        for (std::size_t side = 0; side < 2; ++side) {
+            for (std::size_t i = 0; i < double_stream_pairs; ++i) {
+                built->stream.push_back(wide[side == 0 ? first[i].a : first[i].b]);
+            }
+        }
+        for (std::size_t i = 0; i < double_stream_pairs; ++i) {
+            built->stream_pairs.push_back(
+                {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(double_stream_pairs + i)});
+        }
     }
     return *built;
 }
@@ -118,6 +137,23 @@ void register_collide64_benchmarks() {
                                              [m, use, threads](benchmark::State& state) {
                                                  double_workload& w = double_workload_of();
                                                  run_case(state, w.poses, *w.pairs, m, use, threads);
+                                             })
+                    ->UseRealTime()
+                    ->Unit(benchmark::kMicrosecond);
+            }
+        }
+        for (const obbsat::method m : obbsat::methods_on_doubles(obbsat::store_kind::poses)) {
+            for (const obbsat::backend use : pose_backends) {
+                if (threads != 1) {
+                    continue;  // 4096 pairs take one core
+                }
+                const std::string name = std::string("collide64/") + obbsat::method_name(m) + "/pose_stream/" +
+                                         obbsat::backend_name(use) + "/pairs:" +
+                                         std::to_string(double_stream_pairs) + "/threads:1";
+                benchmark::RegisterBenchmark(name.c_str(),
+                                             [m, use](benchmark::State& state) {
+                                                 double_workload& w = double_workload_of();
+                                                 run_case(state, w.stream, w.stream_pairs, m, use, 1);
                                              })
                     ->UseRealTime()
                     ->Unit(benchmark::kMicrosecond);

@@ -22,6 +22,14 @@
 //       check_limit boxes). Counters: pairs_per_box, candidates_per_box,
 //       filtered_share (of the unfiltered pairs).
 //
+//   precision/exact/poses/.../float64 and .../float32  obbsat::find_pairs on
+//       one thread over the as-generated uniform scene moved to UTM-like
+//       coordinates (500000.125, 5712345.5), first as double poses, then as
+//       those poses rounded to float32, in the same run. Both rows first check
+//       their answer against brute force over the pairs of a plain sweep of
+//       the same query's bounds (up to check_limit boxes): the double one
+//       against the double oracle. Counter pairs_per_box.
+//
 // The peers' rows (peer_scene/, peer_frame/) answer the same question on the
 // same scenes; scene_harness.hpp says how every row is timed and checked.
 #include "bench_registry.hpp"
@@ -32,8 +40,11 @@
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
+#include <obbsat/oracle/pose_contact64.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/ref/bounds64.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -324,6 +335,91 @@ void run_filter_row(benchmark::State& state, std::size_t boxes, bool filtered) {
     }
 }
 
+/// The as-generated uniform scene at UTM-like coordinates: its poses in double, and rounded to float32.
+struct utm_scene {
+    std::vector<obbsat::rect_pose64> wide;
+    std::vector<obbsat::rect_pose> rounded;
+};
+
+const utm_scene& utm_scene_for(std::size_t boxes) {
+    static std::map<std::size_t, std::unique_ptr<utm_scene>> built;
+    std::unique_ptr<utm_scene>& scene = built[boxes];
+    if (!scene) {
+        scene = std::make_unique<utm_scene>();
+        const obbsat::pose_records& poses =
+            scene_workload_for(boxes, obbsat::scene_sizes::uniform).poses(scene_frame::as_generated);
+        for (std::size_t i = 0; i < poses.size(); ++i) {
+            const obbsat::rect_pose p = poses[i];
+            const obbsat::rect_pose64 q{{500000.125 + p.center.x, 5712345.5 + p.center.y},
+                                        {p.half_extents.x, p.half_extents.y},
+                                        {p.rotation.x, p.rotation.y}};
+            scene->wide.push_back(q);
+            scene->rounded.push_back({{static_cast<float>(q.center.x), static_cast<float>(q.center.y)},
+                                      {p.half_extents.x, p.half_extents.y},
+                                      {p.rotation.x, p.rotation.y}});
+        }
+    }
+    return *scene;
+}
+
+/// The double answer by the double oracle over the pairs whose outward float
+/// bounds overlap, found by a plain sort on lo_x (no find_pairs).
+std::vector<obbsat::pair_index> brute_force64(const std::vector<obbsat::rect_pose64>& poses) {
+    std::vector<obbsat::ref::box_bounds> b;
+    std::vector<std::uint32_t> by_lo(poses.size());
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        b.push_back(obbsat::ref::bounds_of(poses[i]));
+        by_lo[i] = static_cast<std::uint32_t>(i);
+    }
+    std::sort(by_lo.begin(), by_lo.end(), [&](std::uint32_t x, std::uint32_t y) { return b[x].lo_x < b[y].lo_x; });
+    std::vector<obbsat::pair_index> out;
+    for (std::size_t k = 0; k < by_lo.size(); ++k) {
+        for (std::size_t l = k + 1; l < by_lo.size() && b[by_lo[l]].lo_x <= b[by_lo[k]].hi_x; ++l) {
+            const std::uint32_t i = std::min(by_lo[k], by_lo[l]), j = std::max(by_lo[k], by_lo[l]);
+            if (obbsat::ref::bounds_overlap(b[i], b[j]) && obbsat::oracle::intersects(poses[i], poses[j])) {
+                out.push_back({i, j});
+            }
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
+        return x.a < y.a || (x.a == y.a && x.b < y.b);
+    });
+    return out;
+}
+
+void run_precision_row(benchmark::State& state, std::size_t boxes, bool doubles) {
+    try {
+        const utm_scene& scene = utm_scene_for(boxes);
+        const obbsat::box_view view = doubles ? obbsat::box_view(scene.wide) : obbsat::box_view(scene.rounded);
+        const obbsat::collide_options options = options_for(obbsat::method::exact, 1);
+        if (doubles && boxes <= check_limit) {
+            const std::vector<obbsat::pair_index> got = obbsat::find_pairs(view, options);
+            const std::vector<obbsat::pair_index> want = brute_force64(scene.wide);
+            const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
+                return x.a == y.a && x.b == y.b;
+            };
+            if (got.size() != want.size() || !std::equal(got.begin(), got.end(), want.begin(), same)) {
+                state.SkipWithError("the double query differs from the double oracle");
+                return;
+            }
+        }
+        double pairs = 0;
+        for (auto _ : state) {
+            const std::vector<obbsat::pair_index> found = obbsat::find_pairs(view, options);
+            benchmark::DoNotOptimize(found.data());
+            pairs += static_cast<double>(found.size());
+        }
+        const auto n = static_cast<double>(boxes);
+        state.counters["ns_per_box"] =
+            benchmark::Counter(n * 1e-9, static_cast<benchmark::Counter::Flags>(
+                                             benchmark::Counter::kIsIterationInvariantRate |
+                                             benchmark::Counter::kInvert));
+        state.counters["pairs_per_box"] = benchmark::Counter(pairs / n, benchmark::Counter::kAvgIterations);
+    } catch (const std::exception& e) {
+        state.SkipWithError(e.what());
+    }
+}
+
 }  // namespace
 
 void register_scene_benchmarks() {
@@ -353,6 +449,20 @@ void register_scene_benchmarks() {
                         ->Unit(benchmark::kMillisecond);
                 }
             }
+        }
+    }
+    // Double poses and the same poses rounded to float32, side by side on one scene.
+    for (const std::size_t boxes : scene_box_counts_to_register()) {
+        for (const bool doubles : {true, false}) {
+            const std::string name = "precision/exact/poses/" +
+                                     scene_name_tail(boxes, obbsat::scene_sizes::uniform, 1) +
+                                     (doubles ? "/float64" : "/float32");
+            benchmark::RegisterBenchmark(name.c_str(),
+                                         [boxes, doubles](benchmark::State& state) {
+                                             run_precision_row(state, boxes, doubles);
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond);
         }
     }
     // With and without pair filters, side by side on one scene.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <obbsat/backend.hpp>
+#include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
 
 #include <cstddef>
@@ -30,6 +31,15 @@ struct double_kernel_table {
 /// its per-ISA object (lanes/backend_isa.cpp).
 template <class Backend>
 const double_kernel_table& double_kernels_of();
+
+/// The scalar references of `m` (exact, conservative or local) over pose_records64
+/// records, as a pose64_indexed_fn: exact through the certified path, else the oracle.
+std::size_t scalar_pose64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
+                                  std::uint8_t* verdicts);
+
+/// The scalar references of `m` (exact or conservative) over rect64 rows (8 doubles each).
+std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
+                                  std::uint8_t* verdicts);
 
 /// The table of `resolved` (a backend this CPU runs), or nullptr for the scalar
 /// backend and for a backend not compiled into this build.

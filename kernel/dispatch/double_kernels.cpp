@@ -1,7 +1,73 @@
 #include "dispatch/backend_catalogue.hpp"
 #include "dispatch/double_kernel_table.hpp"
 
+#include <obbsat/oracle/contact64.hpp>
+#include <obbsat/oracle/pose_contact64.hpp>
+#include <obbsat/ref/certified64.hpp>
+#include <obbsat/ref/conservative64.hpp>
+#include <obbsat/ref/local64.hpp>
+#include <obbsat/ref/pose_conservative64.hpp>
+
 namespace obbsat::detail {
+
+namespace {
+
+rect_pose64 pose_at(const double* records, std::size_t i) {
+    const double* v = records + 8 * i;
+    return rect_pose64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}};
+}
+
+rect64 rect_at(const double* records, std::size_t i) {
+    const double* v = records + 8 * i;
+    return rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}};
+}
+
+/// exact on one pair: the certified path, else the oracle (counted in `settled`).
+template <class Item>
+bool exact_settled(const Item& a, const Item& b, std::size_t& settled) {
+    const ref::certified_verdict fast = ref::certify(a, b);
+    if (fast.separated || fast.intersecting) {
+        return fast.intersecting;
+    }
+    ++settled;
+    return oracle::intersects(a, b);
+}
+
+template <class At>
+std::size_t decide_all(method m, const double* records, const pair_index* pairs, std::size_t count,
+                       std::uint8_t* verdicts, const At& at) {
+    std::size_t settled = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto a = at(records, pairs[i].a);
+        const auto b = at(records, pairs[i].b);
+        bool v = false;
+        switch (m) {
+            case method::exact: v = exact_settled(a, b, settled); break;
+            case method::conservative: v = ref::conservative(a, b); break;
+            default: v = ref::local(a, b); break;  // poses only: the callers admit nothing else
+        }
+        verdicts[i] = v ? 1 : 0;
+    }
+    return settled;
+}
+
+}  // namespace
+
+std::size_t scalar_pose64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
+                                  std::uint8_t* verdicts) {
+    return decide_all(m, records, pairs, count, verdicts, pose_at);
+}
+
+std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
+                                  std::uint8_t* verdicts) {
+    std::size_t settled = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const rect64 a = rect_at(records, pairs[i].a);
+        const rect64 b = rect_at(records, pairs[i].b);
+        verdicts[i] = (m == method::exact ? exact_settled(a, b, settled) : ref::conservative(a, b)) ? 1 : 0;
+    }
+    return settled;
+}
 
 const double_kernel_table* double_kernels_for(backend resolved) {
 #if OBBSAT_WITH_X86_KERNELS

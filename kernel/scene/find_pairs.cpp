@@ -13,19 +13,19 @@ static_assert(sizeof(rect_pose) == 6 * sizeof(float), "a rect_pose row is cx, cy
 static_assert(sizeof(rect) == 8 * sizeof(float), "a rect row is eight coordinates");
 
 box_view::box_view(const pose_records& poses)
-    : floats_(poses.data()), count_(poses.size()), stride_(pose_records::record_floats), kind_(store_kind::poses),
+    : data_(poses.data()), count_(poses.size()), stride_(pose_records::record_floats), kind_(store_kind::poses),
       checked_(true) {}
 
 box_view::box_view(const rect_records& rects)
-    : floats_(rects.empty() ? nullptr : &rects.data()->ul.x), count_(rects.size()), stride_(8),
+    : data_(rects.empty() ? nullptr : &rects.data()->ul.x), count_(rects.size()), stride_(8),
       kind_(store_kind::corners), checked_(true) {}
 
 box_view::box_view(const rect_pose* poses, std::size_t count)
-    : floats_(count == 0 ? nullptr : &poses->center.x), count_(count), stride_(6), kind_(store_kind::poses),
+    : data_(count == 0 ? nullptr : &poses->center.x), count_(count), stride_(6), kind_(store_kind::poses),
       checked_(false) {}
 
 box_view::box_view(const rect* rects, std::size_t count)
-    : floats_(count == 0 ? nullptr : &rects->ul.x), count_(count), stride_(8), kind_(store_kind::corners),
+    : data_(count == 0 ? nullptr : &rects->ul.x), count_(count), stride_(8), kind_(store_kind::corners),
       checked_(false) {}
 
 box_view::box_view(const std::vector<rect_pose>& poses) : box_view(poses.data(), poses.size()) {}
@@ -48,6 +48,29 @@ box_view box_view::with_ids(const std::uint64_t* ids, std::size_t count) const {
 
 box_view box_view::with_ids(const std::vector<std::uint64_t>& ids) const { return with_ids(ids.data(), ids.size()); }
 
+static_assert(sizeof(rect_pose64) == 6 * sizeof(double), "a rect_pose64 row is cx, cy, hx, hy, c, s");
+static_assert(sizeof(rect64) == 8 * sizeof(double), "a rect64 row is eight coordinates");
+
+box_view::box_view(const pose_records64& poses)
+    : data_(poses.data()), count_(poses.size()), stride_(pose_records64::record_doubles), kind_(store_kind::poses),
+      precision_(precision::float64), checked_(true) {}
+
+box_view::box_view(const rect_records64& rects)
+    : data_(rects.empty() ? nullptr : &rects.data()->ul.x), count_(rects.size()), stride_(8),
+      kind_(store_kind::corners), precision_(precision::float64), checked_(true) {}
+
+box_view::box_view(const rect_pose64* poses, std::size_t count)
+    : data_(count == 0 ? nullptr : &poses->center.x), count_(count), stride_(6), kind_(store_kind::poses),
+      precision_(precision::float64), checked_(false) {}
+
+box_view::box_view(const rect64* rects, std::size_t count)
+    : data_(count == 0 ? nullptr : &rects->ul.x), count_(count), stride_(8), kind_(store_kind::corners),
+      precision_(precision::float64), checked_(false) {}
+
+box_view::box_view(const std::vector<rect_pose64>& poses) : box_view(poses.data(), poses.size()) {}
+
+box_view::box_view(const std::vector<rect64>& rects) : box_view(rects.data(), rects.size()) {}
+
 namespace {
 
 /// The query over `a`, and `b` when it is not nullptr. An empty set's
@@ -56,24 +79,42 @@ namespace {
 /// (a pair_finder's calls); a query across two sets takes them from both or neither.
 detail::query_input input_of(const box_view& a, const box_view* b, bool with_ids = false) {
     static const float none[8] = {};
+    static const double none64[8] = {};
+    const bool doubles = a.precision() == precision::float64;
     detail::query_input in;
     in.kind = a.kind();
+    in.doubles = doubles;
+    in.double_kind = a.kind();
+    // The float rows of a double query are made later (pair_search::bound_doubles).
     in.a = a.floats() != nullptr ? a.floats() : none;
     in.a_count = a.size();
-    in.a_stride = a.stride();
+    in.a_stride = doubles ? 8 : a.stride();
     in.a_checked = a.checked();
     in.a_filters = a.filters();
+    if (doubles) {
+        in.a64 = a.doubles() != nullptr ? a.doubles() : none64;
+        in.a64_stride = a.stride();
+        in.a64_checked = a.checked();
+    }
     if (b != nullptr) {
-        if (b->kind() != a.kind()) {
-            throw invalid_input(std::string("a scene query compares one kind of rectangle: a holds ") +
-                                (a.kind() == store_kind::poses ? "poses" : "corners") + ", b holds " +
-                                (b->kind() == store_kind::poses ? "poses" : "corners"));
+        if (b->kind() != a.kind() || b->precision() != a.precision()) {
+            const auto name = [](const box_view& v) {
+                return std::string(v.precision() == precision::float64 ? "double " : "float ") +
+                       (v.kind() == store_kind::poses ? "poses" : "corners");
+            };
+            throw invalid_input("a scene query compares one kind and precision of rectangle: a holds " + name(a) +
+                                ", b holds " + name(*b));
         }
         in.b = b->floats() != nullptr ? b->floats() : none;
         in.b_count = b->size();
-        in.b_stride = b->stride();
+        in.b_stride = doubles ? 8 : b->stride();
         in.b_checked = b->checked();
         in.b_filters = b->filters();
+        if (doubles) {
+            in.b64 = b->doubles() != nullptr ? b->doubles() : none64;
+            in.b64_stride = b->stride();
+            in.b64_checked = b->checked();
+        }
     }
     if (with_ids && (a.has_ids() || (b != nullptr && b->has_ids()))) {
         if (b != nullptr && a.has_ids() != b->has_ids()) {
@@ -94,25 +135,25 @@ detail::query_input input_of(const box_view& a, const box_view* b, bool with_ids
 std::vector<pair_index> find_pairs(box_view boxes, const collide_options& options) {
     const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
-    return search.collect_once(input_of(boxes, nullptr));
+    return search.collect_once(search.bound_doubles(input_of(boxes, nullptr)));
 }
 
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options) {
     const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
-    return search.collect_once(input_of(a, &b));
+    return search.collect_once(search.bound_doubles(input_of(a, &b)));
 }
 
 void find_pairs_each(box_view boxes, const collide_options& options, const pair_chunk_sink& sink) {
     const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
-    search.run(input_of(boxes, nullptr), sink);
+    search.run(search.bound_doubles(input_of(boxes, nullptr)), sink);
 }
 
 void find_pairs_each(box_view a, box_view b, const collide_options& options, const pair_chunk_sink& sink) {
     const detail::executor_scope scope(options.executor);
     detail::pair_search search(options);
-    search.run(input_of(a, &b), sink);
+    search.run(search.bound_doubles(input_of(a, &b)), sink);
 }
 
 pair_finder::pair_finder(const collide_options& options)
@@ -138,8 +179,7 @@ detail::pair_search& engine_of(const std::unique_ptr<detail::pair_search>& searc
 const std::vector<pair_index>& pair_finder::find(box_view boxes) {
     detail::pair_search& search = engine_of(search_, "find");
     const detail::executor_scope scope(search.caller_executor());
-    const detail::query_input input = input_of(boxes, nullptr, true);
-    const std::vector<pair_index>& found = search.collect(input);
+    const std::vector<pair_index>& found = search.collect(search.bound_doubles(input_of(boxes, nullptr, true)));
     if (events_) {
         events_->update(found, false, input.with_ids ? input.a_ids : nullptr, nullptr, input.a_count, 0);
     }
@@ -149,8 +189,7 @@ const std::vector<pair_index>& pair_finder::find(box_view boxes) {
 const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
     detail::pair_search& search = engine_of(search_, "find");
     const detail::executor_scope scope(search.caller_executor());
-    const detail::query_input input = input_of(a, &b, true);
-    const std::vector<pair_index>& found = search.collect(input);
+    const std::vector<pair_index>& found = search.collect(search.bound_doubles(input_of(a, &b, true)));
     if (events_) {
         events_->update(found, true, input.with_ids ? input.a_ids : nullptr, input.with_ids ? input.b_ids : nullptr,
                         input.a_count, input.b_count);

@@ -90,7 +90,9 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
     // rows, none moved since the full query), or rows matched by id, carried
     // over to this call's rows (kept_changes.cpp).
     const bool by_position = !kept_.by_id && !rows_changed_ && same_scene_as_last();
-    if (kept_.ready && n_ >= 2 && (by_position || (ids_followed_ && absorb_changes(input)))) {
+    // Double rows are not carried over rows that came and went (a gone row's
+    // slot holds a far float box, not a double one): such a call is a full query.
+    if (kept_.ready && n_ >= 2 && (by_position || (ids_followed_ && !input.doubles && absorb_changes(input)))) {
         const auto start = clock_type::now();
         // An exact method calls a pair colliding only if the two rectangles
         // share a point, so only if their bounds overlap (the bounds hold the
@@ -102,7 +104,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         // (kept_pairs::dropped), and the filter drops them anyway.
         const bool exact = guarantee_of(options_.test) == method_guarantee::exact;
         const bool fits = refresh_records(input, parts, !exact);
-        stats_.bounds_seconds = seconds_since(start);
+        stats_.bounds_seconds += seconds_since(start);
         if (fits) {
             ++kept_.calls;
             stats_.reused_order = true;
@@ -217,6 +219,9 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
     const bool check_b = !input.b_checked;
     std::vector<unsigned char> fits(parts, 1);
     const std::size_t slots = slots_;
+    if (input.doubles) {
+        records64_.resize(slots);  // the last full query may have read float rows
+    }
     const bool stream = slots * sizeof(record) > store_bytes_from_dram;
     run_parts(parts, [&](std::size_t share) {
         const auto [begin, end] = share_of(slots, share, parts);
@@ -252,6 +257,9 @@ bool pair_search::refresh_records(const query_input& input, std::size_t parts, b
                     ok &= valid_row(in.kind, record_at(in, id));
                 }
                 copy_row(in, id, into[k - run_begin].v);
+                if (in.doubles) {
+                    copy_double_row(in, id, records64_[k].v);  // what the double method reads
+                }
             }
             bounds(kind_, into[0].v, run_end - run_begin, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
             if (stream) {

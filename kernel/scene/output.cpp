@@ -54,6 +54,8 @@ std::vector<pair_index> pair_search::collect_once(const query_input& input) {
     // The scene's working memory goes before the sorted copy of the pairs is
     // made: the peak is the larger of the two, not their sum.
     decltype(records_)().swap(records_);
+    decltype(records64_)().swap(records64_);
+    decltype(double_bounds_)().swap(double_bounds_);
     for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
         scratch_vector<float>().swap(*v);
     }

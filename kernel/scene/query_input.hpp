@@ -36,6 +36,19 @@ struct query_input {
     pair_filters a_filters;  ///< the first set's pair filters (obbsat/pair_filters.hpp)
     pair_filters b_filters;  ///< the second set's; unused within one set
 
+    /// Double rows (box_view::precision() double): the float rows above are
+    /// then their float bounds rounded outward (obbsat/ref/bounds64.hpp) as
+    /// corner rows, checked, made by pair_search::bound_doubles; the sweep
+    /// runs on them and the double method decides the candidates on these.
+    bool doubles = false;
+    store_kind double_kind = store_kind::poses;  ///< of the double rows
+    const double* a64 = nullptr;  ///< the first set's double rows
+    std::size_t a64_stride = 8;   ///< doubles from one row to the next: 6 for rect_pose64 rows, else 8
+    bool a64_checked = true;
+    const double* b64 = nullptr;  ///< the second set's; nullptr within one set
+    std::size_t b64_stride = 8;
+    bool b64_checked = true;
+
     /// True iff some set of the query carries pair filters: the query then
     /// takes the filtered path, chosen once (pair_search::filtered_).
     bool filtered() const { return a_filters.any() || (b != nullptr && b_filters.any()); }
@@ -65,6 +78,23 @@ inline std::size_t stride_of(const query_input& input, std::size_t id) {
 /// True iff the values of one row are a valid rectangle of its kind (finite_check.hpp).
 inline bool valid_row(store_kind kind, const float* v) {
     return kind == store_kind::poses ? valid_pose_row(v) : all_finite(v, 8);
+}
+
+/// Double row `id` of the query: of the first set below a_count, else of the second.
+inline const double* double_row_at(const query_input& input, std::size_t id) {
+    return id < input.a_count ? input.a64 + input.a64_stride * id
+                              : input.b64 + input.b64_stride * (id - input.a_count);
+}
+
+/// Copies double row `id` into a 64-byte record (a pose's two last doubles zero).
+inline void copy_double_row(const query_input& input, std::size_t id, double* out) {
+    const double* row = double_row_at(input, id);
+    const std::size_t stride = id < input.a_count ? input.a64_stride : input.b64_stride;
+    std::memcpy(out, row, (stride == 6 ? 6 : 8) * sizeof(double));
+    if (stride == 6) {
+        out[6] = 0.0;
+        out[7] = 0.0;
+    }
 }
 
 /// Throws the store's own message for row `id` of the query, which valid_row

@@ -12,6 +12,9 @@ namespace obbsat::detail {
 
 void pair_search::copy_records(const query_input& input, std::size_t parts) {
     records_.resize(n_);
+    if (doubles_) {
+        records64_.resize(n_);
+    }
     in_lo_x_.resize(n_);
     in_lo_y_.resize(n_);
     in_hi_x_.resize(n_);
@@ -37,9 +40,16 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 if (k + ahead < end) {
                     fetch_into_l2(record_at(input, order_[k + ahead]));
+                    if (doubles_) {
+                        fetch_into_l2(double_row_at(input, order_[k + ahead]));
+                    }
                 }
                 const std::uint32_t id = order_[k];
                 copy_row(input, id, records_[k].v);
+                if (doubles_) {
+                    // The double method reads these (test_pairs), in the query's order as the floats.
+                    copy_double_row(input, id, records64_[k].v);
+                }
                 side_[k] = id >= a_count_ && !self_ ? 1 : 0;
             }
             if (filtered_) {

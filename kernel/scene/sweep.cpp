@@ -2,6 +2,7 @@
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
+#include "dispatch/double_kernel_table.hpp"
 #include "dispatch/strip_view.hpp"
 #include "scene/search_common.hpp"
 #include "support/work_shares.hpp"
@@ -18,7 +19,23 @@ namespace obbsat::detail {
 void pair_search::test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const {
     const kernel_table& table = kernels_for(ran_);
     const auto kernel_start = clock_type::now();
-    if (kind_ == store_kind::poses) {
+    if (doubles_) {
+        // The double method on the double rows in the query's order: the
+        // backend's double-pose lanes, or the scalar references (double
+        // corners have no lanes; neither has the scalar backend).
+        const double* rows = records64_.data()->v;
+        const double_kernel_table* lanes = double_kind_ == store_kind::poses ? double_kernels_for(ran_) : nullptr;
+        if (lanes != nullptr) {
+            const pose64_indexed_fn kernel = options_.test == method::exact          ? lanes->exact
+                                             : options_.test == method::conservative ? lanes->conservative
+                                                                                     : lanes->local;
+            p.slow_path += kernel(rows, pairs, count, verdicts);
+        } else if (double_kind_ == store_kind::poses) {
+            p.slow_path += scalar_pose64_indexed(options_.test, rows, pairs, count, verdicts);
+        } else {
+            p.slow_path += scalar_rect64_indexed(options_.test, rows, pairs, count, verdicts);
+        }
+    } else if (kind_ == store_kind::poses) {
         p.slow_path += table.on_poses(options_.test).indexed_near(records_.data()->v, pairs, count, verdicts);
     } else {
         p.slow_path += table.of(options_.test)

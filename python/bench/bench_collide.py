@@ -8,7 +8,8 @@ makes: a float32 array read in place as numpy placed it and as
 obbsat.aligned copied it (C++ collide_pairs over a rect array; both check
 the coordinates on each call), a RectRecords store (C++
 collide_pairs over rect_records, checked once), and, for the conversion
-cost, float64 corners with int64 pairs (against the rect array call).
+cost, float64 corners with int64 pairs rounded to float32 on request
+(precision="float32", against the rect array call).
 
     python3 python/bench/bench_collide.py --cpp build/python/obbsat_collide_baseline
 """
@@ -69,8 +70,9 @@ def main():
              lambda: obbsat.collide(aligned, pairs, method=args.method, threads=threads, out=out)),
             ("obbsat.collide(RectRecords, uint32 pairs)", "records",
              lambda: obbsat.collide(store, pairs, method=args.method, threads=threads, out=out)),
-            ("obbsat.collide(float64 array, int64 pairs)", "array",
-             lambda: obbsat.collide(wide_rects, wide_pairs, method=args.method, threads=threads, out=out)),
+            ("obbsat.collide(float64 array as float32, int64 pairs)", "array",
+             lambda: obbsat.collide(wide_rects, wide_pairs, method=args.method, threads=threads, out=out,
+                                    precision="float32")),
         ]
         for name, peer, call in rows:
             key = (peer, threads)

@@ -14,8 +14,11 @@ decides the whole batch in C++ with the SIMD backend this CPU runs best, with
 the GIL released; every backend gives verdicts bitwise identical to the
 method's scalar reference. The methods differ per form (:func:`methods`).
 
+float64 data is decided in float64 (never rounded to float32 unless a call
+is given ``precision="float32"``); see docs/python.md.
+
 Zero copy: a C-contiguous float32 corner or pose array and a C-contiguous
-uint32 pair array are read where they are. Anything else (float64 corners,
+uint32 pair array are read where they are. Anything else (float16 corners,
 int64 pairs, a strided view) is converted once per call, which costs one pass
 and a temporary of N * 32 (corners) or N * 24 bytes (poses), or M * 8 bytes
 (pairs). A :func:`records` store is checked once, when built, where an array
@@ -82,6 +85,9 @@ _MAX_THREADS = 2**32 - 1
 # each form (as the command-line program's ``collide --rects`` and ``collide
 # --poses``). Scene queries default to exact instead.
 _DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
+# float64 rows: sat4 has no double form, so corners default to exact.
+_DEFAULT_METHOD64 = {"corners": "exact", "poses": "local"}
+_PRECISIONS = ("float32", "float64")
 _SCENE_METHOD = "exact"
 _DEFAULT_BACKEND = "auto"
 
@@ -158,10 +164,27 @@ def resolved_backend(backend="auto"):
     return _core.resolved_backend(_backend(backend))
 
 
-def _form(rects, what):
+def _precision(precision):
+    """``precision`` checked: None (from the data), ``"float32"`` or ``"float64"``."""
+    if precision is not None and precision not in _PRECISIONS:
+        raise ValueError(f"precision: expected None, 'float32' or 'float64', got {precision!r}")
+    return precision
+
+
+def _dtype_of(dtype, precision):
+    """The float type the library reads an array of ``dtype`` as: the one
+    ``precision`` names, else float64 for float64 (or wider) data, so that no
+    double is rounded, and float32 for the rest (float32 and float16 exactly,
+    integers as before: exactly up to 2**24)."""
+    if precision is not None:
+        return _np.dtype(precision)
+    return _np.dtype(_np.float64) if dtype.kind == "f" and dtype.itemsize > 4 else _np.dtype(_np.float32)
+
+
+def _form(rects, what, precision=None):
     """``(form, array)``: which store the rectangles go to, ``"corners"`` or
     ``"poses"``, and the array as the library reads it, C-contiguous float32
-    (the array itself when it already is one).
+    or float64 (:func:`_dtype_of`; the array itself when it already is one).
 
     This is the one place that maps an array's shape to a store: rows of
     eight floats (``(N, 8)`` or ``(N, 4, 2)``) are corners, rows of six
@@ -179,18 +202,23 @@ def _form(rects, what):
     else:
         raise ValueError(f"{what}: expected shape (N, 8) or (N, 4, 2) (corners UL, UR, LR, LL) "
                          f"or (N, 6) (poses cx, cy, hx, hy, c, s), got {shape}")
-    return form, _np.ascontiguousarray(rects, dtype=_np.float32)
+    return form, _np.ascontiguousarray(rects, dtype=_dtype_of(rects.dtype, precision))
 
 
-def _poses(poses, what):
-    """The poses as the library reads them: a C-contiguous float32 (N, 6) array."""
+def _is64(array):
+    return isinstance(array, _np.ndarray) and array.dtype == _np.float64
+
+
+def _poses(poses, what, precision="float32"):
+    """The poses as the library reads them: a C-contiguous float32 (N, 6)
+    array, or float64 as :func:`_dtype_of` says when ``precision`` is None."""
     if not isinstance(poses, _np.ndarray):
         poses = _np.asarray(poses)
     if poses.dtype.kind not in "fiu":
         raise TypeError(f"{what}: expected real numbers, got dtype {poses.dtype}")
     if poses.ndim != 2 or poses.shape[1] != 6:
         raise ValueError(f"{what}: expected shape (N, 6) (cx, cy, hx, hy, c, s), got {poses.shape}")
-    return _np.ascontiguousarray(poses, dtype=_np.float32)
+    return _np.ascontiguousarray(poses, dtype=_dtype_of(poses.dtype, precision))
 
 
 def records(rects):
@@ -202,7 +230,9 @@ def records(rects):
     coordinates on every call (one pass over the N rectangles), and copies a
     pose array into pose records on every call; a store is checked (and
     copied) when it is built, so calls over it read only the pairs. Use one
-    when many pair lists meet the same rectangles. ``store.corners`` (or
+    when many pair lists meet the same rectangles. A store holds float32: a
+    float64 array is rounded to float32 here (the calls decide a float64
+    array itself in float64). ``store.corners`` (or
     ``store.poses``) is a read-only view of its records. A store pickles (for
     Dask workers, say) as its corners (or poses).
 
@@ -215,7 +245,7 @@ def records(rects):
     """
     if isinstance(rects, (RectRecords, PoseRecords)):
         return rects
-    form, rects = _form(rects, "rects")
+    form, rects = _form(rects, "rects", "float32")
     return PoseRecords(rects) if form == "poses" else RectRecords(rects)
 
 
@@ -282,21 +312,38 @@ def _verdicts(out, count):
 _PAIRS_EXPECTED = "an (M, 2) integer array"
 
 
-def _store(rects, method):
+def _refuse_float64_store(store, precision):
+    if precision == "float64":
+        raise ValueError(f"precision='float64' asks for float64 rows, but a {type(store).__name__} holds float32: "
+                         "pass the float64 array itself")
+
+
+def _default_method(form, array, method):
+    if method is not None:
+        return method
+    return (_DEFAULT_METHOD64 if _is64(array) else _DEFAULT_METHOD)[form]
+
+
+def _store(rects, method, precision=None):
     """``(rects, call, method)``: the rectangles as the library reads them, the
-    ``_core`` call for their store, and the method (the store's default for
-    ``None``)."""
+    ``_core`` call for their store and precision, and the method (the
+    default for ``None``)."""
     if isinstance(rects, RectRecords):
+        _refuse_float64_store(rects, precision)
         form, call = "corners", _core.collide_store
     elif isinstance(rects, PoseRecords):
+        _refuse_float64_store(rects, precision)
         form, call = "poses", _core.collide_pose_store
     else:
-        form, rects = _form(rects, "rects")
-        call = _core.collide_poses if form == "poses" else _core.collide_records
-    return rects, call, _DEFAULT_METHOD[form] if method is None else method
+        form, rects = _form(rects, "rects", precision)
+        if _is64(rects):
+            call = _core.collide_poses64 if form == "poses" else _core.collide_records64
+        else:
+            call = _core.collide_poses if form == "poses" else _core.collide_records
+    return rects, call, _default_method(form, rects, method)
 
 
-def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
+def collide(rects, pairs, method=None, backend="auto", threads=1, out=None, *, precision=None):
     """Whether each pair of rectangles collides.
 
     Parameters
@@ -372,14 +419,14 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None):
     _refuse_store(pairs, "collide", "pairs", _PAIRS_EXPECTED)
     _require_apart(out, rects=rects, pairs=pairs)
     threads = _threads(threads)
-    rects, call, method = _store(rects, method)
+    rects, call, method = _store(rects, method, _precision(precision))
     pairs = _pairs(pairs, len(rects))
     verdicts = _verdicts(out, len(pairs))
     call(rects, pairs, verdicts, method, _backend(backend), threads)
     return verdicts
 
 
-def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1):
+def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1, *, precision=None):
     """The rows of ``pairs`` whose rectangles collide, in their input order,
     shape (K, 2), with the dtype of ``pairs``. Arguments as :func:`collide`
     (corners or poses).
@@ -399,11 +446,11 @@ def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1):
         pairs = _np.asarray(pairs)
     if pairs.size == 0 and pairs.ndim < 2:
         pairs = pairs.reshape(0, 2).astype(_np.int64)
-    hits = collide(rects, pairs, method=method, backend=backend, threads=threads)
+    hits = collide(rects, pairs, method=method, backend=backend, threads=threads, precision=precision)
     return pairs[hits]
 
 
-def collide_stream(a, b, method=None, backend="auto", threads=1, out=None):
+def collide_stream(a, b, method=None, backend="auto", threads=1, out=None, *, precision=None):
     """Whether ``a[i]`` and ``b[i]`` collide, for every i: two batches of
     rectangles of equal length and the same form, each shaped (N, 4, 2) or
     (N, 8) (corners), or each (N, 6) (poses).
@@ -429,20 +476,26 @@ def collide_stream(a, b, method=None, backend="auto", threads=1, out=None):
                       "an array of corners, (N, 8) or (N, 4, 2), or of poses, (N, 6), not a store")
     _require_apart(out, a=a, b=b)
     threads = _threads(threads)
-    form_a, a = _form(a, "a")
-    form_b, b = _form(b, "b")
+    precision = _precision(precision)
+    if precision is None:
+        # Both batches in one precision: float64 when either holds float64 data (widening is exact).
+        precision = "float64" if any(_dtype_of(_np.asarray(x).dtype, None) == _np.float64 for x in (a, b)) else None
+    form_a, a = _form(a, "a", precision)
+    form_b, b = _form(b, "b", precision)
     if form_a != form_b:
         raise ValueError(f"a holds {form_a} (shape {a.shape}), b holds {form_b} (shape {b.shape}): "
                          "a stream compares one form")
-    if method is None:
-        method = _DEFAULT_METHOD[form_a]
+    method = _default_method(form_a, a, method)
     verdicts = _verdicts(out, len(a))
-    decide = _core.collide_pose_stream if form_a == "poses" else _core.collide_stream
+    if _is64(a):
+        decide = _core.collide_pose_stream64 if form_a == "poses" else _core.collide_stream64
+    else:
+        decide = _core.collide_pose_stream if form_a == "poses" else _core.collide_stream
     decide(a, b, verdicts, method, _backend(backend), threads)
     return verdicts
 
 
-def corners_of_poses(poses, backend="auto"):
+def corners_of_poses(poses, backend="auto", *, precision=None):
     """The corners UL, UR, LR, LL of each pose, float32 of shape (N, 4, 2):
     the library's conversion (``obbsat::convert_to_corners``), which every
     backend computes bit for bit as stated in ``obbsat/ref/pose_corners.hpp``.
@@ -475,35 +528,67 @@ def corners_of_poses(poses, backend="auto"):
         _core.store_corners(poses, out, backend)
         return out
     _refuse_store(poses, "corners_of_poses", "poses", "a PoseRecords store or an (N, 6) float array")
-    poses = _poses(poses, "poses")
+    poses = _poses(poses, "poses", _precision(precision))
+    if _is64(poses):
+        # The same operations in float64, each rounded once (numpy, no FMA); the
+        # poses are checked as the library checks them (the message names the pose).
+        _core.pose_bounds64(poses)
+        cx, cy, hx, hy, c, s = (poses[:, k] for k in range(6))
+        ux, uy = hx * c, hx * s
+        vx, vy = -(hy * s), hy * c
+        out = _np.empty((len(poses), 4, 2), dtype=_np.float64)
+        out[:, 0, 0], out[:, 0, 1] = (cx - ux) + vx, (cy - uy) + vy
+        out[:, 1, 0], out[:, 1, 1] = (cx + ux) + vx, (cy + uy) + vy
+        out[:, 2, 0], out[:, 2, 1] = (cx + ux) - vx, (cy + uy) - vy
+        out[:, 3, 0], out[:, 3, 1] = (cx - ux) - vx, (cy - uy) - vy
+        return out
     out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
     _core.pose_corners(poses, out, backend)
     return out
 
 
-def _scene_form(boxes, what):
+def _scene_form(boxes, what, precision=None):
     """``(form, boxes)`` for a scene query: a store as it is, an array as
     :func:`_form` gives it."""
     if isinstance(boxes, RectRecords):
+        _refuse_float64_store(boxes, precision)
         return "corners", boxes
     if isinstance(boxes, PoseRecords):
+        _refuse_float64_store(boxes, precision)
         return "poses", boxes
-    return _form(boxes, what)
+    return _form(boxes, what, precision)
 
 
-def _scene(boxes, against):
-    """``(form, boxes, against)``: both sides of a scene query in the form the
-    library reads, refused when they hold different forms."""
-    form, boxes = _scene_form(boxes, "boxes")
+def _holds_float64(boxes):
+    if isinstance(boxes, (RectRecords, PoseRecords)):
+        return False
+    return _dtype_of(_np.asarray(boxes).dtype, None) == _np.float64
+
+
+def _scene(boxes, against, precision=None):
+    """``(form, boxes, against)``: both sides of a scene query in the form and
+    precision the library reads, refused when they hold different forms. With
+    ``precision`` None, both sides are float64 when either holds float64 data
+    (widening float32 is exact), else float32."""
+    precision = _precision(precision)
+    if precision is None and (_holds_float64(boxes) or (against is not None and _holds_float64(against))):
+        precision = "float64"
+    form, boxes = _scene_form(boxes, "boxes", precision)
     if against is not None:
-        form_against, against = _scene_form(against, "against")
+        form_against, against = _scene_form(against, "against", precision)
         if form_against != form:
             raise ValueError(f"boxes hold {form}, against holds {form_against}: a scene query compares one form")
     return form, boxes, against
 
 
+def _scene_call(form, boxes, name):
+    """The ``_core`` scene call ``name`` (find_pairs or a finder's find) for the form and precision of ``boxes``."""
+    suffix = "poses" if form == "poses" else "corners"
+    return name + "_" + suffix + ("64" if _is64(boxes) else "")
+
+
 def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1, categories=None, masks=None,
-               groups=None, against_categories=None, against_masks=None, against_groups=None):
+               groups=None, against_categories=None, against_masks=None, against_groups=None, precision=None):
     """Every pair of rectangles that collides, with no pair list: the
     library's scene query (``obbsat::find_pairs``).
 
@@ -589,8 +674,8 @@ def find_pairs(boxes, against=None, *, method="exact", backend="auto", threads=1
     """
     method = _SCENE_METHOD if method is None else method
     threads = _threads(threads)
-    form, boxes, against = _scene(boxes, against)
-    query = _core.find_pairs_poses if form == "poses" else _core.find_pairs_corners
+    form, boxes, against = _scene(boxes, against, precision)
+    query = getattr(_core, _scene_call(form, boxes, "find_pairs"))
     return query(boxes, against, method, _backend(backend), threads, categories=categories, masks=masks,
                  groups=groups, against_categories=against_categories, against_masks=against_masks,
                  against_groups=against_groups)
@@ -678,7 +763,8 @@ class PairFinder:
     (array([], shape=(0, 2), dtype=uint64), 0)
     """
 
-    def __init__(self, method="exact", backend="auto", threads=1, *, events=False):
+    def __init__(self, method="exact", backend="auto", threads=1, *, events=False, precision=None):
+        self._precision = _precision(precision)
         self._method = _SCENE_METHOD if method is None else method
         self._backend = _backend(backend)
         self._threads = _threads(threads)
@@ -711,12 +797,12 @@ class PairFinder:
         pairs are still row indices of this call. Without ids rows are
         matched by position. Two rows with one id raise ValueError naming
         both rows and the id, and change nothing."""
-        form, boxes, against = _scene(boxes, against)
+        form, boxes, against = _scene(boxes, against, self._precision)
         if against is None and against_ids is not None:
             raise ValueError("against_ids given without against")
         ids = _ids(ids, "ids")
         against_ids = _ids(against_ids, "against_ids")
-        find = self._query.find_poses if form == "poses" else self._query.find_corners
+        find = getattr(self._query, _scene_call(form, boxes, "find"))
         pairs = find(boxes, against, ids, against_ids, categories=categories, masks=masks, groups=groups,
                      against_categories=against_categories, against_masks=against_masks,
                      against_groups=against_groups)
@@ -752,7 +838,7 @@ class PairFinder:
             )
 
 
-def bounds(boxes):
+def bounds(boxes, *, precision=None):
     """The axis-aligned bounds of each rectangle as the scene queries compute
     them (``obbsat/ref/bounds.hpp``): float32 (N, 4), rows ``lo_x, lo_y,
     hi_x, hi_y``, closed. :func:`find_pairs` hands a pair to its method
@@ -777,5 +863,8 @@ def bounds(boxes):
     >>> obbsat.bounds(np.array([[0, 0, 2, 1, 0, 1]], dtype=np.float32))  # turned a quarter
     array([[-1.0000005, -2.000001 ,  1.0000005,  2.000001 ]], dtype=float32)
     """
-    form, boxes = _scene_form(boxes, "boxes")
+    precision = _precision(precision)
+    form, boxes = _scene_form(boxes, "boxes", precision)
+    if _is64(boxes):
+        return _core.pose_bounds64(boxes) if form == "poses" else _core.corner_bounds64(boxes)
     return _core.pose_bounds(boxes) if form == "poses" else _core.corner_bounds(boxes)

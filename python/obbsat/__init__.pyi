@@ -1,4 +1,4 @@
-from typing import Any, TypeVar, overload
+from typing import Any, Literal, TypeVar, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -13,6 +13,8 @@ from ._core import UnsupportedBackendError as UnsupportedBackendError
 __version__: str
 
 _Out = TypeVar("_Out", npt.NDArray[np.bool_], npt.NDArray[np.uint8])
+# None: float64 data in float64, everything else in float32.
+_Precision = Literal["float32", "float64"] | None
 
 def aligned(array: npt.ArrayLike, alignment: int = ...) -> np.ndarray: ...
 def methods(poses: bool = ...) -> list[str]: ...
@@ -31,6 +33,8 @@ def collide(
     backend: str | None = ...,
     threads: int = ...,
     out: _Out | None = ...,
+    *,
+    precision: _Precision = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
 def colliding_pairs(
     rects: npt.ArrayLike | RectRecords | PoseRecords,
@@ -38,6 +42,8 @@ def colliding_pairs(
     method: str | None = ...,
     backend: str | None = ...,
     threads: int = ...,
+    *,
+    precision: _Precision = ...,
 ) -> npt.NDArray[np.integer[Any]]: ...
 def collide_stream(
     a: npt.ArrayLike,
@@ -46,8 +52,12 @@ def collide_stream(
     backend: str | None = ...,
     threads: int = ...,
     out: _Out | None = ...,
+    *,
+    precision: _Precision = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
-def corners_of_poses(poses: npt.ArrayLike | PoseRecords, backend: str | None = ...) -> npt.NDArray[np.float32]: ...
+def corners_of_poses(
+    poses: npt.ArrayLike | PoseRecords, backend: str | None = ..., *, precision: _Precision = ...
+) -> npt.NDArray[np.float32] | npt.NDArray[np.float64]: ...
 def find_pairs(
     boxes: npt.ArrayLike | RectRecords | PoseRecords,
     against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
@@ -61,11 +71,18 @@ def find_pairs(
     against_categories: npt.ArrayLike | None = ...,
     against_masks: npt.ArrayLike | None = ...,
     against_groups: npt.ArrayLike | None = ...,
+    precision: _Precision = ...,
 ) -> npt.NDArray[np.uint32]: ...
 
 class PairFinder:
     def __init__(
-        self, method: str | None = ..., backend: str | None = ..., threads: int = ..., *, events: bool = ...
+        self,
+        method: str | None = ...,
+        backend: str | None = ...,
+        threads: int = ...,
+        *,
+        events: bool = ...,
+        precision: _Precision = ...,
     ) -> None: ...
     def find(
         self,
@@ -89,4 +106,6 @@ class PairFinder:
     def began(self) -> npt.NDArray[np.uint32] | npt.NDArray[np.uint64]: ...
     def ended(self) -> npt.NDArray[np.uint32] | npt.NDArray[np.uint64]: ...
 
-def bounds(boxes: npt.ArrayLike | RectRecords | PoseRecords) -> npt.NDArray[np.float32]: ...
+def bounds(
+    boxes: npt.ArrayLike | RectRecords | PoseRecords, *, precision: _Precision = ...
+) -> npt.NDArray[np.float32]: ...

@@ -64,7 +64,13 @@ def shared_records(rects, client=None):
     >>> type(poses).__name__, len(poses)
     ('PoseRecords', 2)
     """
-    store = _obbsat.records(rects)
+    if _obbsat._holds_float64(rects):
+        # float64 data stays float64 (the stores hold float32): the checked
+        # array itself is what the workers read, decided in double.
+        _, store = _obbsat._form(rects, "rects")
+        _obbsat.bounds(store)  # the check a store makes when built
+    else:
+        store = _obbsat.records(rects)
     client = _client_or_none(client)
     if client is None:
         return store
@@ -265,7 +271,7 @@ def _merge_pairs(parts):
 
 def _lazy_boxes(boxes, what):
     """``(form, boxes)``: the boxes as a dask.array of rows (N, 8) for corners
-    or (N, 6) for poses, float32, chunked along rows only."""
+    or (N, 6) for poses, float32 (float64 for float64 data), chunked along rows only."""
     import dask.array as da
 
     if isinstance(boxes, _obbsat.RectRecords):
@@ -280,7 +286,8 @@ def _lazy_boxes(boxes, what):
         if any(_math.isnan(size) for size in boxes.chunks[0]):
             raise ValueError(f"{what}: the chunks' lengths are unknown (call compute_chunk_sizes() first): "
                              "each box is named by its row")
-        boxes = boxes.rechunk({axis: -1 for axis in range(1, boxes.ndim)}).astype(_np.float32)
+        # float64 stays float64 (decided in double), anything else goes to float32, as obbsat.find_pairs does.
+        boxes = boxes.rechunk({axis: -1 for axis in range(1, boxes.ndim)}).astype(_obbsat._dtype_of(boxes.dtype, None))
     else:
         form, boxes = _obbsat._form(boxes, what)
         boxes = da.from_array(boxes, chunks=(_ROWS_PER_CHUNK,) + boxes.shape[1:])

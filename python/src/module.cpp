@@ -29,6 +29,7 @@
 // a ValueError. Nothing is written then.
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
+#include <obbsat/collide64.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
@@ -41,6 +42,7 @@
 #include <obbsat/rect_records.hpp>
 #include <obbsat/rect_soa.hpp>
 #include <obbsat/ref/bounds.hpp>
+#include <obbsat/ref/bounds64.hpp>
 #include <obbsat/scene.hpp>
 
 #include <pybind11/numpy.h>
@@ -141,6 +143,26 @@ std::pair<const obbsat::rect_pose*, std::size_t> poses_in_place(const py::array&
     return {static_cast<const obbsat::rect_pose*>(a.data()), static_cast<std::size_t>(a.shape(0))};
 }
 
+/// The double rectangles of `a`, read in place: float64, native order,
+/// C-contiguous, eight doubles per row (shape (N, 8) or (N, 4, 2)).
+std::pair<const obbsat::rect64*, std::size_t> corners64_in_place(const py::array& a, const char* what) {
+    const bool shape_ok = (a.ndim() == 2 && a.shape(1) == 8) ||
+                          (a.ndim() == 3 && a.shape(1) == 4 && a.shape(2) == 2);
+    if (!shape_ok || !holds<double>(a) || !is_c_contiguous(a)) {
+        throw py::type_error(std::string(what) +
+                             ": expected a C-contiguous float64 array of shape (N, 8) or (N, 4, 2)");
+    }
+    return {static_cast<const obbsat::rect64*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+}
+
+/// The double poses of `a`, read in place: float64, native order, C-contiguous, shape (N, 6).
+std::pair<const obbsat::rect_pose64*, std::size_t> poses64_in_place(const py::array& a, const char* what) {
+    if (a.ndim() != 2 || a.shape(1) != 6 || !holds<double>(a) || !is_c_contiguous(a)) {
+        throw py::type_error(std::string(what) + ": expected a C-contiguous float64 array of shape (N, 6)");
+    }
+    return {static_cast<const obbsat::rect_pose64*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+}
+
 /// The pairs of `a`, read in place: uint32, native order, C-contiguous, shape (M, 2).
 std::pair<const obbsat::pair_index*, std::size_t> pairs_in_place(const py::array& a) {
     if (a.ndim() != 2 || a.shape(1) != 2 || !holds<std::uint32_t>(a) ||
@@ -232,6 +254,114 @@ void require_runs_on(const obbsat::collide_options& options, obbsat::store_kind 
     } else {
         obbsat::collide_pairs(obbsat::rect_records{}, nullptr, 0, nullptr, options);
     }
+}
+
+/// Throws invalid_input when options.test does not run on float64 rows of
+/// `store`, naming the method, the dtype and the methods that do.
+void require_runs_on_doubles(const obbsat::collide_options& options, obbsat::store_kind store) {
+    if (obbsat::runs_on_doubles(options.test, store)) {
+        return;
+    }
+    std::string offered;
+    for (const obbsat::method m : obbsat::methods_on_doubles(store)) {
+        offered += std::string(offered.empty() ? "" : ", ") + obbsat::method_name(m);
+    }
+    throw obbsat::invalid_input(std::string("method ") + obbsat::method_name(options.test) + " does not run on float64 " +
+                                (store == obbsat::store_kind::poses ? "poses" : "corners") + " (they take " + offered +
+                                "); pass precision=\"float32\" to decide them rounded to float32");
+}
+
+/// A double store holding a checked copy of `count` rows; the error is prefixed "what: " when `what` is given.
+template <class Store, class Row>
+Store double_store(const Row* rows, std::size_t count, const char* what) {
+    try {
+        return Store(rows, count);
+    } catch (const obbsat::invalid_input& e) {
+        if (what == nullptr) {
+            throw;
+        }
+        throw obbsat::invalid_input(std::string(what) + ": " + e.what());
+    }
+}
+
+/// Verdicts of pairs over float64 rows (corners or poses), copied once into the double store.
+template <class Store, class Row>
+std::string collide_doubles(const std::pair<const Row*, std::size_t>& rows, const py::array& rows_array,
+                            const char* what, obbsat::store_kind kind, const py::array& pairs, py::array& out,
+                            const std::string& method, const std::string& backend, long long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [pair_list, count] = pairs_in_place(pairs);
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, rows_array, what);
+    require_apart(out, pairs, "pairs");
+    const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
+        require_runs_on_doubles(options, kind);
+        const Store store = double_store<Store>(rows.first, rows.second, nullptr);
+        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+std::string collide_records64(const py::array& rects, const py::array& pairs, py::array& out,
+                              const std::string& method, const std::string& backend, long long threads) {
+    return collide_doubles<obbsat::rect_records64>(corners64_in_place(rects, "rects"), rects, "rects",
+                                                   obbsat::store_kind::corners, pairs, out, method, backend, threads);
+}
+
+std::string collide_poses64(const py::array& poses, const py::array& pairs, py::array& out,
+                            const std::string& method, const std::string& backend, long long threads) {
+    return collide_doubles<obbsat::pose_records64>(poses64_in_place(poses, "poses"), poses, "poses",
+                                                   obbsat::store_kind::poses, pairs, out, method, backend, threads);
+}
+
+/// Verdicts of a[i] against b[i] over float64 rows: one double store holding
+/// a then b, decided as the pairs (i, N + i). Each batch's rows are checked
+/// apart, so an error names "a: " or "b: " and the row in that batch.
+template <class Store, class Row>
+std::string collide_stream_doubles(const std::pair<const Row*, std::size_t>& rows_a,
+                                   const std::pair<const Row*, std::size_t>& rows_b, const py::array& a,
+                                   const py::array& b, obbsat::store_kind kind, py::array& out,
+                                   const std::string& method, const std::string& backend, long long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const std::size_t count = rows_a.second;
+    if (count != rows_b.second) {
+        throw py::value_error("stream batches differ in length: " + std::to_string(count) + " rows in a, " +
+                              std::to_string(rows_b.second) + " in b");
+    }
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, a, "a");
+    require_apart(out, b, "b");
+    const obbsat::backend ran = without_gil([&] {
+        require_runs_on_doubles(options, kind);
+        const Store store_a = double_store<Store>(rows_a.first, count, "a");
+        const Store store_b = double_store<Store>(rows_b.first, count, "b");
+        Store both;
+        both.reserve(2 * count);
+        for (std::size_t i = 0; i < count; ++i) {
+            both.push_back(store_a[i]);
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            both.push_back(store_b[i]);
+        }
+        std::vector<obbsat::pair_index> pairs(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            pairs[i] = obbsat::pair_index{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(count + i)};
+        }
+        return obbsat::collide_pairs(both, pairs.data(), count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+std::string collide_stream64(const py::array& a, const py::array& b, py::array& out, const std::string& method,
+                             const std::string& backend, long long threads) {
+    return collide_stream_doubles<obbsat::rect_records64>(corners64_in_place(a, "a"), corners64_in_place(b, "b"), a, b,
+                                                          obbsat::store_kind::corners, out, method, backend, threads);
+}
+
+std::string collide_pose_stream64(const py::array& a, const py::array& b, py::array& out, const std::string& method,
+                                  const std::string& backend, long long threads) {
+    return collide_stream_doubles<obbsat::pose_records64>(poses64_in_place(a, "a"), poses64_in_place(b, "b"), a, b,
+                                                          obbsat::store_kind::poses, out, method, backend, threads);
 }
 
 std::string collide_records(const py::array& rects, const py::array& pairs, py::array& out,
@@ -441,6 +571,7 @@ struct store_traits<obbsat::rect_records> {
     static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
         return corners_in_place(a, what);
     }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
 };
 
 template <>
@@ -451,6 +582,31 @@ struct store_traits<obbsat::pose_records> {
     static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
         return poses_in_place(a, what);
     }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
+};
+
+// float64 arrays: the double stores' rows, read in place (no Python class
+// wraps a double store, so a side is always an array).
+template <>
+struct store_traits<obbsat::rect_records64> {
+    using row = obbsat::rect64;
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
+    static constexpr const char* class_name = "RectRecords";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return corners64_in_place(a, what);
+    }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
+};
+
+template <>
+struct store_traits<obbsat::pose_records64> {
+    using row = obbsat::rect_pose64;
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
+    static constexpr const char* class_name = "PoseRecords";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return poses64_in_place(a, what);
+    }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
 };
 
 /// One side of a scene query: a store passed from Python, or the rows of an
@@ -656,7 +812,7 @@ py::array_t<std::uint32_t> find_pairs_of(const py::object& boxes, const py::obje
     const obbsat::pair_filters fa = filters.first.view();
     const obbsat::pair_filters fb = filters.second.view();
     return pair_array(without_gil([&] {
-        require_runs_on(options, store_traits<Store>::kind);
+        store_traits<Store>::require_method(options);
         const obbsat::box_view va = view_of(a).with_filters(fa);
         return with_side_names([&] {
             return cross ? obbsat::find_pairs(va, view_of(b).with_filters(fb), options)
@@ -738,7 +894,7 @@ public:
         }
         return pair_array(without_gil([&] {
             const std::lock_guard<std::mutex> lock(mutex_);
-            require_runs_on(options_, store_traits<Store>::kind);
+            store_traits<Store>::require_method(options_);
             const obbsat::box_view va = view_of(a).with_filters(fa);
             return with_side_names([&] {
                 const std::vector<obbsat::pair_index>& found =
@@ -838,6 +994,11 @@ py::array_t<float> bounds_of(const py::object& boxes) {
             write_bounds(count, [&](std::size_t i) { return store[i]; }, rows);
         } else if constexpr (std::is_same<Store, obbsat::rect_records>::value) {
             require_finite_corners(side.rows, count);
+            write_bounds(count, [&](std::size_t i) { return side.rows[i]; }, rows);
+        } else if constexpr (std::is_same<Store, obbsat::rect_records64>::value) {
+            for (std::size_t i = 0; i < count; ++i) {
+                obbsat::require_finite(side.rows[i], i);
+            }
             write_bounds(count, [&](std::size_t i) { return side.rows[i]; }, rows);
         } else {
             for (std::size_t i = 0; i < count; ++i) {
@@ -981,6 +1142,22 @@ PYBIND11_MODULE(_core, m) {
           py::arg("backend"), py::arg("threads"),
           "Verdicts of a[i] against b[i] (float32 (N, 8) each, copied to the structure-of-arrays store); "
           "returns the backend that ran.");
+    m.def("collide_stream64", &collide_stream64, py::arg("a"), py::arg("b"), py::arg("out"), py::arg("method"),
+          py::arg("backend"), py::arg("threads"),
+          "Verdicts of a[i] against b[i] over float64 corners (N, 8) (copied once into one double store); "
+          "returns the backend that ran.");
+    m.def("collide_pose_stream64", &collide_pose_stream64, py::arg("a"), py::arg("b"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of a[i] against b[i] over float64 poses (N, 6) (copied once into one double store); "
+          "returns the backend that ran.");
+    m.def("collide_records64", &collide_records64, py::arg("rects"), py::arg("pairs"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over float64 corners (N, 8) (copied once into a rect_records64 store); "
+          "returns the backend that ran.");
+    m.def("collide_poses64", &collide_poses64, py::arg("poses"), py::arg("pairs"), py::arg("out"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over float64 poses (N, 6) (copied once into a pose_records64 store); "
+          "returns the backend that ran.");
     py::class_<obbsat::pose_records>(m, "PoseRecords",
                                      "Poses as the library's 32-byte records, copied and checked once.")
         .def(py::init(&pose_records_of), py::arg("poses"),
@@ -1024,6 +1201,20 @@ PYBIND11_MODULE(_core, m) {
           py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
           py::arg("against_groups") = py::none(),
           "Every colliding pair of poses (float32 (N, 6), copied into records, or a PoseRecords), or across "
+          "boxes and against: uint32 (K, 2) sorted by (i, j).");
+    m.def("find_pairs_corners64", &find_pairs_of<obbsat::rect_records64>, py::arg("boxes"), py::arg("against"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+          py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+          py::arg("against_groups") = py::none(),
+          "Every colliding pair of float64 corner boxes ((N, 8) or (N, 4, 2), read in place, every double taken "
+          "exactly), or across boxes and against: uint32 (K, 2) sorted by (i, j).");
+    m.def("find_pairs_poses64", &find_pairs_of<obbsat::pose_records64>, py::arg("boxes"), py::arg("against"),
+          py::arg("method"), py::arg("backend"), py::arg("threads"),
+          py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+          py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+          py::arg("against_groups") = py::none(),
+          "Every colliding pair of float64 poses ((N, 6), read in place, every double taken exactly), or across "
           "boxes and against: uint32 (K, 2) sorted by (i, j).");
     py::class_<obbsat::find_pairs_stats>(m, "FindPairsStats", "What one scene query did (obbsat::find_pairs_stats).")
         .def(py::init<>())
@@ -1088,6 +1279,16 @@ PYBIND11_MODULE(_core, m) {
              "find_pairs_poses through the finder, rows matched by id when ids (uint64 (N,)) are given; the "
              "pairs are a copy of its buffer.")
         .def_property_readonly("stats", &scene_finder::stats, "What the last query did.")
+        .def("find_corners64", &scene_finder::find<obbsat::rect_records64>, py::arg("boxes"), py::arg("against"),
+             py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
+             "find_pairs_corners64 through the finder; the pairs are a copy of its buffer.")
+        .def("find_poses64", &scene_finder::find<obbsat::pose_records64>, py::arg("boxes"), py::arg("against"),
+             py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
+             "find_pairs_poses64 through the finder; the pairs are a copy of its buffer.")
         .def("track_events", &scene_finder::track_events, py::arg("on"),
              "Turns the begin/end events on (the next query begins every pair) or off.")
         .def("began", [](scene_finder& f) { return f.events(true); },
@@ -1099,6 +1300,10 @@ PYBIND11_MODULE(_core, m) {
     m.def("corner_bounds", &bounds_of<obbsat::rect_records>, py::arg("boxes"),
           "The bounds lo_x, lo_y, hi_x, hi_y of corner boxes (float32 (N, 8) or (N, 4, 2), or a RectRecords) "
           "as obbsat/ref/bounds.hpp computes them: float32 (N, 4).");
+    m.def("corner_bounds64", &bounds_of<obbsat::rect_records64>, py::arg("boxes"),
+          "The float bounds of float64 corner boxes rounded outward (obbsat/ref/bounds64.hpp): float32 (N, 4).");
+    m.def("pose_bounds64", &bounds_of<obbsat::pose_records64>, py::arg("boxes"),
+          "The float bounds of float64 poses rounded outward (obbsat/ref/bounds64.hpp): float32 (N, 4).");
     m.def("pose_bounds", &bounds_of<obbsat::pose_records>, py::arg("boxes"),
           "The bounds lo_x, lo_y, hi_x, hi_y of poses (float32 (N, 6), or a PoseRecords) as "
           "obbsat/ref/bounds.hpp computes them: float32 (N, 4).");

@@ -45,11 +45,15 @@ def test_non_finite_refused_whatever_the_pairs(rects):
         obbsat.collide(rects, [[0, 1]])
 
 
-def test_float64_beyond_float_range_becomes_infinite_and_is_refused(rects):
+def test_float64_beyond_float_range_is_kept_in_float64_and_refused_once_rounded(rects):
     wide = rects.astype(np.float64)
     wide[2, 3] = 1e300
+    # Decided in float64, where 1e300 is a finite coordinate like any other.
+    assert obbsat.collide(wide, [[0, 1], [0, 2]], method="exact").tolist() == \
+        obbsat.collide(wide, [[0, 1], [0, 2]], method="exact", backend="scalar").tolist()
+    # Rounded to float32 on request, it becomes infinite and is refused.
     with pytest.raises(ValueError, match="^rectangle 2: coordinate ury is not finite$"):
-        obbsat.collide(wide, [[0, 1]])
+        obbsat.collide(wide, [[0, 1]], precision="float32")
 
 
 @pytest.mark.parametrize("dtype", [np.uint32, np.int64, np.uint64, np.int32])

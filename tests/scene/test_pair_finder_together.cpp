@@ -9,6 +9,7 @@
 #include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_scene.hpp>
+#include <obbsat/rect_pose64.hpp>
 #include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -145,6 +146,36 @@ TEST(pair_finder_together, ids_filters_and_the_pool_on_two_threads) { run(method
 TEST(pair_finder_together, ids_filters_and_an_engine_executor) {
     const obbsat::executor engine{&enqueue_backwards, &finish_nothing, nullptr};
     run(method::exact, 4, &engine);
+}
+
+// Double rows at UTM-like coordinates with ids that come and go: every frame
+// is the fresh double query's answer.
+TEST(pair_finder_together, double_rows_with_ids_that_come_and_go) {
+    frames world(2000, 41);
+    collide_options options;
+    options.test = method::exact;
+    obbsat::pair_finder finder(options);
+    for (int frame = 0; frame < 20; ++frame) {
+        if (frame > 0) {
+            world.step();
+        }
+        std::vector<obbsat::rect_pose64> poses;
+        std::vector<std::uint64_t> ids;
+        for (const row& r : world.rows) {
+            const rect_pose& p = r.pose;
+            poses.push_back({{500000.0 + p.center.x + 1e-3 * (r.id % 7), 5700000.0 + p.center.y},
+                             {p.half_extents.x, p.half_extents.y},
+                             {p.rotation.x, p.rotation.y}});
+            ids.push_back(r.id);
+        }
+        const obbsat::box_view view(poses);
+        const std::vector<pair_index> got = finder.find(view.with_ids(ids));
+        const std::vector<pair_index> want = obbsat::find_pairs(view, options);
+        ASSERT_EQ(got.size(), want.size()) << "frame " << frame;
+        for (std::size_t k = 0; k < got.size(); ++k) {
+            ASSERT_TRUE(got[k].a == want[k].a && got[k].b == want[k].b) << "frame " << frame << ", pair " << k;
+        }
+    }
 }
 
 }  // namespace

@@ -25,6 +25,16 @@
 // rotation vector is refused with invalid_input naming the row and the field,
 // prefixed "a: " or "b: " in a query across two sets; no pair is reported then.
 //
+// Double rows (rect_pose64, rect64 and their stores pose_records64,
+// rect_records64; box_view::precision() float64): the methods are those of
+// the double stores (obbsat/collide64.hpp: exact, conservative and local on
+// poses; exact and conservative on corners), deciding the candidates on the
+// doubles as given. The broadphase stays in float32 over bounds rounded
+// outward from double bounds that contain each exact point set
+// (obbsat/ref/bounds64.hpp), so the statement above holds unchanged: exact
+// on doubles is the exact answer over all N(N−1)/2 pairs. Both sets of a
+// cross query hold the same kind and precision (invalid_input otherwise).
+//
 // Pair filters (obbsat/pair_filters.hpp): a box_view may carry a category,
 // a collide-with mask and a group per rectangle (box_view::with_filters),
 // each side of a cross query its own; a pair the filters refuse is dropped
@@ -33,7 +43,9 @@
 // no view carries any.
 //
 // Memory: about 100 bytes per rectangle while the pairs are found (one copy
-// of the records in the query's own order, its bounds, order and strips)
+// of the records in the query's own order, its bounds, order and strips;
+// about 200 for double rows: their outward bounds as a 32-byte float row in
+// the caller's order and a 64-byte double record in the query's order)
 // and 8 bytes per reported pair; find_pairs releases the per-rectangle
 // memory before it sorts the pairs, which takes 8 more bytes per pair, so
 // its peak is the larger of the two phases. find_pairs_each holds no pairs
@@ -45,9 +57,13 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -56,6 +72,9 @@
 #include <vector>
 
 namespace obbsat {
+
+/// The floating-point type of a box_view's rectangles.
+enum class precision { float32, float64 };
 
 /// What one query did, for reports and benchmarks.
 struct find_pairs_stats {
@@ -93,14 +112,30 @@ public:
     box_view(const std::vector<rect_pose>& poses);
     /// The rectangles of a vector, in place, checked by every query.
     box_view(const std::vector<rect>& rects);
+    /// A double pose store, checked when it was built.
+    box_view(const pose_records64& poses);
+    /// A double corner store, checked when it was built.
+    box_view(const rect_records64& rects);
+    /// `count` double poses in the caller's memory (48 bytes each), checked by every query.
+    box_view(const rect_pose64* poses, std::size_t count);
+    /// `count` double corner rectangles in the caller's memory (64 bytes each), checked by every query.
+    box_view(const rect64* rects, std::size_t count);
+    /// The double poses of a vector, in place, checked by every query.
+    box_view(const std::vector<rect_pose64>& poses);
+    /// The double rectangles of a vector, in place, checked by every query.
+    box_view(const std::vector<rect64>& rects);
 
     /// Poses or corners.
     store_kind kind() const { return kind_; }
+    /// float32 (rect_pose, rect and their stores) or float64 (rect_pose64, rect64 and theirs).
+    obbsat::precision precision() const { return precision_; }
     /// The number of rectangles.
     std::size_t size() const { return count_; }
-    /// The first value of the first rectangle (a center x or an UL x); nullptr when empty.
-    const float* floats() const { return floats_; }
-    /// Floats from one rectangle to the next: 8 for records and corners, 6 for rect_pose rows.
+    /// The first value of the first rectangle (a center x or an UL x); nullptr when empty or float64.
+    const float* floats() const { return precision_ == obbsat::precision::float32 ? static_cast<const float*>(data_) : nullptr; }
+    /// The first value of the first rectangle; nullptr when empty or float32.
+    const double* doubles() const { return precision_ == obbsat::precision::float64 ? static_cast<const double*>(data_) : nullptr; }
+    /// Values (floats or doubles) from one rectangle to the next: 8 for records and corners, 6 for pose rows.
     std::size_t stride() const { return stride_; }
     /// True for a store (checked when built), false for rows checked by each query.
     bool checked() const { return checked_; }
@@ -130,10 +165,11 @@ public:
     const std::uint64_t* ids() const { return ids_; }
 
 private:
-    const float* floats_ = nullptr;
+    const void* data_ = nullptr;  ///< floats or doubles, as precision_ says
     std::size_t count_ = 0;
-    std::size_t stride_ = 0;  ///< floats from one rectangle to the next
+    std::size_t stride_ = 0;  ///< values from one rectangle to the next
     store_kind kind_ = store_kind::poses;
+    obbsat::precision precision_ = obbsat::precision::float32;
     bool checked_ = false;
     pair_filters filters_;  ///< nullptr arrays: the defaults
     const std::uint64_t* ids_ = nullptr;  ///< with_ids: one per row, the caller's

@@ -1,0 +1,137 @@
+// Before step 1 of a scene query over double rows (pair_search.hpp): the
+// method's check, every row's check, and each row's float bounds rounded
+// outward (obbsat/ref/bounds64.hpp) as the float rows the steps run on.
+//
+// Why the answer stays that of the double method over all pairs: each float
+// row is the axis-aligned rectangle of its double rectangle's outward float
+// bounds, whose corner bounds (obbsat/ref/bounds.hpp, least and greatest
+// corner: exact) are those bounds again. Two double rectangles that share a
+// point have exact bounds that overlap, so their outward float bounds do,
+// and the sweep hands the pair to the double method (test_pairs).
+#include "scene/pair_search.hpp"
+
+#include "scene/search_common.hpp"
+#include "support/work_shares.hpp"
+
+#include <obbsat/collide64.hpp>
+#include <obbsat/error.hpp>
+#include <obbsat/pose_records64.hpp>
+#include <obbsat/rect_records64.hpp>
+#include <obbsat/ref/bounds64.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace obbsat::detail {
+
+namespace {
+
+/// True iff the doubles of one row are a valid rectangle of `kind`.
+bool valid_double_row(store_kind kind, const double* v) {
+    if (kind == store_kind::poses) {
+        bool finite = true;
+        for (int k = 0; k < 6; ++k) {
+            finite &= std::isfinite(v[k]);
+        }
+        return finite && !(v[2] < 0.0) && !(v[3] < 0.0) && !(v[4] == 0.0 && v[5] == 0.0);
+    }
+    bool finite = true;
+    for (int k = 0; k < 8; ++k) {
+        finite &= std::isfinite(v[k]);
+    }
+    return finite;
+}
+
+/// Throws the double store's own message for row `id`, which valid_double_row
+/// refused, with "a: " or "b: " in front in a query across two sets.
+[[noreturn]] void refuse_double_row(const query_input& input, std::size_t id) {
+    const bool second = id >= input.a_count;
+    const std::size_t index = second ? id - input.a_count : id;
+    const double* v = double_row_at(input, id);
+    try {
+        if (input.double_kind == store_kind::poses) {
+            require_valid_pose(rect_pose64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, index);
+        } else {
+            require_finite(rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}, index);
+        }
+    } catch (const invalid_input& e) {
+        if (input.b64 == nullptr) {
+            throw;
+        }
+        throw invalid_input(std::string(second ? "b: " : "a: ") + e.what());
+    }
+    throw std::logic_error("obbsat: a double row refused by the scene query passed its store's check");
+}
+
+void require_method_on_double_rows(const collide_options& options, store_kind kind) {
+    if (!is_method(options.test)) {
+        throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
+                            ", which names no method");
+    }
+    if (!runs_on_doubles(options.test, kind)) {
+        std::string offered;
+        for (const method m : methods_on_doubles(kind)) {
+            offered += std::string(offered.empty() ? "" : ", ") + method_name(m);
+        }
+        throw invalid_input(std::string("method ") + method_name(options.test) + " does not run on double " +
+                            (kind == store_kind::poses ? "poses" : "corners") + " (they take " + offered + ")");
+    }
+}
+
+}  // namespace
+
+query_input pair_search::bound_doubles(const query_input& input) {
+    double_bounds_seconds_ = 0;
+    if (!input.doubles) {
+        return input;
+    }
+    require_method_on_double_rows(options_, input.double_kind);
+    const auto start = clock_type::now();
+    const bool self = input.b64 == nullptr;
+    const std::size_t n = input.a_count + (self ? 0 : input.b_count);
+    double_bounds_.resize(n);
+    const std::size_t parts = parts_for(n, options_.threads, min_boxes_per_part);
+    const std::size_t units = units_for(n, parts, min_boxes_per_unit);
+    std::vector<std::size_t> first_bad(units, std::numeric_limits<std::size_t>::max());
+    const bool poses = input.double_kind == store_kind::poses;
+    run_units(units, parts, [&](std::size_t unit) {
+        const auto [begin, end] = share_of(n, unit, units);
+        for (std::size_t id = begin; id < end; ++id) {
+            const double* v = double_row_at(input, id);
+            if (!(id < input.a_count ? input.a64_checked : input.b64_checked) && !valid_double_row(input.double_kind, v)) {
+                first_bad[unit] = std::min(first_bad[unit], id);
+                continue;
+            }
+            const ref::box_bounds b =
+                poses ? ref::bounds_of(rect_pose64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}})
+                      : ref::bounds_of(rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
+            // UL, UR, LR, LL of the bounds: a corner row whose bounds are b exactly.
+            float* row = double_bounds_[id].v;
+            row[0] = b.lo_x, row[1] = b.hi_y, row[2] = b.hi_x, row[3] = b.hi_y;
+            row[4] = b.hi_x, row[5] = b.lo_y, row[6] = b.lo_x, row[7] = b.lo_y;
+        }
+    });
+    for (const std::size_t bad : first_bad) {
+        if (bad != std::numeric_limits<std::size_t>::max()) {
+            refuse_double_row(input, bad);  // units are in order: the first bad row of all
+        }
+    }
+    double_bounds_seconds_ = seconds_since(start);
+    static const float none[8] = {};
+    query_input out = input;
+    out.kind = store_kind::corners;
+    out.a = n == 0 ? none : double_bounds_.data()->v;
+    out.a_stride = 8;
+    out.a_checked = true;
+    if (!self) {
+        out.b = input.b_count == 0 ? none : double_bounds_[input.a_count].v;
+        out.b_stride = 8;
+        out.b_checked = true;
+    }
+    return out;
+}
+
+}  // namespace obbsat::detail

@@ -179,7 +179,8 @@ detail::pair_search& engine_of(const std::unique_ptr<detail::pair_search>& searc
 const std::vector<pair_index>& pair_finder::find(box_view boxes) {
     detail::pair_search& search = engine_of(search_, "find");
     const detail::executor_scope scope(search.caller_executor());
-    const std::vector<pair_index>& found = search.collect(search.bound_doubles(input_of(boxes, nullptr, true)));
+    const detail::query_input input = search.bound_doubles(input_of(boxes, nullptr, true));
+    const std::vector<pair_index>& found = search.collect(input);
     if (events_) {
         events_->update(found, false, input.with_ids ? input.a_ids : nullptr, nullptr, input.a_count, 0);
     }
@@ -189,7 +190,8 @@ const std::vector<pair_index>& pair_finder::find(box_view boxes) {
 const std::vector<pair_index>& pair_finder::find(box_view a, box_view b) {
     detail::pair_search& search = engine_of(search_, "find");
     const detail::executor_scope scope(search.caller_executor());
-    const std::vector<pair_index>& found = search.collect(search.bound_doubles(input_of(a, &b, true)));
+    const detail::query_input input = search.bound_doubles(input_of(a, &b, true));
+    const std::vector<pair_index>& found = search.collect(input);
     if (events_) {
         events_->update(found, true, input.with_ids ? input.a_ids : nullptr, input.with_ids ? input.b_ids : nullptr,
                         input.a_count, input.b_count);

@@ -1,5 +1,7 @@
 # The compiled entry points; the obbsat package checks and converts arguments
 # before calling them.
+from typing import Any
+
 import numpy as np
 import numpy.typing as npt
 

@@ -252,4 +252,40 @@ TEST(ContactsErrors, AnExistingOutputFileIsKeptOnError) {
     EXPECT_EQ(read_file(s.file("c.csv")), "old\n");
 }
 
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+        ++count;
+    }
+    return count;
+}
+
+TEST(DrawContacts, AColliderShowsItsNormalAndPointsAndAnApartPairNone) {
+    scratch s;
+    write_file(s.file("poses.csv"), "0,0,1,0.5,1,0\n1.5,0.3,1,1,0.8,0.6\n5,5,1,1,1,0\n");
+    write_file(s.file("rects.csv"), "0,1,2,1,2,0,0,0\n1,2,3,2,3,0.5,1,0.5\n");
+    write_file(s.file("pairs.csv"), "0,1\n0,2\n");
+    auto r = s.run("draw --poses poses.csv --pairs pairs.csv --select 0,1 --out p.svg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string svg = read_file(s.file("p.svg"));
+    EXPECT_EQ(count_of(svg, "class=\"contact-overlay\""), 1u);  // only the colliding pair 0
+    EXPECT_EQ(count_of(svg, "class=\"contact-normal\""), 1u);
+    EXPECT_EQ(count_of(svg, "class=\"contact-point\""), 2u);
+    // The normal (0.8, 0.6) from A to B: rightwards and, as SVG's y grows downwards, upwards.
+    const std::size_t line = svg.find("class=\"contact-normal\"");
+    const auto value_after = [&](const std::string& name) {
+        const std::size_t at = svg.find(name + "=\"", line) + name.size() + 2;
+        return std::strtod(svg.c_str() + at, nullptr);
+    };
+    EXPECT_GT(value_after("x2"), value_after("x1"));
+    EXPECT_LT(value_after("y2"), value_after("y1"));
+
+    write_file(s.file("one.csv"), "0,1\n");
+    r = s.run("draw --rects rects.csv --pairs one.csv --select 0 --out r.svg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    svg = read_file(s.file("r.svg"));
+    EXPECT_EQ(count_of(svg, "class=\"contact-overlay\""), 1u);
+    EXPECT_GE(count_of(svg, "class=\"contact-point\""), 1u);
+}
+
 }  // namespace

@@ -1,5 +1,6 @@
 #include "draw/svg_pair_panel.hpp"
 
+#include "draw/svg_contact_overlay.hpp"
 #include "draw/svg_pair_axes.hpp"
 #include "draw/svg_pair_contact.hpp"
 #include "draw/svg_pose_axes.hpp"
@@ -11,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,6 +80,7 @@ struct panel_content {
     outline b;
     method_view axes;
     contact_view contact;
+    std::optional<contact_overlay> library_contact;  // the library's normal and points, when it has points
     std::vector<std::string> remarks;  // about the shapes, for the legend
     std::string caption_a;
     std::string caption_b;
@@ -396,6 +399,9 @@ void draw_main_view(writer& out, const panel_content& pair, const method_view& a
         draw_bar(out, w, axis, axis.b_min, axis.b_max, -6, color_b, "extent-b");
         out.close();
     }
+    if (pair.library_contact) {
+        draw_contact_overlay(out, w, *pair.library_contact);
+    }
     if (contact.has_inset) {
         const svg_point spot = w.at(contact.inset_center.x, contact.inset_center.y);
         out.leaf("circle", attributes()
@@ -631,6 +637,7 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     content.b = outline_of(pair.b);
     content.axes = view_of_method(pair.test, pair.a, pair.b, pair.collides);
     content.contact = view_of_contact(pair.a, pair.b, pair.exact);
+    content.library_contact = overlay_of(pair.a, pair.b);
     const oracle::quad_form form_a = oracle::region_of(pair.a).form;
     const oracle::quad_form form_b = oracle::region_of(pair.b).form;
     if (form_a != oracle::quad_form::convex || form_b != oracle::quad_form::convex) {
@@ -655,6 +662,7 @@ void draw_pair_panel(writer& out, const pose_pair_drawing& pair, double left, do
     content.b = outline_of(pair.b, origin);
     content.axes = view_of_pose_method(pair.test, pair.a, pair.b, pair.collides);
     content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin);
+    content.library_contact = overlay_of(pair.a, pair.b, origin);
     for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
         if (!remark.empty()) {
             content.remarks.push_back(remark);

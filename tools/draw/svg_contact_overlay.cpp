@@ -5,6 +5,7 @@
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
 
+#include <cmath>
 #include <vector>
 
 namespace obbsat::svg {
@@ -28,6 +29,28 @@ std::optional<contact> contact_with_points(const Box& a, const Box& b) {
         return std::nullopt;
     }
     return found;
+}
+
+/// The normal's line from `tail` to `head`, with a head of two barbs.
+void draw_arrow(writer& out, svg_point tail, svg_point head, const contact& c) {
+    out.leaf("line", attributes()
+                         .set("class", "contact-normal")
+                         .set("x1", tail.x)
+                         .set("y1", tail.y)
+                         .set("x2", head.x)
+                         .set("y2", head.y)
+                         .set("stroke", color_contact)
+                         .set("stroke-width", 2));
+    const double side_x = -c.ny;  // across the arrow, in SVG coordinates (y down)
+    const double side_y = -c.nx;
+    const svg_point barb_a{head.x - 8 * c.nx + 4 * side_x, head.y + 8 * c.ny + 4 * side_y};
+    const svg_point barb_b{head.x - 8 * c.nx - 4 * side_x, head.y + 8 * c.ny - 4 * side_y};
+    out.leaf("polygon", attributes()
+                            .set("class", "contact-arrowhead")
+                            .set("points", coordinate(head.x) + "," + coordinate(head.y) + " " +
+                                               coordinate(barb_a.x) + "," + coordinate(barb_a.y) + " " +
+                                               coordinate(barb_b.x) + "," + coordinate(barb_b.y))
+                            .set("fill", color_contact));
 }
 
 }  // namespace
@@ -56,30 +79,21 @@ void draw_contact_overlay(writer& out, const window& w, const contact_overlay& o
         mean_y += (static_cast<double>(c.points[k].y) - overlay.origin.y) / c.point_count;
     }
     // The arrow ends at the points' middle and starts a fixed length back
-    // along the normal, on A's side, so it reads "A is pushed this way from B".
+    // along the normal, on A's side: it points from A towards B.
+    // Extreme poses can put a point far outside the panel (or beyond double
+    // range at the panel's scale): only what lies inside the view is drawn.
     const svg_point head = w.at(mean_x, mean_y);
-    const svg_point tail{head.x - arrow_pixels * c.nx, head.y + arrow_pixels * c.ny};
-    out.leaf("line", attributes()
-                         .set("class", "contact-normal")
-                         .set("x1", tail.x)
-                         .set("y1", tail.y)
-                         .set("x2", head.x)
-                         .set("y2", head.y)
-                         .set("stroke", color_contact)
-                         .set("stroke-width", 2));
-    const double side_x = -c.ny;  // across the arrow, in SVG coordinates (y down)
-    const double side_y = -c.nx;
-    const svg_point barb_a{head.x - 8 * c.nx + 4 * side_x, head.y + 8 * c.ny + 4 * side_y};
-    const svg_point barb_b{head.x - 8 * c.nx - 4 * side_x, head.y + 8 * c.ny - 4 * side_y};
-    out.leaf("polygon", attributes()
-                            .set("class", "contact-arrowhead")
-                            .set("points", coordinate(head.x) + "," + coordinate(head.y) + " " +
-                                               coordinate(barb_a.x) + "," + coordinate(barb_a.y) + " " +
-                                               coordinate(barb_b.x) + "," + coordinate(barb_b.y))
-                            .set("fill", color_contact));
+    svg_point tail{head.x - arrow_pixels * c.nx, head.y + arrow_pixels * c.ny};
+    svg_point tip = head;
+    if (w.contains(head) && std::isfinite(tail.x) && std::isfinite(tail.y) && cut_segment(w, tail, tip)) {
+        draw_arrow(out, tail, tip, c);
+    }
     for (std::uint32_t k = 0; k < c.point_count; ++k) {
         const svg_point p = w.at(static_cast<double>(c.points[k].x) - overlay.origin.x,
                                  static_cast<double>(c.points[k].y) - overlay.origin.y);
+        if (!w.contains(p)) {
+            continue;
+        }
         out.leaf("circle", attributes()
                                .set("class", "contact-point")
                                .set("cx", p.x)

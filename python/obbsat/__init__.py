@@ -58,6 +58,8 @@ def __getattr__(name):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
+    "Contacts",
+    "Distances",
     "FindPairsStats",
     "PairFinder",
     "PoseRecords",
@@ -69,7 +71,12 @@ __all__ = [
     "collide",
     "collide_stream",
     "colliding_pairs",
+    "contacts",
+    "contacts_stream",
     "corners_of_poses",
+    "distances",
+    "distances_stream",
+    "find_contacts",
     "find_pairs",
     "methods",
     "records",
@@ -868,3 +875,186 @@ def bounds(boxes, *, precision=None):
     if _is64(boxes):
         return _core.pose_bounds64(boxes) if form == "poses" else _core.corner_bounds64(boxes)
     return _core.pose_bounds(boxes) if form == "poses" else _core.corner_bounds(boxes)
+
+
+class Contacts:
+    """The contacts of K pairs (A, B), one row per pair, as new numpy arrays
+    (``obbsat/contact_manifold.hpp`` holds the meaning of every value):
+
+    - ``normals``: float32 (K, 2), the unit normal from A to B;
+    - ``depths``: float32 (K,), the penetration along it (> 0 overlapping,
+      0 touching, < 0 apart);
+    - ``counts``: uint8 (K,), how many points (0, 1 or 2) are meaningful;
+    - ``points``: float32 (K, 2, 2), the points x, y;
+    - ``separations``: float32 (K, 2), each point's signed distance from the
+      reference face (< 0 penetrating);
+    - ``features``: uint32 (K, 2), each point's feature key
+      ``index_a | type_a << 8 | index_b << 16 | type_b << 24``, an index
+      0 to 3 and a type (0 a corner UL, UR, LR, LL; 1 the edge from corner
+      k to corner k + 1) for each box; equal keys from one step to the next
+      name the same corner touching the same edge.
+
+    The points k >= ``counts[i]`` of row i are all zero.
+    """
+
+    __slots__ = ("normals", "depths", "counts", "points", "separations", "features")
+
+    def __init__(self, columns):
+        for name in self.__slots__:
+            setattr(self, name, columns[name])
+
+    def __len__(self):
+        return len(self.depths)
+
+    def __repr__(self):
+        return f"Contacts({len(self)} pairs, {int(_np.count_nonzero(self.counts))} with points)"
+
+
+class Distances:
+    """The distances of K pairs (A, B) and a closest point of each, new numpy
+    arrays: ``distance`` float32 (K,), ``a`` float32 (K, 2) a point of A at
+    that distance from B, ``b`` float32 (K, 2) a point of B. A pair that
+    collides (touching included) has every value +0."""
+
+    __slots__ = ("distance", "a", "b")
+
+    def __init__(self, columns):
+        for name in self.__slots__:
+            setattr(self, name, columns[name])
+
+    def __len__(self):
+        return len(self.distance)
+
+    def __repr__(self):
+        return f"Distances({len(self)} pairs)"
+
+
+def _margin(margin):
+    """``margin`` as a float; the library refuses a negative or non-finite one (ValueError)."""
+    if isinstance(margin, (str, bytes)) or not isinstance(margin, (int, float, _np.integer, _np.floating)):
+        raise TypeError(f"margin must be a number, not {type(margin).__name__}")
+    return float(margin)
+
+
+def _boxes(boxes, call):
+    """The boxes of a pair-list call: a store as it is, an array as :func:`_form` gives it."""
+    if isinstance(boxes, (RectRecords, PoseRecords)):
+        return boxes
+    return _form(boxes, "boxes")[1]
+
+
+def _stream_pair(a, b, call):
+    """Both batches of a stream call, of one form and equal length."""
+    for what, batch in (("a", a), ("b", b)):
+        _refuse_store(batch, call, what,
+                      "an array of corners, (N, 8) or (N, 4, 2), or of poses, (N, 6), not a store")
+    form_a, a = _form(a, "a")
+    form_b, b = _form(b, "b")
+    if form_a != form_b:
+        raise ValueError(f"a holds {form_a} (shape {a.shape}), b holds {form_b} (shape {b.shape}): "
+                         "a stream compares one form")
+    if len(a) != len(b):
+        raise ValueError(f"stream batches differ in length: {len(a)} in a, {len(b)} in b")
+    return a, b
+
+
+def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1):
+    """The contact of each pair of boxes (``obbsat::contact_pairs``): normal,
+    depth and up to two points with feature keys, as a physics solver needs
+    them, bit for bit the same on every backend and thread count.
+
+    ``boxes`` and ``pairs`` are as in :func:`collide` (poses (N, 6), corners
+    (N, 8) or (N, 4, 2), or a :func:`records` store); corners must be strictly
+    convex quads (``docs/contacts.md``). ``margin`` (finite, >= 0): pairs
+    apart by at most this much get points too. The GIL is released.
+
+    Returns a :class:`Contacts`, one row per pair. Raises ``IndexError`` for an
+    index out of range (naming the pair), ``ValueError`` for a bad box (naming
+    the row and field), margin, backend or threads, ``TypeError`` for a
+    non-numeric dtype or a store passed as ``pairs``.
+
+    >>> poses = np.array([[0, 0, 1, 1, 1, 0], [1.5, 0, 1, 1, 1, 0]], dtype=np.float32)
+    >>> c = obbsat.contacts(poses, [[0, 1]])
+    >>> c.normals[0], float(c.depths[0]), int(c.counts[0])
+    (array([1., 0.], dtype=float32), 0.5, 2)
+    """
+    _refuse_store(pairs, "contacts", "pairs", _PAIRS_EXPECTED)
+    threads = _threads(threads)
+    margin = _margin(margin)
+    boxes = _boxes(boxes, "contacts")
+    pairs = _pairs(pairs, len(boxes))
+    return Contacts(_core.contacts_of_pairs(boxes, pairs, margin, _backend(backend), threads))
+
+
+def contacts_stream(a, b, *, margin=0.0, backend="auto", threads=1):
+    """The contact of ``a[k]`` and ``b[k]`` for every k: two arrays of one
+    form and equal length (copied into the library's stores, which checks
+    them; errors name ``a`` or ``b``). Otherwise as :func:`contacts`.
+
+    >>> a = np.array([[0, 0, 1, 1, 1, 0]] * 2, dtype=np.float32)
+    >>> b = np.array([[1.5, 0, 1, 1, 1, 0], [0, 1.75, 1, 1, 1, 0]], dtype=np.float32)
+    >>> obbsat.contacts_stream(a, b).depths
+    array([0.5 , 0.25], dtype=float32)
+    """
+    threads = _threads(threads)
+    margin = _margin(margin)
+    a, b = _stream_pair(a, b, "contacts_stream")
+    return Contacts(_core.contacts_of_stream(a, b, margin, _backend(backend), threads))
+
+
+def distances(boxes, pairs, *, backend="auto", threads=1):
+    """The Euclidean distance of each pair of boxes and a closest point of
+    each (``obbsat::distance_pairs``); every value +0 for a pair that
+    collides. Arguments and errors as :func:`contacts` (an array is copied
+    into a store first). Returns a :class:`Distances`.
+
+    >>> poses = np.array([[0, 0, 1, 1, 1, 0], [4, 0, 1, 1, 1, 0]], dtype=np.float32)
+    >>> d = obbsat.distances(poses, [[0, 1]])
+    >>> float(d.distance[0]), d.a[0], d.b[0]
+    (2.0, array([1., 1.], dtype=float32), array([3., 1.], dtype=float32))
+    """
+    _refuse_store(pairs, "distances", "pairs", _PAIRS_EXPECTED)
+    threads = _threads(threads)
+    boxes = _boxes(boxes, "distances")
+    pairs = _pairs(pairs, len(boxes))
+    return Distances(_core.distances_of_pairs(boxes, pairs, _backend(backend), threads))
+
+
+def distances_stream(a, b, *, backend="auto", threads=1):
+    """The distance of ``a[k]`` and ``b[k]`` for every k; as :func:`distances`
+    and :func:`contacts_stream`.
+
+    >>> a = np.array([[0, 0, 1, 1, 1, 0]] * 2, dtype=np.float32)
+    >>> b = np.array([[1.5, 0, 1, 1, 1, 0], [0, 5, 1, 1, 1, 0]], dtype=np.float32)
+    >>> obbsat.distances_stream(a, b).distance
+    array([0., 3.], dtype=float32)
+    """
+    threads = _threads(threads)
+    a, b = _stream_pair(a, b, "distances_stream")
+    return Distances(_core.distances_of_stream(a, b, _backend(backend), threads))
+
+
+def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=1):
+    """Every colliding pair of a scene with its contact (``obbsat::find_contacts``):
+    ``(pairs, contacts)``, pairs uint32 (K, 2) sorted by i then j (i < j) as
+    :func:`find_pairs` gives them, and a :class:`Contacts` row for each.
+
+    With ``margin`` > 0, also every other pair apart by at most the margin
+    whose contact has points (found by bounds widened by the margin; see
+    ``obbsat/find_contacts.hpp``). Arguments and errors as :func:`find_pairs`
+    and :func:`contacts`; the GIL is released.
+
+    >>> poses = np.array([[0, 0, 1, 1, 1, 0], [1.5, 0, 1, 1, 1, 0], [3.6, 0, 1, 1, 1, 0]], dtype=np.float32)
+    >>> pairs, c = obbsat.find_contacts(poses)
+    >>> pairs
+    array([[0, 1]], dtype=uint32)
+    >>> obbsat.find_contacts(poses, margin=0.2)[0]
+    array([[0, 1],
+           [1, 2]], dtype=uint32)
+    """
+    method = _SCENE_METHOD if method is None else method
+    threads = _threads(threads)
+    margin = _margin(margin)
+    _, boxes = _scene_form(boxes, "boxes")
+    pairs, columns = _core.find_contacts(boxes, method, margin, _backend(backend), threads)
+    return pairs, Contacts(columns)

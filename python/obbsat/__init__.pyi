@@ -109,3 +109,46 @@ class PairFinder:
 def bounds(
     boxes: npt.ArrayLike | RectRecords | PoseRecords, *, precision: _Precision = ...
 ) -> npt.NDArray[np.float32]: ...
+
+class Contacts:
+    normals: npt.NDArray[np.float32]
+    depths: npt.NDArray[np.float32]
+    counts: npt.NDArray[np.uint8]
+    points: npt.NDArray[np.float32]
+    separations: npt.NDArray[np.float32]
+    features: npt.NDArray[np.uint32]
+    def __init__(self, columns: dict[str, Any]) -> None: ...
+    def __len__(self) -> int: ...
+
+class Distances:
+    distance: npt.NDArray[np.float32]
+    a: npt.NDArray[np.float32]
+    b: npt.NDArray[np.float32]
+    def __init__(self, columns: dict[str, Any]) -> None: ...
+    def __len__(self) -> int: ...
+
+def contacts(
+    boxes: npt.ArrayLike | RectRecords | PoseRecords,
+    pairs: npt.ArrayLike,
+    *,
+    margin: float = ...,
+    backend: str | None = ...,
+    threads: int = ...,
+) -> Contacts: ...
+def contacts_stream(
+    a: npt.ArrayLike, b: npt.ArrayLike, *, margin: float = ..., backend: str | None = ..., threads: int = ...
+) -> Contacts: ...
+def distances(
+    boxes: npt.ArrayLike | RectRecords | PoseRecords, pairs: npt.ArrayLike, *, backend: str | None = ..., threads: int = ...
+) -> Distances: ...
+def distances_stream(
+    a: npt.ArrayLike, b: npt.ArrayLike, *, backend: str | None = ..., threads: int = ...
+) -> Distances: ...
+def find_contacts(
+    boxes: npt.ArrayLike | RectRecords | PoseRecords,
+    *,
+    method: str | None = ...,
+    margin: float = ...,
+    backend: str | None = ...,
+    threads: int = ...,
+) -> tuple[npt.NDArray[np.uint32], Contacts]: ...

@@ -27,6 +27,8 @@
 // pose field, a method that does not run on the store, batches of unequal
 // length); obbsat::unsupported_backend becomes obbsat.UnsupportedBackendError,
 // a ValueError. Nothing is written then.
+#include "contacts_module.hpp"
+
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/collide64.hpp>
@@ -1108,6 +1110,7 @@ py::tuple make_scene(std::size_t rects, std::size_t pairs, const std::string& de
 PYBIND11_MODULE(_core, m) {
     m.doc() = "obbsat's compiled entry points; use the obbsat package, which checks and converts arguments.";
     py::register_exception<obbsat::unsupported_backend>(m, "UnsupportedBackendError", PyExc_ValueError);
+    register_contacts(m);
 
     m.def("collide_records", &collide_records, py::arg("rects"), py::arg("pairs"), py::arg("out"),
           py::arg("method"), py::arg("backend"), py::arg("threads"),

@@ -24,11 +24,15 @@ int run_backends(const arguments& args);
 int run_demo(const arguments& args);
 int run_draw(const arguments& args);
 int run_pairs(const arguments& args);
+int run_contacts(const arguments& args);
+int run_distance(const arguments& args);
 
 void print_collide_help(std::FILE* out);
 void print_backends_help(std::FILE* out);
 void print_demo_help(std::FILE* out);
 void print_draw_help(std::FILE* out);
 void print_pairs_help(std::FILE* out);
+void print_contacts_help(std::FILE* out);
+void print_distance_help(std::FILE* out);
 
 }  // namespace obbsat::cli

@@ -39,6 +39,8 @@ constexpr subcommand subcommands[] = {
      print_collide_help},
     {"pairs", "every colliding pair of a rectangle file, or across two, sorted", run_pairs,
      print_pairs_help},
+    {"contacts", "normal, depth and contact points of every colliding pair, or of a pair file", run_contacts, print_contacts_help},
+    {"distance", "distance and closest points of each pair of a pair file", run_distance, print_distance_help},
     {"backends", "the backends compiled in, which this CPU runs, and which 'auto' picks",
      run_backends, print_backends_help},
     {"demo", "time every backend on a seeded scene and check they all agree", run_demo,

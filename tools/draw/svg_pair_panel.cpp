@@ -1,5 +1,6 @@
 #include "draw/svg_pair_panel.hpp"
 
+#include "draw/svg_contact_overlay.hpp"
 #include "draw/svg_double_axes.hpp"
 
 #include "draw/svg_pair_axes.hpp"
@@ -13,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -94,6 +96,7 @@ struct panel_content {
     outline b;
     method_view axes;
     contact_view contact;
+    std::optional<contact_overlay> library_contact;  // the library's normal and points, when it has points
     std::vector<std::string> remarks;  // about the shapes, for the legend
     std::string caption_a;
     std::string caption_b;
@@ -412,6 +415,9 @@ void draw_main_view(writer& out, const panel_content& pair, const method_view& a
         draw_bar(out, w, axis, axis.b_min, axis.b_max, -6, color_b, "extent-b");
         out.close();
     }
+    if (pair.library_contact) {
+        draw_contact_overlay(out, w, *pair.library_contact);
+    }
     if (contact.has_inset) {
         const svg_point spot = w.at(contact.inset_center.x, contact.inset_center.y);
         out.leaf("circle", attributes()
@@ -663,6 +669,7 @@ void draw_pair_panel(writer& out, const pair_drawing& pair, double left, double 
     content.b = outline_of(pair.b);
     content.axes = view_of_method(pair.test, pair.a, pair.b, pair.collides);
     content.contact = view_of_contact(pair.a, pair.b, pair.exact);
+    content.library_contact = overlay_of(pair.a, pair.b);
     const oracle::quad_form form_a = oracle::region_of(pair.a).form;
     const oracle::quad_form form_b = oracle::region_of(pair.b).form;
     if (form_a != oracle::quad_form::convex || form_b != oracle::quad_form::convex) {
@@ -703,6 +710,10 @@ void draw_pose_pair_panel(writer& out, const PoseDrawing& pair, double left, dou
     content.axes = view_of_poses(pair.test, pair.a, pair.b, pair.collides);
     content.contact = view_of_contact(content.a.corners, content.b.corners, pair.exact, origin,
                                       doubles ? value_type::float64 : value_type::float32);
+    if constexpr (!doubles) {
+        // The library's contacts are float32: drawn over float pairs only.
+        content.library_contact = overlay_of(pair.a, pair.b, origin);
+    }
     for (const std::string& remark : {pose_remark("A", pair.a), pose_remark("B", pair.b)}) {
         if (!remark.empty()) {
             content.remarks.push_back(remark);

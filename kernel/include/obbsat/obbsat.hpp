@@ -7,6 +7,7 @@
 #include <obbsat/contact.hpp>
 #include <obbsat/digest.hpp>
 #include <obbsat/error.hpp>
+#include <obbsat/find_contacts.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose.hpp>

@@ -1,0 +1,9 @@
+// The contact and distance calls of obbsat._core (contacts_module.cpp), kept
+// in their own file so that the module's collide calls and these grow apart.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+/// Adds contacts_of_pairs, contacts_of_stream, distances_of_pairs,
+/// distances_of_stream and find_contacts to the module `m`.
+void register_contacts(pybind11::module_& m);

@@ -1,0 +1,250 @@
+"""obbsat.contacts, contacts_stream, distances, distances_stream and
+find_contacts: hand-checked cases, the arrays bit for bit equal to the
+library's values as the command-line program prints them (shortest
+round-trip text), the same bits on every backend, thread count, store and
+layout, the errors of collide, and the GIL released."""
+
+import os
+import pathlib
+import subprocess
+import tempfile
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import obbsat
+
+
+def square(cx, cy, h=1.0):
+    return [cx, cy, h, h, 1.0, 0.0]
+
+
+@pytest.fixture(scope="module")
+def scene():
+    poses = obbsat.testing.make_pose_scene(boxes=3000, sizes="mixed", pairs_per_box=2.0, seed=4)
+    rng = np.random.default_rng(7)
+    pairs = rng.integers(0, len(poses), size=(4000, 2)).astype(np.uint32)
+    pairs = np.concatenate([obbsat.find_pairs(poses), pairs])
+    return np.ascontiguousarray(poses, dtype=np.float32), pairs
+
+
+# --- Hand-checked cases ---------------------------------------------------------
+
+def test_two_overlapping_squares():
+    poses = np.array([square(0, 0), square(1.5, 0)], dtype=np.float32)
+    c = obbsat.contacts(poses, [[0, 1]])
+    assert len(c) == 1
+    assert c.normals.tolist() == [[1.0, 0.0]]
+    assert c.depths.tolist() == [0.5]
+    assert c.counts.tolist() == [2]
+    assert sorted(c.points[0].tolist()) == [[0.5, -1.0], [0.5, 1.0]]
+    assert c.separations.tolist() == [[-0.5, -0.5]]
+    # Each key: one side a face (type 1), the other a corner (type 0).
+    for key in c.features[0]:
+        type_a, type_b = (int(key) >> 8) & 0xFF, (int(key) >> 24) & 0xFF
+        assert {type_a, type_b} == {0, 1}
+        assert (int(key) & 0xFF) < 4 and ((int(key) >> 16) & 0xFF) < 4
+    assert c.normals.dtype == np.float32 and c.counts.dtype == np.uint8 and c.features.dtype == np.uint32
+    assert c.points.shape == (1, 2, 2) and c.separations.shape == (1, 2) and c.features.shape == (1, 2)
+
+
+def test_apart_pairs_have_no_points_unless_within_the_margin():
+    poses = np.array([square(0, 0), square(2.5, 0)], dtype=np.float32)
+    c = obbsat.contacts(poses, [[0, 1]])
+    assert c.counts.tolist() == [0]
+    assert c.depths[0] == np.float32(-0.5)
+    assert c.points.tolist() == [[[0, 0], [0, 0]]] and c.features.tolist() == [[0, 0]]
+    near = obbsat.contacts(poses, [[0, 1]], margin=0.5)
+    assert near.counts.tolist() == [2]
+    assert near.separations.tolist() == [[0.5, 0.5]]
+
+
+def test_distances_of_apart_and_colliding_pairs():
+    poses = np.array([square(0, 0), square(4, 0), square(1, 1)], dtype=np.float32)
+    d = obbsat.distances(poses, [[0, 1], [0, 2]])
+    assert d.distance.tolist() == [2.0, 0.0]
+    assert d.a[0, 0] == 1.0 and d.b[0, 0] == 3.0 and d.a[0, 1] == d.b[0, 1]
+    assert d.a[1].tolist() == [0.0, 0.0] and d.b[1].tolist() == [0.0, 0.0]  # colliding: every value +0
+    assert not np.signbit(d.a[1]).any()
+
+
+def test_find_contacts_of_a_row_of_squares():
+    poses = np.array([square(0, 0), square(1.5, 0), square(3.6, 0), square(9, 9)], dtype=np.float32)
+    pairs, c = obbsat.find_contacts(poses)
+    assert pairs.tolist() == [[0, 1]] and pairs.dtype == np.uint32
+    assert c.depths.tolist() == [0.5]
+    pairs, c = obbsat.find_contacts(poses, margin=0.2)
+    assert pairs.tolist() == [[0, 1], [1, 2]]
+    assert c.counts.tolist() == [2, 2]
+
+
+# --- The library's values ---------------------------------------------------------
+
+def run_cli(args):
+    program = os.environ.get("OBBSAT_CLI")
+    if not program:
+        pytest.skip("OBBSAT_CLI names no command-line program")
+    result = subprocess.run([program] + args, capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    return result.stdout.splitlines()
+
+
+def write_inputs(folder, poses, pairs):
+    pose_path = pathlib.Path(folder) / "poses.csv"
+    pose_path.write_text("".join(",".join(float(v).hex() for v in row) + "\n" for row in poses))
+    pair_path = pathlib.Path(folder) / "pairs.csv"
+    pair_path.write_text("".join(f"{i},{j}\n" for i, j in pairs))
+    return str(pose_path), str(pair_path)
+
+
+def bits(values):
+    return np.asarray(values, dtype=np.float32).view(np.uint32)
+
+
+def test_contacts_equal_the_programs_values_bit_for_bit(scene):
+    poses, pairs = scene
+    c = obbsat.contacts(poses, pairs, margin=0.05)
+    with tempfile.TemporaryDirectory() as folder:
+        pose_path, pair_path = write_inputs(folder, poses, pairs)
+        lines = run_cli(["contacts", "--poses", pose_path, "--pairs", pair_path, "--margin", "0.05"])
+    kept = np.flatnonzero(c.counts > 0)
+    assert len(lines) == len(kept) > 100
+    for line, k in zip(lines, kept):
+        f = line.split(",")
+        assert [int(f[0]), int(f[1])] == pairs[k].tolist()
+        assert bits([float(v) for v in f[2:5]]).tolist() == bits([*c.normals[k], c.depths[k]]).tolist()
+        assert int(f[5]) == c.counts[k]
+        for p in range(c.counts[k]):
+            got = bits([float(v) for v in f[6 + 3 * p:9 + 3 * p]]).tolist()
+            assert got == bits([*c.points[k, p], c.separations[k, p]]).tolist()
+
+
+def test_distances_equal_the_programs_values_bit_for_bit(scene):
+    poses, pairs = scene
+    d = obbsat.distances(poses, pairs)
+    with tempfile.TemporaryDirectory() as folder:
+        pose_path, pair_path = write_inputs(folder, poses, pairs)
+        lines = run_cli(["distance", "--poses", pose_path, "--pairs", pair_path])
+    assert len(lines) == len(pairs)
+    got = np.array([[float(v) for v in line.split(",")[2:]] for line in lines])
+    expected = np.column_stack([d.distance, d.a, d.b])
+    assert (bits(got) == bits(expected)).all()
+
+
+def test_find_contacts_equals_the_programs_scene(scene):
+    poses, _ = scene
+    pairs, c = obbsat.find_contacts(poses, margin=0.05)
+    with tempfile.TemporaryDirectory() as folder:
+        pose_path, _ = write_inputs(folder, poses, [])
+        lines = run_cli(["contacts", "--poses", pose_path, "--margin", "0.05"])
+    assert [[int(v) for v in line.split(",")[:2]] for line in lines] == pairs.tolist()
+    assert bits([float(line.split(",")[4]) for line in lines]).tolist() == bits(c.depths).tolist()
+
+
+def same_contacts(x, y):
+    for name in ("normals", "depths", "counts", "points", "separations", "features"):
+        a, b = getattr(x, name), getattr(y, name)
+        assert a.dtype == b.dtype and a.shape == b.shape
+        assert a.tobytes() == b.tobytes(), name
+
+
+def test_every_backend_thread_count_store_and_layout_gives_the_same_bits(scene):
+    poses, pairs = scene
+    first = obbsat.contacts(poses, pairs, margin=0.05, backend="scalar")
+    for backend in obbsat.backends():
+        for threads in (1, 3):
+            same_contacts(obbsat.contacts(poses, pairs, margin=0.05, backend=backend, threads=threads), first)
+    same_contacts(obbsat.contacts(obbsat.records(poses), pairs, margin=0.05), first)
+    same_contacts(obbsat.contacts(poses.astype(np.float64), pairs.astype(np.int64), margin=0.05), first)
+    same_contacts(obbsat.contacts_stream(poses[pairs[:, 0]], poses[pairs[:, 1]], margin=0.05), first)
+    corners = obbsat.corners_of_poses(poses)
+    on_corners = obbsat.contacts(corners, pairs)
+    same_contacts(obbsat.contacts(obbsat.records(corners), pairs), on_corners)
+    same_contacts(obbsat.contacts(corners.reshape(-1, 8), pairs), on_corners)
+    same_contacts(obbsat.contacts_stream(corners[pairs[:, 0]], corners[pairs[:, 1]]), on_corners)
+    d = obbsat.distances(poses, pairs, backend="scalar")
+    for other in (obbsat.distances(obbsat.records(poses), pairs, threads=2),
+                  obbsat.distances_stream(poses[pairs[:, 0]], poses[pairs[:, 1]])):
+        assert other.distance.tobytes() == d.distance.tobytes() and other.a.tobytes() == d.a.tobytes()
+        assert other.b.tobytes() == d.b.tobytes()
+    dc = obbsat.distances(corners, pairs)
+    assert dc.distance.tobytes() == obbsat.distances(obbsat.records(corners), pairs).distance.tobytes()
+
+
+def test_find_contacts_equals_contacts_on_its_pairs(scene):
+    poses, _ = scene
+    for margin in (0.0, 0.05):
+        pairs, c = obbsat.find_contacts(poses, margin=margin, threads=2)
+        same_contacts(obbsat.contacts(poses, pairs, margin=margin), c)
+        store_pairs, store_c = obbsat.find_contacts(obbsat.records(poses), margin=margin)
+        assert store_pairs.tolist() == pairs.tolist()
+        same_contacts(store_c, c)
+    exact = obbsat.find_pairs(poses)
+    assert obbsat.find_contacts(poses)[0].tolist() == exact.tolist()
+    assert len(obbsat.find_contacts(poses, margin=0.05)[0]) > len(exact)
+
+
+# --- Errors ----------------------------------------------------------------------
+
+def test_errors_name_the_argument_the_row_or_the_pair():
+    poses = np.array([square(0, 0), square(1.5, 0)], dtype=np.float32)
+    with pytest.raises(IndexError, match="pair 1"):
+        obbsat.contacts(poses, [[0, 1], [0, 2]])
+    with pytest.raises(IndexError, match="pair 0"):
+        obbsat.distances(poses, [[-1, 0]])
+    bad = poses.copy()
+    bad[1, 3] = np.nan
+    with pytest.raises(ValueError, match="pose 1"):
+        obbsat.contacts(bad, [[0, 1]])
+    with pytest.raises(ValueError, match="pose 1"):
+        obbsat.find_contacts(bad)
+    with pytest.raises(ValueError, match="b: pose 1"):
+        obbsat.contacts_stream(poses, bad)
+    for margin in (-1.0, float("nan"), float("inf"), 1e300):
+        with pytest.raises(ValueError, match="margin"):
+            obbsat.contacts(poses, [[0, 1]], margin=margin)
+    with pytest.raises(ValueError, match="margin"):
+        obbsat.find_contacts(poses, margin=-0.5)
+    with pytest.raises(TypeError, match="margin"):
+        obbsat.contacts(poses, [[0, 1]], margin="0.1")
+    with pytest.raises(ValueError, match="shape"):
+        obbsat.contacts(np.zeros((2, 5), dtype=np.float32), [[0, 1]])
+    with pytest.raises(TypeError, match="pairs"):
+        obbsat.contacts(poses, [[0.0, 1.0]])
+    with pytest.raises(TypeError, match="pairs"):
+        obbsat.contacts(poses, obbsat.records(poses))
+    with pytest.raises(ValueError, match="backend"):
+        obbsat.contacts(poses, [[0, 1]], backend="mmx")
+    with pytest.raises(ValueError, match="threads"):
+        obbsat.distances(poses, [[0, 1]], threads=-1)
+    with pytest.raises(ValueError, match="differ in length"):
+        obbsat.distances_stream(poses, poses[:1])
+    with pytest.raises(ValueError, match="one form"):
+        obbsat.contacts_stream(poses, obbsat.corners_of_poses(poses))
+    with pytest.raises(TypeError, match="store"):
+        obbsat.contacts_stream(obbsat.records(poses), poses)
+    with pytest.raises(ValueError, match="method"):
+        obbsat.find_contacts(poses, method="sat4")
+    bow_tie = np.array([[0, 0, 1, 1, 1, 0, 0, 1], [0, 1, 2, 1, 2, 0, 0, 0]], dtype=np.float32)
+    with pytest.raises(ValueError, match="rectangle 0"):
+        obbsat.contacts(bow_tie, [[1, 1]])
+
+
+# --- The GIL ---------------------------------------------------------------------
+
+def test_python_runs_while_contacts_are_computed():
+    poses = obbsat.testing.make_pose_scene(boxes=200_000, pairs_per_box=2.0, seed=3)
+    pairs = obbsat.find_pairs(poses)
+    pairs = np.concatenate([pairs] * 4)
+    worker = threading.Thread(target=lambda: obbsat.contacts(poses, pairs, backend="scalar"))
+    started = time.perf_counter()
+    worker.start()
+    steps = 0
+    while worker.is_alive():
+        steps += 1
+    took = time.perf_counter() - started
+    assert took > 0.02, "the call was too short to tell"
+    # Held, the GIL would stall this loop for the whole call; released, it spins at millions of steps a second.
+    assert steps > 1000 * took * 100

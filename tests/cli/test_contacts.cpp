@@ -1,0 +1,291 @@
+// `obbsat contacts` and `obbsat distance`, run as a user runs them: every
+// value read back from the output equals, bit for bit, what the library's
+// find_contacts, contact_pairs and distance_pairs give on the same boxes;
+// which pairs are written (a scene, a list, a margin); the header; errors with
+// file and line and nothing written.
+#include "program_runner.hpp"
+
+#include <obbsat/contact.hpp>
+#include <obbsat/find_contacts.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/pose_scene.hpp>
+#include <obbsat/rect_records.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using obbsat::contact;
+using obbsat::pair_index;
+using obbsat::rect_pose;
+using obbsat::cli_test::lines_of;
+using obbsat::cli_test::read_file;
+using obbsat::cli_test::scratch;
+using obbsat::cli_test::write_file;
+
+std::vector<rect_pose> scene_rows() {
+    obbsat::pose_scene_spec spec;
+    spec.seed = 21;
+    spec.boxes = 400;
+    spec.sizes = obbsat::scene_sizes::mixed;
+    spec.pairs_per_box = 2.0;
+    return obbsat::make_pose_scene(spec);
+}
+
+std::string pose_file(const std::vector<rect_pose>& rows) {
+    std::string text;
+    char line[256];
+    for (const rect_pose& p : rows) {
+        std::snprintf(line, sizeof line, "%a,%a,%a,%a,%a,%a\n", double{p.center.x}, double{p.center.y},
+                      double{p.half_extents.x}, double{p.half_extents.y}, double{p.rotation.x},
+                      double{p.rotation.y});
+        text += line;
+    }
+    return text;
+}
+
+std::vector<std::string> fields_of(const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) {
+        fields.push_back(field);
+    }
+    if (!line.empty() && line.back() == ',') {
+        fields.emplace_back();
+    }
+    return fields;
+}
+
+/// The float a field holds, bit for bit as read back.
+std::uint32_t bits_of(const std::string& field) {
+    char* end = nullptr;
+    const float value = std::strtof(field.c_str(), &end);
+    EXPECT_EQ(end, field.c_str() + field.size()) << "not a number: '" << field << "'";
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+std::uint32_t bits_of(float value) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+/// Checks one output line against the pair and its contact.
+void expect_line(const std::string& line, const pair_index& pair, const contact& c) {
+    const std::vector<std::string> f = fields_of(line);
+    ASSERT_EQ(f.size(), 12u) << line;
+    EXPECT_EQ(f[0], std::to_string(pair.a)) << line;
+    EXPECT_EQ(f[1], std::to_string(pair.b)) << line;
+    EXPECT_EQ(bits_of(f[2]), bits_of(c.nx)) << line;
+    EXPECT_EQ(bits_of(f[3]), bits_of(c.ny)) << line;
+    EXPECT_EQ(bits_of(f[4]), bits_of(c.depth)) << line;
+    EXPECT_EQ(f[5], std::to_string(c.point_count)) << line;
+    for (std::uint32_t p = 0; p < 2; ++p) {
+        if (p < c.point_count) {
+            EXPECT_EQ(bits_of(f[6 + 3 * p]), bits_of(c.points[p].x)) << line;
+            EXPECT_EQ(bits_of(f[7 + 3 * p]), bits_of(c.points[p].y)) << line;
+            EXPECT_EQ(bits_of(f[8 + 3 * p]), bits_of(c.points[p].separation)) << line;
+        } else {
+            EXPECT_EQ(f[6 + 3 * p] + f[7 + 3 * p] + f[8 + 3 * p], "") << line;
+        }
+    }
+}
+
+obbsat::collide_options exact() {
+    obbsat::collide_options options;
+    options.test = obbsat::method::exact;
+    return options;
+}
+
+TEST(Contacts, SceneLinesAreFindContactsBitForBit) {
+    scratch s;
+    const std::vector<rect_pose> rows = scene_rows();
+    write_file(s.file("poses.csv"), pose_file(rows));
+    for (const char* margin : {"0", "0.125"}) {
+        SCOPED_TRACE(margin);
+        const auto r = s.run(std::string("contacts --poses poses.csv --threads 2 --margin ") + margin);
+        ASSERT_EQ(r.status, 0) << r.err;
+        const obbsat::scene_contacts expected = obbsat::find_contacts(rows, exact(), std::strtof(margin, nullptr));
+        const std::vector<std::string> lines = lines_of(r.out);
+        ASSERT_EQ(lines.size(), expected.pairs.size());
+        ASSERT_FALSE(lines.empty());
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+            expect_line(lines[k], expected.pairs[k], expected.contacts[k]);
+        }
+    }
+    const auto near = s.run("contacts --poses poses.csv --margin 0.125");
+    const auto touching = s.run("contacts --poses poses.csv");
+    EXPECT_GT(lines_of(near.out).size(), lines_of(touching.out).size());
+}
+
+TEST(Contacts, ListLinesAreThePairsWithPointsInListOrder) {
+    scratch s;
+    // Overlapping, apart by 0.1, apart by 1.6; the list runs backwards.
+    write_file(s.file("poses.csv"), "cx,cy,hx,hy,c,s\n0,0,1,1,1,0\n1.5,0,1,1,1,0\n3.6,0,1,1,1,0\n");
+    write_file(s.file("pairs.csv"), "1,2\n0,2\n1,0\n");
+    const std::vector<rect_pose> rows = {
+        {{0, 0}, {1, 1}, {1, 0}}, {{1.5f, 0}, {1, 1}, {1, 0}}, {{3.6f, 0}, {1, 1}, {1, 0}}};
+    const obbsat::pose_records store(rows);
+    const std::vector<pair_index> pairs = {{1, 2}, {0, 2}, {1, 0}};
+
+    const auto r = s.run("contacts --poses poses.csv --pairs pairs.csv --header");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> lines = lines_of(r.out);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2");
+    expect_line(lines[1], pairs[2], obbsat::contact_pairs(store, {pairs[2]})[0]);
+
+    obbsat::contact_options options;
+    options.margin = 0.2f;
+    const auto near = s.run("contacts --poses poses.csv --pairs pairs.csv --margin 0.2");
+    ASSERT_EQ(near.status, 0) << near.err;
+    lines = lines_of(near.out);
+    const std::vector<contact> contacts = obbsat::contact_pairs(store, pairs, options);
+    ASSERT_EQ(lines.size(), 2u);
+    expect_line(lines[0], pairs[0], contacts[0]);
+    expect_line(lines[1], pairs[2], contacts[2]);
+}
+
+TEST(Contacts, CornerFileMatchesContactPairs) {
+    scratch s;
+    write_file(s.file("rects.csv"), "0,1,2,1,2,0,0,0\n1,2,3,2,3,0.5,1,0.5\n");
+    const auto r = s.run("contacts --rects rects.csv --out c.csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    const obbsat::rect rects[] = {{{0, 1}, {2, 1}, {2, 0}, {0, 0}}, {{1, 2}, {3, 2}, {3, 0.5f}, {1, 0.5f}}};
+    const obbsat::rect_records store(rects, 2);
+    const std::vector<std::string> lines = lines_of(read_file(s.file("c.csv")));
+    ASSERT_EQ(lines.size(), 1u);
+    expect_line(lines[0], {0, 1}, obbsat::contact_pairs(store, {{0, 1}})[0]);
+}
+
+TEST(Distance, LinesAreDistancePairsBitForBit) {
+    scratch s;
+    const std::vector<rect_pose> rows = scene_rows();
+    write_file(s.file("poses.csv"), pose_file(rows));
+    std::string pair_text;
+    std::vector<pair_index> pairs;
+    for (std::uint32_t k = 0; k < 300; ++k) {
+        const pair_index p{(k * 7) % 400, (k * 13 + 5) % 400};
+        pairs.push_back(p);
+        pair_text += std::to_string(p.a) + "," + std::to_string(p.b) + "\n";
+    }
+    write_file(s.file("pairs.csv"), pair_text);
+    const auto r = s.run("distance --poses poses.csv --pairs pairs.csv --header");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::vector<obbsat::closest_points> expected =
+        obbsat::distance_pairs(obbsat::pose_records(rows), pairs);
+    const std::vector<std::string> lines = lines_of(r.out);
+    ASSERT_EQ(lines.size(), pairs.size() + 1);
+    EXPECT_EQ(lines[0], "i,j,distance,ax,ay,bx,by");
+    std::size_t colliding = 0;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const std::vector<std::string> f = fields_of(lines[k + 1]);
+        ASSERT_EQ(f.size(), 7u) << lines[k + 1];
+        EXPECT_EQ(f[0], std::to_string(pairs[k].a));
+        EXPECT_EQ(f[1], std::to_string(pairs[k].b));
+        const obbsat::closest_points& e = expected[k];
+        const float values[] = {e.distance, e.ax, e.ay, e.bx, e.by};
+        for (std::size_t v = 0; v < 5; ++v) {
+            EXPECT_EQ(bits_of(f[2 + v]), bits_of(values[v])) << lines[k + 1];
+        }
+        colliding += e.distance == 0.0f;
+    }
+    EXPECT_GT(colliding, 0u);  // pairs (k, k) at least
+    EXPECT_LT(colliding, pairs.size());
+}
+
+TEST(ContactsErrors, NameTheFileAndLineAndWriteNothing) {
+    scratch s;
+    write_file(s.file("poses.csv"), "0,0,1,1,1,0\n1.5,0,1,1,1,0\n");
+    write_file(s.file("pairs.csv"), "0,1\n\n1,2\n");
+    write_file(s.file("rects.csv"), "# quads\n0,1,2,1,2,0,0,0\n0,0,1,1,2,2,3,3\n");
+    write_file(s.file("one.csv"), "0,1\n");
+    const std::vector<std::string> before = s.entries();
+
+    auto r = s.run("contacts --poses poses.csv --pairs pairs.csv --out c.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("pairs.csv:3:"), std::string::npos) << r.err;
+    r = s.run("distance --poses poses.csv --pairs pairs.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_NE(r.err.find("pairs.csv:3:"), std::string::npos) << r.err;
+    // A quad that is not strictly convex, found by the library after reading: its line.
+    r = s.run("contacts --rects rects.csv --pairs one.csv --out c.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("rects.csv:3: rectangle 1:"), std::string::npos) << r.err;
+    r = s.run("contacts --rects rects.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_NE(r.err.find("rects.csv:3: rectangle 1:"), std::string::npos) << r.err;
+    r = s.run("distance --rects rects.csv --pairs one.csv --out d.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("rects.csv:3:"), std::string::npos) << r.err;
+    for (const char* margin : {"-1", "nan", "inf", "x"}) {
+        r = s.run(std::string("contacts --poses poses.csv --out c.csv --margin ") + margin);
+        EXPECT_EQ(r.status, 2) << margin;
+        EXPECT_NE(r.err.find("--margin"), std::string::npos) << r.err;
+    }
+    r = s.run("distance --poses poses.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--pairs"), std::string::npos) << r.err;
+    EXPECT_EQ(s.entries(), before);  // no output file, no temporary left behind
+}
+
+TEST(ContactsErrors, AnExistingOutputFileIsKeptOnError) {
+    scratch s;
+    write_file(s.file("poses.csv"), "0,0,1,1,1,0\n1.5,0,1,1,1,0\n");
+    write_file(s.file("pairs.csv"), "0,5\n");
+    write_file(s.file("c.csv"), "old\n");
+    const auto r = s.run("contacts --poses poses.csv --pairs pairs.csv --out c.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(read_file(s.file("c.csv")), "old\n");
+}
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+        ++count;
+    }
+    return count;
+}
+
+TEST(DrawContacts, AColliderShowsItsNormalAndPointsAndAnApartPairNone) {
+    scratch s;
+    write_file(s.file("poses.csv"), "0,0,1,0.5,1,0\n1.5,0.3,1,1,0.8,0.6\n5,5,1,1,1,0\n");
+    write_file(s.file("rects.csv"), "0,1,2,1,2,0,0,0\n1,2,3,2,3,0.5,1,0.5\n");
+    write_file(s.file("pairs.csv"), "0,1\n0,2\n");
+    auto r = s.run("draw --poses poses.csv --pairs pairs.csv --select 0,1 --out p.svg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string svg = read_file(s.file("p.svg"));
+    EXPECT_EQ(count_of(svg, "class=\"contact-overlay\""), 1u);  // only the colliding pair 0
+    EXPECT_EQ(count_of(svg, "class=\"contact-normal\""), 1u);
+    EXPECT_EQ(count_of(svg, "class=\"contact-point\""), 2u);
+    // The normal (0.8, 0.6) from A to B: rightwards and, as SVG's y grows downwards, upwards.
+    const std::size_t line = svg.find("class=\"contact-normal\"");
+    const auto value_after = [&](const std::string& name) {
+        const std::size_t at = svg.find(name + "=\"", line) + name.size() + 2;
+        return std::strtod(svg.c_str() + at, nullptr);
+    };
+    EXPECT_GT(value_after("x2"), value_after("x1"));
+    EXPECT_LT(value_after("y2"), value_after("y1"));
+
+    write_file(s.file("one.csv"), "0,1\n");
+    r = s.run("draw --rects rects.csv --pairs one.csv --select 0 --out r.svg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    svg = read_file(s.file("r.svg"));
+    EXPECT_EQ(count_of(svg, "class=\"contact-overlay\""), 1u);
+    EXPECT_GE(count_of(svg, "class=\"contact-point\""), 1u);
+}
+
+}  // namespace

@@ -936,20 +936,35 @@ def _margin(margin):
     return float(margin)
 
 
-def _boxes(boxes, call):
-    """The boxes of a pair-list call: a store as it is, an array as :func:`_form` gives it."""
+def _float32_only(call, precision, **arrays):
+    """Contacts and distances are computed in float32 only: float64 data is
+    refused unless ``precision="float32"`` asks for it to be rounded."""
+    if precision not in (None, "float32"):
+        raise ValueError(f"{call}: contacts and distances are computed in float32 only; "
+                         f"precision={precision!r} is not available")
+    if precision is None:
+        for what, array in arrays.items():
+            if _holds_float64(array):
+                raise ValueError(f"{call}: {what} holds float64 data, and contacts and distances are computed in "
+                                 "float32 only: pass precision=\"float32\" to round it explicitly")
+
+
+def _boxes(boxes, call, precision=None):
+    """The boxes of a pair-list call: a store as it is, an array as :func:`_form` gives it, in float32."""
+    _float32_only(call, precision, boxes=boxes)
     if isinstance(boxes, (RectRecords, PoseRecords)):
         return boxes
-    return _form(boxes, "boxes")[1]
+    return _form(boxes, "boxes", "float32")[1]
 
 
-def _stream_pair(a, b, call):
-    """Both batches of a stream call, of one form and equal length."""
+def _stream_pair(a, b, call, precision=None):
+    """Both batches of a stream call, of one form and equal length, in float32."""
     for what, batch in (("a", a), ("b", b)):
         _refuse_store(batch, call, what,
                       "an array of corners, (N, 8) or (N, 4, 2), or of poses, (N, 6), not a store")
-    form_a, a = _form(a, "a")
-    form_b, b = _form(b, "b")
+    _float32_only(call, precision, a=a, b=b)
+    form_a, a = _form(a, "a", "float32")
+    form_b, b = _form(b, "b", "float32")
     if form_a != form_b:
         raise ValueError(f"a holds {form_a} (shape {a.shape}), b holds {form_b} (shape {b.shape}): "
                          "a stream compares one form")
@@ -958,7 +973,7 @@ def _stream_pair(a, b, call):
     return a, b
 
 
-def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1):
+def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1, precision=None):
     """The contact of each pair of boxes (``obbsat::contact_pairs``): normal,
     depth and up to two points with feature keys, as a physics solver needs
     them, bit for bit the same on every backend and thread count.
@@ -966,7 +981,9 @@ def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1):
     ``boxes`` and ``pairs`` are as in :func:`collide` (poses (N, 6), corners
     (N, 8) or (N, 4, 2), or a :func:`records` store); corners must be strictly
     convex quads (``docs/contacts.md``). ``margin`` (finite, >= 0): pairs
-    apart by at most this much get points too. The GIL is released.
+    apart by at most this much get points too. Contacts are computed in
+    float32: float64 boxes raise ValueError unless ``precision="float32"``
+    asks for them to be rounded. The GIL is released.
 
     Returns a :class:`Contacts`, one row per pair. Raises ``IndexError`` for an
     index out of range (naming the pair), ``ValueError`` for a bad box (naming
@@ -981,12 +998,12 @@ def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1):
     _refuse_store(pairs, "contacts", "pairs", _PAIRS_EXPECTED)
     threads = _threads(threads)
     margin = _margin(margin)
-    boxes = _boxes(boxes, "contacts")
+    boxes = _boxes(boxes, "contacts", precision)
     pairs = _pairs(pairs, len(boxes))
     return Contacts(_core.contacts_of_pairs(boxes, pairs, margin, _backend(backend), threads))
 
 
-def contacts_stream(a, b, *, margin=0.0, backend="auto", threads=1):
+def contacts_stream(a, b, *, margin=0.0, backend="auto", threads=1, precision=None):
     """The contact of ``a[k]`` and ``b[k]`` for every k: two arrays of one
     form and equal length (copied into the library's stores, which checks
     them; errors name ``a`` or ``b``). Otherwise as :func:`contacts`.
@@ -998,11 +1015,11 @@ def contacts_stream(a, b, *, margin=0.0, backend="auto", threads=1):
     """
     threads = _threads(threads)
     margin = _margin(margin)
-    a, b = _stream_pair(a, b, "contacts_stream")
+    a, b = _stream_pair(a, b, "contacts_stream", precision)
     return Contacts(_core.contacts_of_stream(a, b, margin, _backend(backend), threads))
 
 
-def distances(boxes, pairs, *, backend="auto", threads=1):
+def distances(boxes, pairs, *, backend="auto", threads=1, precision=None):
     """The Euclidean distance of each pair of boxes and a closest point of
     each (``obbsat::distance_pairs``); every value +0 for a pair that
     collides. Arguments and errors as :func:`contacts` (an array is copied
@@ -1015,12 +1032,12 @@ def distances(boxes, pairs, *, backend="auto", threads=1):
     """
     _refuse_store(pairs, "distances", "pairs", _PAIRS_EXPECTED)
     threads = _threads(threads)
-    boxes = _boxes(boxes, "distances")
+    boxes = _boxes(boxes, "distances", precision)
     pairs = _pairs(pairs, len(boxes))
     return Distances(_core.distances_of_pairs(boxes, pairs, _backend(backend), threads))
 
 
-def distances_stream(a, b, *, backend="auto", threads=1):
+def distances_stream(a, b, *, backend="auto", threads=1, precision=None):
     """The distance of ``a[k]`` and ``b[k]`` for every k; as :func:`distances`
     and :func:`contacts_stream`.
 
@@ -1030,11 +1047,11 @@ def distances_stream(a, b, *, backend="auto", threads=1):
     array([0., 3.], dtype=float32)
     """
     threads = _threads(threads)
-    a, b = _stream_pair(a, b, "distances_stream")
+    a, b = _stream_pair(a, b, "distances_stream", precision)
     return Distances(_core.distances_of_stream(a, b, _backend(backend), threads))
 
 
-def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=1):
+def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=1, precision=None):
     """Every colliding pair of a scene with its contact (``obbsat::find_contacts``):
     ``(pairs, contacts)``, pairs uint32 (K, 2) sorted by i then j (i < j) as
     :func:`find_pairs` gives them, and a :class:`Contacts` row for each.
@@ -1055,6 +1072,7 @@ def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=
     method = _SCENE_METHOD if method is None else method
     threads = _threads(threads)
     margin = _margin(margin)
-    _, boxes = _scene_form(boxes, "boxes")
+    _float32_only("find_contacts", precision, boxes=boxes)
+    _, boxes = _scene_form(boxes, "boxes", "float32")
     pairs, columns = _core.find_contacts(boxes, method, margin, _backend(backend), threads)
     return pairs, Contacts(columns)

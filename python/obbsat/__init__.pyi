@@ -134,15 +134,19 @@ def contacts(
     margin: float = ...,
     backend: str | None = ...,
     threads: int = ...,
+    precision: str | None = ...,
 ) -> Contacts: ...
 def contacts_stream(
-    a: npt.ArrayLike, b: npt.ArrayLike, *, margin: float = ..., backend: str | None = ..., threads: int = ...
+    a: npt.ArrayLike, b: npt.ArrayLike, *, margin: float = ..., backend: str | None = ..., threads: int = ...,
+    precision: str | None = ...,
 ) -> Contacts: ...
 def distances(
-    boxes: npt.ArrayLike | RectRecords | PoseRecords, pairs: npt.ArrayLike, *, backend: str | None = ..., threads: int = ...
+    boxes: npt.ArrayLike | RectRecords | PoseRecords, pairs: npt.ArrayLike, *, backend: str | None = ..., threads: int = ...,
+    precision: str | None = ...,
 ) -> Distances: ...
 def distances_stream(
-    a: npt.ArrayLike, b: npt.ArrayLike, *, backend: str | None = ..., threads: int = ...
+    a: npt.ArrayLike, b: npt.ArrayLike, *, backend: str | None = ..., threads: int = ...,
+    precision: str | None = ...,
 ) -> Distances: ...
 def find_contacts(
     boxes: npt.ArrayLike | RectRecords | PoseRecords,
@@ -151,4 +155,5 @@ def find_contacts(
     margin: float = ...,
     backend: str | None = ...,
     threads: int = ...,
+    precision: str | None = ...,
 ) -> tuple[npt.NDArray[np.uint32], Contacts]: ...

@@ -157,7 +157,8 @@ def test_every_backend_thread_count_store_and_layout_gives_the_same_bits(scene):
         for threads in (1, 3):
             same_contacts(obbsat.contacts(poses, pairs, margin=0.05, backend=backend, threads=threads), first)
     same_contacts(obbsat.contacts(obbsat.records(poses), pairs, margin=0.05), first)
-    same_contacts(obbsat.contacts(poses.astype(np.float64), pairs.astype(np.int64), margin=0.05), first)
+    same_contacts(obbsat.contacts(poses.astype(np.float64), pairs.astype(np.int64), margin=0.05,
+                                  precision="float32"), first)
     same_contacts(obbsat.contacts_stream(poses[pairs[:, 0]], poses[pairs[:, 1]], margin=0.05), first)
     corners = obbsat.corners_of_poses(poses)
     on_corners = obbsat.contacts(corners, pairs)
@@ -248,3 +249,19 @@ def test_python_runs_while_contacts_are_computed():
     assert took > 0.02, "the call was too short to tell"
     # Held, the GIL would stall this loop for the whole call; released, it spins at millions of steps a second.
     assert steps > 1000 * took * 100
+
+
+def test_float64_boxes_are_refused_unless_rounding_is_asked_for():
+    poses = np.array([square(0, 0), square(1.5, 0)], dtype=np.float64)
+    for call in (lambda **k: obbsat.contacts(poses, [[0, 1]], **k),
+                 lambda **k: obbsat.contacts_stream(poses[:1], poses[1:], **k),
+                 lambda **k: obbsat.distances(poses, [[0, 1]], **k),
+                 lambda **k: obbsat.distances_stream(poses[:1], poses[1:], **k),
+                 lambda **k: obbsat.find_contacts(poses, **k)):
+        with pytest.raises(ValueError, match="float64"):
+            call()
+        with pytest.raises(ValueError, match="float32 only"):
+            call(precision="float64")
+        call(precision="float32")
+    rounded = obbsat.contacts(poses, [[0, 1]], precision="float32")
+    same_contacts(rounded, obbsat.contacts(poses.astype(np.float32), [[0, 1]]))

@@ -13,8 +13,8 @@ namespace {
 using obbsat::accuracy::family_errors;
 
 void print_row(const char* family, const char* form, const family_errors& e) {
-    std::printf("| %s | %s | %zu | %zu | %zu | %zu | %.2f | %.2e | %.2f | %.2e | %.2f | %.2f |\n", family, form,
-                e.pairs - e.skipped, e.skipped, e.choice_differs, e.count_differs, e.normal_u, e.depth_size,
+    std::printf("| %s | %s | %zu | %zu | %zu | %zu | %zu | %.2f | %.2e | %.2f | %.2e | %.2f | %.2f |\n", family, form,
+                e.pairs - e.skipped, e.skipped, e.choice_differs, e.incident_differs, e.count_differs, e.normal_u, e.depth_size,
                 e.depth_u_reach, e.point_size, e.point_u_scale, e.separation_u_reach);
 }
 
@@ -33,9 +33,9 @@ int main(int argc, char** argv) {
     const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1;
     std::string choice_rows, boundary_rows;
     std::size_t mismatched = 0;
-    std::printf("| family | form | pairs | skipped | choice differs | count differs | normal (u rad) | "
-                "depth / size | depth (u·R) | point / size | point (u·(O+R)) | separation (u·R) |\n");
-    std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    std::printf("| family | form | pairs | skipped | reference face differs | incident face differs | count differs | "
+                "normal (u rad) | depth / size | depth (u·R) | point / size | point (u·(O+R)) | separation (u·R) |\n");
+    std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
     obbsat::accuracy::family_result results[std::size(obbsat::accuracy::all_contact_families)];
     int f = 0;
     for (const obbsat::accuracy::contact_family family : obbsat::accuracy::all_contact_families) {

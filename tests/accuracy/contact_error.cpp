@@ -20,8 +20,23 @@ float max_of(float u, float v) { return u > v ? u : v; }
 
 struct float_choice {
     face_choice face;
+    int incident;  // step 5's face of the incident box
     float nx, ny;  // the normal it gives
 };
+
+/// Step 5: the incident box's face most against u = (ux, uy), the first by strict <.
+int incident_face(const ref::contact_box& inc, const float inc_inv[4], float ux, float uy) {
+    int k = 0;
+    float most_against = dot(inc.n[0], point{ux, uy}) * inc_inv[0];
+    for (int f = 1; f < 4; ++f) {
+        const float along = dot(inc.n[f], point{ux, uy}) * inc_inv[f];
+        if (along < most_against) {
+            most_against = along;
+            k = f;
+        }
+    }
+    return k;
+}
 
 float_choice float_choice_of(const rect_pose& a, const rect_pose& b) {
     const float len_a = std::sqrt(dot(a.rotation, a.rotation)), len_b = std::sqrt(dot(b.rotation, b.rotation));
@@ -43,9 +58,12 @@ float_choice float_choice_of(const rect_pose& a, const rect_pose& b) {
         r = b_on_y ? (axes.offset[3] >= 0.0f ? 2 : 0) : (axes.offset[2] >= 0.0f ? 3 : 1);
     }
     const ref::contact_box ref_box = ref::contact_box_of(flip ? b : a, a.center);
+    const ref::contact_box inc_box = ref::contact_box_of(flip ? a : b, a.center);
     const float inv = flip ? inv_b : inv_a;
+    const float inc_inv[4] = {flip ? inv_a : inv_b, flip ? inv_a : inv_b, flip ? inv_a : inv_b, flip ? inv_a : inv_b};
     const float ux = ref_box.n[r].x * inv, uy = ref_box.n[r].y * inv;
-    return float_choice{face_choice{flip, r}, flip ? -ux : ux, flip ? -uy : uy};
+    return float_choice{face_choice{flip, r}, incident_face(inc_box, inc_inv, ux, uy), flip ? -ux : ux,
+                        flip ? -uy : uy};
 }
 
 float span(const ref::contact_box& box) {
@@ -91,7 +109,8 @@ float_choice float_choice_of(const rect& a, const rect& b) {
     const ref::contact_box& ref_box = flip ? box_b : box_a;
     const float inv = flip ? inv_b[r] : inv_a[r];
     const float ux = ref_box.n[r].x * inv, uy = ref_box.n[r].y * inv;
-    return float_choice{face_choice{flip, r}, flip ? -ux : ux, flip ? -uy : uy};
+    const int k = flip ? incident_face(box_a, inv_a, ux, uy) : incident_face(box_b, inv_b, ux, uy);
+    return float_choice{face_choice{flip, r}, k, flip ? -ux : ux, flip ? -uy : uy};
 }
 
 double to_double(const mpf_class& v) { return v.get_d(); }
@@ -129,7 +148,11 @@ pair_errors measure(const contact& c, const float_choice& chosen, const exact_bo
     out.offset = std::max(std::fabs(static_cast<double>(origin.x)), std::fabs(static_cast<double>(origin.y)));
     out.choice_matches_normal = chosen.nx == c.nx && chosen.ny == c.ny;
 
-    const exact_contact same = exact_contact_of(a, b, exact, chosen.face);
+    // The exact result of the float reference's choices: its reference face
+    // and its incident face (which differs from the exact step 5 only near a
+    // tie of two incident faces, e.g. a square's two edges at 45°).
+    const exact_contact same = exact_contact_of(a, b, exact, chosen.face, 0.0f, chosen.incident);
+    out.incident_differs = exact_contact_of(a, b, exact, chosen.face).incident != chosen.incident;
     out.normal_angle = angle_between(c, same);
     out.depth_error = std::fabs(to_double(mpf_of(c.depth) - same.depth));
     out.count_differs = static_cast<int>(c.point_count) != same.point_count;
@@ -200,6 +223,7 @@ void family_errors::add(const pair_errors& e) {
     }
     mismatched_normals += e.choice_matches_normal ? 0u : 1u;
     choice_differs += e.choice_differs ? 1u : 0u;
+    incident_differs += e.incident_differs ? 1u : 0u;
     count_differs += e.count_differs ? 1u : 0u;
     count_differs_exact_choice += e.count_differs_exact_choice ? 1u : 0u;
     normal_u = std::max(normal_u, e.normal_angle / unit_roundoff);

@@ -1,8 +1,9 @@
 // How far the float32 contact reference (obbsat/ref/contact.hpp) is from the
 // exact contact of the same pair (contact_exact.hpp), per pair and per family.
 //
-// Errors are taken against the exact result of the reference face the float
-// reference chose ("same choice"): that isolates rounding from the decision.
+// Errors are taken against the exact result of the reference face and the
+// incident face the float reference chose ("same choice"): that isolates
+// rounding from the decisions.
 // Where the exact steps choose another face (a near tie of two separations,
 // or of A's and B's within the tolerance), the pair is counted apart and its
 // distance from the exact result of the exact choice is kept too.
@@ -34,6 +35,7 @@ struct pair_errors {
     bool measured = false;        ///< false: the corners are not strictly convex (float or exact)
     bool choice_matches_normal = true;  ///< the float normal is the face this file takes as the float choice
     bool choice_differs = false;  ///< the exact steps chose another reference face
+    bool incident_differs = false;  ///< for the float's reference face, step 5 exact chose another incident face
     bool count_differs = false;   ///< point counts differ (same choice)
     double size = 0, reach = 0, offset = 0;
     double normal_angle = 0;      ///< radians, same choice
@@ -55,7 +57,7 @@ pair_errors measure_corners(const rect& a, const rect& b);
 
 /// The largest errors over a family, in the units the tables print.
 struct family_errors {
-    std::size_t pairs = 0, skipped = 0, mismatched_normals = 0, choice_differs = 0, count_differs = 0, count_differs_exact_choice = 0;
+    std::size_t pairs = 0, skipped = 0, mismatched_normals = 0, incident_differs = 0, choice_differs = 0, count_differs = 0, count_differs_exact_choice = 0;
     double normal_u = 0;          ///< normal angle / u
     double depth_size = 0;        ///< depth error / size
     double depth_u_reach = 0;     ///< depth error / (u·R)

@@ -179,7 +179,7 @@ exact_choice exact_choice_of(const exact_box& a, const exact_box& b) {
 }
 
 exact_contact exact_contact_of(const exact_box& a, const exact_box& b, const exact_choice& choice,
-                               const face_choice& face, float margin) {
+                               const face_choice& face, float margin, int incident) {
     const bool flip = face.flip;
     const int r = face.r;
     const exact_box& ref = flip ? b : a;
@@ -205,6 +205,8 @@ exact_contact exact_contact_of(const exact_box& a, const exact_box& b, const exa
             most_against = along;
         }
     }
+    k = incident >= 0 ? incident : k;
+    out.incident = k;
     const exact_point p1 = inc.v[k], p2 = inc.v[(k + 1) & 3];
 
     // Step 6: clip to the side planes of face r.

@@ -68,6 +68,7 @@ struct exact_contact_point {
 
 struct exact_contact {
     face_choice face;
+    int incident = 0;  ///< the incident face, step 5's choice
     mpf_class nx, ny;  ///< the unit normal from A to B
     mpf_class depth;
     int point_count = 0;
@@ -97,9 +98,11 @@ exact_choice exact_choice_of(const exact_box& a, const exact_box& b);
 
 /// Steps 4 to 8 for a given reference face `face` (the one `choice` decided,
 /// or another one, e.g. the float reference's), keeping points within
-/// `margin`; the readiness tests of step 7 use `choice`'s separations.
+/// `margin`; the readiness tests of step 7 use `choice`'s separations. The
+/// incident face is step 5's, or `incident` when it is 0 to 3 (to follow
+/// the float reference through an exact tie of two incident faces).
 exact_contact exact_contact_of(const exact_box& a, const exact_box& b, const exact_choice& choice,
-                               const face_choice& face, float margin = 0.0f);
+                               const face_choice& face, float margin = 0.0f, int incident = -1);
 
 /// x / √n2 in mpf.
 mpf_class value_of(const scaled_value& s);

@@ -6,7 +6,7 @@
 //     reference chose;
 //   - the depth and every point's separation are within 8·u·R of exact, R the
 //     largest coordinate of the pair relative to A's center (or UL corner);
-//   - every point is within 8·u·(O + R) of exact, O the size of that origin's
+//   - every point is within 12·u·(O + R) of exact, O the size of that origin's
 //     coordinates (the points are given back as origin + point);
 //   - point counts differ only at a decision boundary: a separation, or an
 //     end's distance from a side plane, within 8·u·R of zero.
@@ -29,7 +29,7 @@ using obbsat::rect_pose;
 
 constexpr double normal_bound_u = 4;
 constexpr double depth_bound_u_reach = 8;
-constexpr double point_bound_u_scale = 8;
+constexpr double point_bound_u_scale = 12;
 constexpr double boundary_bound_u_reach = 8;
 constexpr std::size_t pairs_per_family = 3000;
 

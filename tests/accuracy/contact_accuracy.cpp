@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     }
     std::printf("\nWhere the exact steps choose another reference face: the float result against the exact "
                 "result of the exact choice.\n\n");
-    std::printf("| family | form | choice differs | normal (rad) | depth / size | count differs |\n");
+    std::printf("| family | form | reference face differs | normal (rad) | depth / size | count differs |\n");
     std::printf("| --- | --- | --- | --- | --- | --- |\n");
     f = 0;
     for (const obbsat::accuracy::contact_family family : obbsat::accuracy::all_contact_families) {

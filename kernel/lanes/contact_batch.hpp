@@ -11,6 +11,7 @@
 #include "lanes/contact_lanes.hpp"
 #include "lanes/distance_lanes.hpp"
 #include "lanes/record_transpose.hpp"
+#include "support/fetch_ahead.hpp"
 
 #include <obbsat/closest_points.hpp>
 #include <obbsat/contact_manifold.hpp>
@@ -81,35 +82,33 @@ OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* o
     }
 }
 
-/// The batch driver: out[i] = contact of box a(i) and box b(i) (see
-/// contact_fn), Fields floats of each record read (six for a pose, eight for
-/// corners). Records of eight floats (pose_records, corner records) are read
-/// whole and transposed in registers; other rows through a staging copy. The
-/// last, partial vector repeats its last pair in the unused lanes.
 /// Walks pairs [0, count) one vector at a time: loads each lane's two records
 /// into fa and fb (one vector per field; Fields floats read, six for a pose,
 /// eight for corners) and calls body(fa, fb, i, valid) for the vector of pairs
 /// i to i + valid. Records of eight floats (pose_records, corner records) are
 /// read whole and transposed in registers, other rows through a staging copy.
-/// The last, partial vector repeats its last pair in the unused lanes.
+/// Whole vectors take the pair indices as they are; the last, partial vector
+/// repeats its last pair in the unused lanes. A pair list's records are read
+/// at random: those of the pairs ahead are asked into L2 (fetch_ahead.hpp),
+/// which costs two instructions a pair against a contact's hundreds and hides
+/// the reads of a store larger than the caches.
 template <class Arch, std::size_t Fields, class Body>
 OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_stride, const float* b,
                                                  std::size_t b_stride, const pair_index* pairs, std::size_t count,
                                                  const Body& body) {
     using batch = lanes<Arch>;
     constexpr std::size_t width = batch::size;
+    constexpr std::size_t ahead = pairs_ahead<pair_fetch::into_l2>;
     const bool whole_records = a_stride == 8 && b_stride == 8;
-    for (std::size_t i = 0; i < count; i += width) {
-        const std::size_t valid = count - i < width ? count - i : width;
-        auto pair_of = [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); };
-        auto index_a = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].a : pair_of(lane); };
-        auto index_b = [&](std::size_t lane) { return pairs != nullptr ? pairs[pair_of(lane)].b : pair_of(lane); };
+    auto record_a = [&](std::size_t pair) { return a + 8 * (pairs != nullptr ? pairs[pair].a : pair); };
+    auto record_b = [&](std::size_t pair) { return b + 8 * (pairs != nullptr ? pairs[pair].b : pair); };
+    auto vector_at = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
         batch fa[8], fb[8];
         if (whole_records) {
             const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
-                [&](std::size_t lane) { return reinterpret_cast<const rect*>(a + 8 * index_a(lane)); });
+                [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_a(pair_of(lane))); });
             const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
-                [&](std::size_t lane) { return reinterpret_cast<const rect*>(b + 8 * index_b(lane)); });
+                [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_b(pair_of(lane))); });
             for (std::size_t f = 0; f < 8; ++f) {
                 fa[f] = qa.c[f];
                 fb[f] = qb.c[f];
@@ -118,8 +117,9 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_s
             alignas(64) float staged_a[Fields][width];
             alignas(64) float staged_b[Fields][width];
             for (std::size_t lane = 0; lane < width; ++lane) {
-                const float* ra = a + a_stride * index_a(lane);
-                const float* rb = b + b_stride * index_b(lane);
+                const std::size_t pair = pair_of(lane);
+                const float* ra = a + a_stride * (pairs != nullptr ? pairs[pair].a : pair);
+                const float* rb = b + b_stride * (pairs != nullptr ? pairs[pair].b : pair);
                 for (std::size_t f = 0; f < Fields; ++f) {
                     staged_a[f][lane] = ra[f];
                     staged_b[f][lane] = rb[f];
@@ -131,6 +131,20 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_s
             }
         }
         body(fa, fb, i, valid);
+    };
+    std::size_t i = 0;
+    for (; i + width <= count; i += width) {
+        if (pairs != nullptr && i + width + ahead <= count) {
+            for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
+                fetch_into_l2(a + a_stride * pairs[k].a);
+                fetch_into_l2(b + b_stride * pairs[k].b);
+            }
+        }
+        vector_at(i, width, [i](std::size_t lane) { return i + lane; });
+    }
+    if (i < count) {
+        const std::size_t valid = count - i;
+        vector_at(i, valid, [i, valid](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); });
     }
 }
 

@@ -144,8 +144,8 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_s
     for (; i + width <= count; i += width) {
         if (pairs != nullptr && i + width + ahead <= fetchable) {
             for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
-                fetch_into_l2(a + 8 * pairs[k].a);
-                fetch_into_l2(b + 8 * pairs[k].b);
+                fetch_into_l2(a + a_stride * pairs[k].a);
+                fetch_into_l2(b + b_stride * pairs[k].b);
             }
         }
         vector_at(i, width, [i](std::size_t lane) { return i + lane; });

@@ -230,47 +230,76 @@ OBBSAT_LANE_INLINE reference_lanes<Arch> reference_of_boxes(const contact_box_la
                                  xsimd::select(flip, fb.y2, fa.y2)};
 }
 
-/// Steps 4 to 8 of the reference from the choice of the reference face and
-/// the incident box (B, or A where flip).
+/// Step 4's normal and depth, with no point (count 0, every point field
+/// zero): the contact of a pair whose best faces separate it by more than
+/// the margin, and what steps 5 to 8 start from.
 template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_lanes<Arch>& inc,
-                                                             const reference_lanes<Arch>& ref,
-                                                             const lanes<Arch>& origin_x,
-                                                             const lanes<Arch>& origin_y, float margin_value) {
-    using batch = lanes<Arch>;
-    const batch zero(0.0f), one(1.0f), four(4.0f), margin(margin_value);
-    const auto flip = ref.flip;
-    const batch r = ref.r, q1x = ref.q1x, q1y = ref.q1y, q2x = ref.q2x, q2y = ref.q2y;
-
-    // Step 4.
-    const batch sr = xsimd::select(flip, ref.sb, ref.sa);
-    const batch ux = ref.nx * ref.inv;
-    const batch uy = ref.ny * ref.inv;
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_without_points(const lane_mask<Arch>& flip,
+                                                                  const lanes<Arch>& ux, const lanes<Arch>& uy,
+                                                                  const lanes<Arch>& sa, const lanes<Arch>& sb) {
+    const lanes<Arch> zero(0.0f);
     contact_out_lanes<Arch> out;
     out.nx = xsimd::select(flip, negated<Arch>(ux), ux);
     out.ny = xsimd::select(flip, negated<Arch>(uy), uy);
-    out.depth = zero - sr;
+    out.depth = zero - xsimd::select(flip, sb, sa);
+    out.count = zero;
+    for (int e = 0; e < 2; ++e) {
+        out.x[e] = zero;
+        out.y[e] = zero;
+        out.separation[e] = zero;
+        out.feature[e] = zero;
+    }
+    return out;
+}
 
-    // Step 5: the incident face of the other box.
-    batch k, most_against, p1x, p1y, p2x, p2y;
+/// Step 5's choice, per lane: the incident face k and its edge's ends p1, p2.
+template <class Arch>
+struct incident_edge_lanes {
+    lanes<Arch> k, p1x, p1y, p2x, p2y;
+};
+
+/// Step 5 on a box of four faces: the face most against (ux, uy).
+template <class Arch>
+OBBSAT_LANE_INLINE incident_edge_lanes<Arch> incident_edge_of_box(const contact_box_lanes<Arch>& inc,
+                                                                  const lanes<Arch>& ux, const lanes<Arch>& uy) {
+    using batch = lanes<Arch>;
+    incident_edge_lanes<Arch> edge;
+    batch most_against;
     for (int f = 0; f < 4; ++f) {
         const int next = (f + 1) & 3;
         const batch along = ((inc.nx[f] * ux) + (inc.ny[f] * uy)) * inc.inv[f];
         const batch x1 = inc.vx[f], y1 = inc.vy[f], x2 = inc.vx[next], y2 = inc.vy[next];
         if (f == 0) {
-            k = zero;
             most_against = along;
-            p1x = x1, p1y = y1, p2x = x2, p2y = y2;
+            edge = incident_edge_lanes<Arch>{batch(0.0f), x1, y1, x2, y2};
         } else {
             const auto better = along < most_against;
             most_against = xsimd::select(better, along, most_against);
-            k = xsimd::select(better, batch(static_cast<float>(f)), k);
-            p1x = xsimd::select(better, x1, p1x);
-            p1y = xsimd::select(better, y1, p1y);
-            p2x = xsimd::select(better, x2, p2x);
-            p2y = xsimd::select(better, y2, p2y);
+            edge.k = xsimd::select(better, batch(static_cast<float>(f)), edge.k);
+            edge.p1x = xsimd::select(better, x1, edge.p1x);
+            edge.p1y = xsimd::select(better, y1, edge.p1y);
+            edge.p2x = xsimd::select(better, x2, edge.p2x);
+            edge.p2y = xsimd::select(better, y2, edge.p2y);
         }
     }
+    return edge;
+}
+
+/// Steps 6 to 8 of the reference, and step 4's outputs, from the reference
+/// face (ref), its unit normal (ux, uy) and the incident edge.
+template <class Arch>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> clipped_manifold_lanes(const reference_lanes<Arch>& ref,
+                                                                  const lanes<Arch>& ux, const lanes<Arch>& uy,
+                                                                  const incident_edge_lanes<Arch>& edge,
+                                                                  const lanes<Arch>& origin_x,
+                                                                  const lanes<Arch>& origin_y, float margin_value) {
+    using batch = lanes<Arch>;
+    const batch zero(0.0f), one(1.0f), four(4.0f), margin(margin_value);
+    const auto flip = ref.flip;
+    const batch r = ref.r, q1x = ref.q1x, q1y = ref.q1y, q2x = ref.q2x, q2y = ref.q2y;
+    const batch k = edge.k, p1x = edge.p1x, p1y = edge.p1y, p2x = edge.p2x, p2y = edge.p2y;
+
+    contact_out_lanes<Arch> out = contact_without_points<Arch>(flip, ux, uy, ref.sa, ref.sb);
 
     // Step 6: clip to the side planes.
     const batch tx = q2x - q1x, ty = q2y - q1y;
@@ -327,34 +356,62 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_l
     return out;
 }
 
-/// The vertices, normals and inv of face r (0 to 3, per lane) of a box.
+/// Steps 4 to 8 of the reference from the choice of the reference face and
+/// the incident box (B, or A where flip).
 template <class Arch>
-OBBSAT_LANE_INLINE void face_at(const contact_box_lanes<Arch>& box, const lanes<Arch>& r, lanes<Arch>* face) {
-    for (int k = 0; k < 4; ++k) {
-        const int next = (k + 1) & 3;
-        const lanes<Arch> values[7] = {box.nx[k], box.ny[k],    box.inv[k],   box.vx[k],
-                                       box.vy[k], box.vx[next], box.vy[next]};
-        if (k == 0) {
-            for (int f = 0; f < 7; ++f) {
-                face[f] = values[f];
-            }
-        } else {
-            const auto here = r == lanes<Arch>(static_cast<float>(k));
-            for (int f = 0; f < 7; ++f) {
-                face[f] = xsimd::select(here, values[f], face[f]);
-            }
-        }
-    }
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_lanes<Arch>& inc,
+                                                             const reference_lanes<Arch>& ref,
+                                                             const lanes<Arch>& origin_x,
+                                                             const lanes<Arch>& origin_y, float margin) {
+    const lanes<Arch> ux = ref.nx * ref.inv, uy = ref.ny * ref.inv;
+    return clipped_manifold_lanes<Arch>(ref, ux, uy, incident_edge_of_box<Arch>(inc, ux, uy), origin_x, origin_y,
+                                        margin);
 }
 
-/// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
-/// (the reference's pose steps, then steps 4 to 8).
+/// Face j's edge of pose boxes, per lane, without building the boxes: pose
+/// fields cx, cy, hx, hy, c, s (f) relative to the origin, j a whole float 0
+/// to 3. The reference's vertex k is ((ox ± ux) ± wx, (oy ± uy) ± wy) with
+/// signs that depend on k alone; x − y is x + (−y) exactly, so each is written
+/// as sums of the terms with their sign bits set: `a` on u for k = 0 and 3,
+/// `b` on w for k = 0 and 1 (on wy the other way round). Face j's second end,
+/// vertex j + 1, takes u's sign from the complement of b and w's from a.
 template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arch>* fa, const lanes<Arch>* fb,
-                                                                 float margin) {
+OBBSAT_LANE_INLINE incident_edge_lanes<Arch> pose_edge_lanes(const lanes<Arch>* f, const lanes<Arch>& origin_x,
+                                                             const lanes<Arch>& origin_y, const lanes<Arch>& j) {
+    using batch = lanes<Arch>;
+    const batch sign(-0.0f), none(0.0f);
+    const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
+    const batch c = f[4], s = f[5];
+    const batch ux = f[2] * c, uy = f[2] * s;
+    const batch wx = f[3] * s, wy = f[3] * c;
+    const batch a = xsimd::select((j == batch(0.0f)) | (j == batch(3.0f)), sign, none);
+    const batch b = xsimd::select(j < batch(2.0f), sign, none);
+    const batch not_a = xsimd::bitwise_xor(a, sign), not_b = xsimd::bitwise_xor(b, sign);
+    auto signed_by = [](const batch& x, const batch& bit) { return xsimd::bitwise_xor(x, bit); };
+    incident_edge_lanes<Arch> edge;
+    edge.k = j;
+    edge.p1x = (ox + signed_by(ux, a)) + signed_by(wx, b);
+    edge.p1y = (oy + signed_by(uy, a)) + signed_by(wy, not_b);
+    edge.p2x = (ox + signed_by(ux, not_b)) + signed_by(wx, a);
+    edge.p2y = (oy + signed_by(uy, not_b)) + signed_by(wy, not_a);
+    return edge;
+}
+
+/// What the pose steps P1 to P3 and step 4 choose, per lane: the reference
+/// pose (B where flip), its face r, the best separations of A's and of B's
+/// faces, the boxes' reciprocal lengths and the unit normal u of face r.
+template <class Arch>
+struct pose_reference_lanes {
+    lane_mask<Arch> flip;
+    lanes<Arch> r, sa, sb, inv_a, inv_b, ux, uy;
+};
+
+/// Pose steps P1 to P3 and step 4's normal for fields cx, cy, hx, hy, c, s of
+/// A and of B.
+template <class Arch>
+OBBSAT_LANE_INLINE pose_reference_lanes<Arch> pose_reference_of(const lanes<Arch>* fa, const lanes<Arch>* fb) {
     using batch = lanes<Arch>;
     const batch zero(0.0f), one(1.0f), two(2.0f), three(3.0f);
-    const batch origin_x = fa[0], origin_y = fa[1];
     // Pose step 1.
     const batch len_a = xsimd::sqrt((fa[4] * fa[4]) + (fa[5] * fa[5]));
     const batch len_b = xsimd::sqrt((fb[4] * fb[4]) + (fb[5] * fb[5]));
@@ -384,22 +441,65 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arc
                                     xsimd::select(axes.offset[0] >= zero, one, three));
     const batch r_b = xsimd::select(b_on_y, xsimd::select(axes.offset[3] >= zero, two, zero),
                                     xsimd::select(axes.offset[2] >= zero, three, one));
-    // The boxes of the reference pose and of the incident one, each built once.
-    batch ref_fields[6], inc_fields[6];
+    const batch r = xsimd::select(flip, r_b, r_a);
+    // Step 4's normal: face r's of the reference pose, n = (−s, c), (c, s),
+    // (s, −c), (−c, −s) for r = 0 to 3, only signs and places changing.
+    const batch sign(-0.0f);
+    const batch ref_c = xsimd::select(flip, fb[4], fa[4]), ref_s = xsimd::select(flip, fb[5], fa[5]);
+    const auto odd = (r == one) | (r == three);
+    const batch nx = xsimd::bitwise_xor(xsimd::select(odd, ref_c, ref_s),
+                                        xsimd::select((r == zero) | (r == three), sign, zero));
+    const batch ny = xsimd::bitwise_xor(xsimd::select(odd, ref_s, ref_c), xsimd::select(r >= two, sign, zero));
+    const batch inv = xsimd::select(flip, inv_b, inv_a);
+    return pose_reference_lanes<Arch>{flip, r, sa, sb, inv_a, inv_b, nx * inv, ny * inv};
+}
+
+/// Whether a lane's best faces leave its pair within the margin: only those
+/// lanes can have points (step 7), the others are contact_without_points.
+template <class Arch>
+OBBSAT_LANE_INLINE lane_mask<Arch> may_have_points(const pose_reference_lanes<Arch>& p, float margin) {
+    const lanes<Arch> limit(margin);
+    return (p.sa <= limit) & (p.sb <= limit);
+}
+
+/// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
+/// (the reference's pose steps, then steps 4 to 8).
+template <class Arch>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arch>* fa, const lanes<Arch>* fb,
+                                                                 float margin) {
+    using batch = lanes<Arch>;
+    const batch zero(0.0f);
+    const batch origin_x = fa[0], origin_y = fa[1];
+    const pose_reference_lanes<Arch> p = pose_reference_of<Arch>(fa, fb);
+    const auto flip = p.flip;
+    const batch r = p.r, ux = p.ux, uy = p.uy, inv_a = p.inv_a, inv_b = p.inv_b;
+
+
+    // Step 5 on the incident pose: its faces' normals are ±(−s, c) and ±(c,
+    // s), so faces 2 and 3 are along faces 0 and 1 negated (exactly: only
+    // signs change, and a zero's sign does not change a strict compare).
+    batch inc_fields[6], ref_fields[6];
     for (int f = 0; f < 6; ++f) {
         ref_fields[f] = xsimd::select(flip, fb[f], fa[f]);
         inc_fields[f] = xsimd::select(flip, fa[f], fb[f]);
     }
-    const contact_box_lanes<Arch> ref_box =
-        contact_pose_box<Arch>(ref_fields, origin_x, origin_y, xsimd::select(flip, inv_b, inv_a));
-    const contact_box_lanes<Arch> inc_box =
-        contact_pose_box<Arch>(inc_fields, origin_x, origin_y, xsimd::select(flip, inv_a, inv_b));
-    const batch r = xsimd::select(flip, r_b, r_a);
-    batch face[7];
-    face_at<Arch>(ref_box, r, face);
-    const reference_lanes<Arch> ref{flip,    r,       sa,      sb,      face[0], face[1],
-                                    face[2], face[3], face[4], face[5], face[6]};
-    return manifold_lanes_of<Arch>(inc_box, ref, origin_x, origin_y, margin);
+    const batch inc_inv = xsimd::select(flip, inv_a, inv_b);
+    const batch inc_c = inc_fields[4], inc_s = inc_fields[5];
+    const batch along_0 = ((negated<Arch>(inc_s) * ux) + (inc_c * uy)) * inc_inv;
+    const batch along_1 = ((inc_c * ux) + (inc_s * uy)) * inc_inv;
+    const batch along[4] = {along_0, along_1, negated<Arch>(along_0), negated<Arch>(along_1)};
+    batch k = zero, most_against = along[0];
+    for (int f = 1; f < 4; ++f) {
+        const auto better = along[f] < most_against;
+        most_against = xsimd::select(better, along[f], most_against);
+        k = xsimd::select(better, batch(static_cast<float>(f)), k);
+    }
+    const incident_edge_lanes<Arch> edge = pose_edge_lanes<Arch>(inc_fields, origin_x, origin_y, k);
+    const incident_edge_lanes<Arch> face = pose_edge_lanes<Arch>(ref_fields, origin_x, origin_y, r);
+    // The normal and its reciprocal length: what steps 6 to 8 do not read again.
+    const reference_lanes<Arch> ref{flip,     r,        p.sa,     p.sb,     ux,      uy,
+                                    batch(1.0f), face.p1x, face.p1y, face.p2x, face.p2y};
+    return clipped_manifold_lanes<Arch>(ref, ux, uy, edge, origin_x, origin_y, margin);
 }
 
 }  // namespace

@@ -312,7 +312,7 @@ TEST(double_precision, bad_input_names_file_and_line_and_leaves_out_untouched) {
 // stores (box_view from pose_records64, rect_records64); until then it is
 // refused, before any file is read. Either way this test checks what the
 // program does against what the library offers.
-TEST(double_precision, pairs_on_doubles_is_the_all_pairs_answer_or_refused_until_the_query_takes_doubles) {
+TEST(double_precision, pairs_on_doubles_is_the_all_pairs_answer_of_the_double_oracle) {
     const scratch s;
     // Footprints a millimetre apart at 500000.125 and 6e6, in a row: float32
     // rounding closes some of the gaps.
@@ -328,29 +328,22 @@ TEST(double_precision, pairs_on_doubles_is_the_all_pairs_answer_or_refused_until
     }
     write_file(s.file("p.csv"), text);
     const run_result r = s.run("pairs --poses p.csv --precision double --out pairs.csv");
-    if constexpr (std::is_constructible_v<obbsat::box_view, const obbsat::pose_records64&>) {
-        ASSERT_EQ(r.status, 0) << r.err;
-        std::string expected;
-        for (std::size_t i = 0; i < poses.size(); ++i) {
-            for (std::size_t j = i + 1; j < poses.size(); ++j) {
-                if (obbsat::oracle::classify(poses[i], poses[j]) != contact::separated) {
-                    expected += std::to_string(i) + "," + std::to_string(j) + "\n";
-                }
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string expected;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        for (std::size_t j = i + 1; j < poses.size(); ++j) {
+            if (obbsat::oracle::classify(poses[i], poses[j]) != contact::separated) {
+                expected += std::to_string(i) + "," + std::to_string(j) + "\n";
             }
         }
-        EXPECT_EQ(read_file(s.file("pairs.csv")), expected);
-    } else {
-        EXPECT_EQ(r.status, 2);
-        EXPECT_NE(r.err.find("--precision double: not yet available for 'obbsat pairs'"), std::string::npos)
-            << r.err;
-        EXPECT_EQ(r.out, "");
-        EXPECT_EQ(s.entries(), std::vector<std::string>{"p.csv"});
     }
+    EXPECT_EQ(read_file(s.file("pairs.csv")), expected);
     // --precision float is the default, and accepted when given; the rounding
-    // makes some of the millimetre gaps touch.
+    // makes some of the millimetre gaps touch, which the double answer keeps apart.
     const run_result f = s.run("pairs --poses p.csv --precision float");
     EXPECT_EQ(f.status, 0) << f.err;
     EXPECT_NE(f.out, "");
+    EXPECT_NE(f.out, expected);
 }
 
 // ---------------------------------------------------------------------------

@@ -52,7 +52,7 @@ const std::vector<option_spec>& pairs_option_specs() {
         {"threads", "N", "cores to split the query over, 0 for all (default: 1)"},
         {"out", "FILE", "write the pairs here, all or nothing (default: standard output)"},
         {"header", "", "start the output with the header line 'i,j'"},
-        {"precision", "P", "float (default) or double, once the scene query takes the double stores"},
+        {"precision", "P", "float (default) or double: every number read as a double and decided in double"},
         {"help", "", "show this help"},
     };
     return specs;
@@ -126,13 +126,6 @@ void read_store(const io::input_file& file, Store& out, io::status_line& status)
         out = io::read_pose_records64(lines, UINT32_MAX, reading(status, file, "poses"));
     }
 }
-
-// True once the scene query takes `Store` (a box_view can be made of it). The
-// double stores are read above; the query is the other half, and until
-// box_view takes them `--precision double` is refused before any file is read.
-// When it does, the double path below is compiled in with no other change.
-template <class Store>
-constexpr bool scene_query_takes = std::is_constructible_v<box_view, const Store&>;
 
 // The colliding pairs grouped by first index: row i holds the j of every
 // pair (i, j), sorted, so the rows in order are find_pairs' sorted list.
@@ -235,38 +228,19 @@ pair_rows pairs_of_files(const side_files& first, const side_files& against, con
     return pair_rows(a.size(), run, status, va, vb);
 }
 
-// The pairs of double files, through pairs_of_files once the scene query
-// takes the double store of `kind` (checked in run_pairs before any file is
-// read, so the throw below is never reached from there).
-template <class Store>
-pair_rows pairs_of_double_files(const side_files& first, const side_files& against, const collide_options& run,
-                                io::status_line& status, std::uint64_t& records) {
-    if constexpr (scene_query_takes<Store>) {
-        return pairs_of_files<Store>(first, against, run, status, records);
-    } else {
-        throw std::logic_error("the scene query does not take this double store");
-    }
-}
-
+// The pairs of double files: the scene query on the double store of `kind`.
 pair_rows double_pairs_of_files(store_kind kind, const side_files& first, const side_files& against,
                                 const collide_options& run, io::status_line& status, std::uint64_t& records) {
-    return kind == store_kind::corners ? pairs_of_double_files<rect_records64>(first, against, run, status, records)
-                                       : pairs_of_double_files<pose_records64>(first, against, run, status, records);
+    return kind == store_kind::corners ? pairs_of_files<rect_records64>(first, against, run, status, records)
+                                       : pairs_of_files<pose_records64>(first, against, run, status, records);
 }
 
-// The method check of require_method_on for a double store, once the query takes it.
-template <class Store>
-void require_method_on_double(const collide_options& run) {
-    if constexpr (scene_query_takes<Store>) {
-        require_method_on<Store>(run);
-    }
-}
-
+// The method check of require_method_on for a double store.
 void require_double_method_on(store_kind kind, const collide_options& run) {
     if (kind == store_kind::corners) {
-        require_method_on_double<rect_records64>(run);
+        require_method_on<rect_records64>(run);
     } else {
-        require_method_on_double<pose_records64>(run);
+        require_method_on<pose_records64>(run);
     }
 }
 
@@ -383,12 +357,6 @@ int run_pairs(const arguments& args) {
                           " cannot both read standard input ('-')");
     }
     const bool doubles = precision_option(options) == precision::double_;
-    if (doubles && !(input.kind == store_kind::corners ? scene_query_takes<rect_records64>
-                                                       : scene_query_takes<pose_records64>)) {
-        throw usage_error("--precision double: not yet available for 'obbsat pairs' (the scene query runs on "
-                          "float stores only); for double input list the candidate pairs and use "
-                          "'obbsat collide --precision double'");
-    }
     const std::optional<std::string_view> out_path = output_option(options, "out");
     collide_options run;
     run.test = method_option(options, method::exact);

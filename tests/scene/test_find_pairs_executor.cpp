@@ -20,6 +20,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -208,6 +209,48 @@ TEST(find_pairs_executor, pair_finder_over_moving_frames_gives_the_pairs_of_a_fr
             boxes[i].center.x += step * static_cast<float>(static_cast<int>(i % 7) - 3);
         }
     }
+}
+
+TEST(find_pairs_executor, pair_finder_with_ids_over_erased_and_appended_rows_on_every_executor) {
+    // Rows erased and appended each frame: the answer is read in shares, on the executor.
+    std::vector<rect_pose> pool = scene(90000, obbsat::scene_sizes::uniform, 10);
+    std::vector<rect_pose> boxes(pool.begin(), pool.begin() + 60000);
+    std::vector<std::uint64_t> ids(boxes.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        ids[i] = i;
+    }
+    std::size_t next = boxes.size();
+    test_executors executors;
+    std::vector<obbsat::pair_finder> finders;
+    for (const auto& named : executors.all()) {
+        finders.emplace_back(on(named.second, 2));
+    }
+    std::size_t reused = 0;
+    for (int frame = 0; frame < 6; ++frame) {
+        if (frame > 1) {
+            for (std::size_t c = 0; c < 300; ++c) {
+                const std::size_t at = (c * 7919 + static_cast<std::size_t>(frame) * 104729) % boxes.size();
+                boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(at));
+                ids.erase(ids.begin() + static_cast<std::ptrdiff_t>(at));
+            }
+            for (std::size_t c = 0; c < 300; ++c) {
+                boxes.push_back(pool[next % pool.size()]);
+                ids.push_back(next++);
+            }
+            for (std::size_t i = 0; i < boxes.size(); ++i) {
+                boxes[i].center.x += 0.002f * static_cast<float>(static_cast<int>(i % 7) - 3);
+            }
+        }
+        const obbsat::box_view view(boxes);
+        const std::vector<pair_index> want = obbsat::find_pairs(view, on(nullptr, 1));
+        for (std::size_t f = 0; f < finders.size(); ++f) {
+            EXPECT_TRUE(same_pairs(finders[f].find(view.with_ids(ids)), want))
+                << executors.all()[f].first << ", frame " << frame;
+            reused += frame > 1 && finders[f].stats().reused_candidates ? 1u : 0u;
+        }
+    }
+    EXPECT_GE(reused, 3 * finders.size()) << "frames answered from kept candidates";
+    EXPECT_GT(executors.ranges(), 0u);
 }
 
 TEST(find_pairs_executor, collide_pairs_gives_the_verdicts_of_one_thread_on_every_executor) {

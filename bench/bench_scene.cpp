@@ -30,6 +30,12 @@
 //       the same query's bounds (up to check_limit boxes): the double one
 //       against the double oracle. Counter pairs_per_box.
 //
+//   find_pairs/exact/poses/... and find_contacts/exact/poses/...  the scene
+//       query on one thread over the as-generated uniform scene, without and
+//       with contacts (obbsat::find_contacts at margin 0), in the same run.
+//       Both check that find_contacts's pairs are find_pairs's (up to
+//       check_limit boxes). Counters pairs_per_box, points_per_pair.
+//
 // The peers' rows (peer_scene/, peer_frame/) answer the same question on the
 // same scenes; scene_harness.hpp says how every row is timed and checked.
 #include "bench_registry.hpp"
@@ -37,6 +43,7 @@
 #include "scene_workload.hpp"
 
 #include <obbsat/collide.hpp>
+#include <obbsat/find_contacts.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
@@ -420,6 +427,59 @@ void run_precision_row(benchmark::State& state, std::size_t boxes, bool doubles)
     }
 }
 
+
+/// One row of the pair: find_pairs (contacts false) or find_contacts at
+/// margin 0 (contacts true) with method exact on one thread, over the
+/// as-generated uniform scene. Both first check that find_contacts's pairs
+/// are find_pairs's (up to check_limit boxes).
+void run_contacts_row(benchmark::State& state, std::size_t boxes, bool contacts) {
+    try {
+        scene_workload& w = scene_workload_for(boxes, obbsat::scene_sizes::uniform);
+        const obbsat::box_view view(w.poses(scene_frame::as_generated));
+        const obbsat::collide_options options = options_for(obbsat::method::exact, 1);
+        if (boxes <= check_limit) {
+            const std::vector<obbsat::pair_index> want = obbsat::find_pairs(view, options);
+            const obbsat::scene_contacts got = obbsat::find_contacts(view, options);
+            const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
+                return x.a == y.a && x.b == y.b;
+            };
+            if (got.pairs.size() != want.size() || got.contacts.size() != want.size() ||
+                !std::equal(want.begin(), want.end(), got.pairs.begin(), same)) {
+                state.SkipWithError("find_contacts's pairs differ from find_pairs's");
+                return;
+            }
+        }
+        double pairs = 0, points = 0;
+        for (auto _ : state) {
+            if (contacts) {
+                const obbsat::scene_contacts found = obbsat::find_contacts(view, options);
+                benchmark::DoNotOptimize(found.contacts.data());
+                pairs += static_cast<double>(found.pairs.size());
+                state.PauseTiming();
+                for (const obbsat::contact& c : found.contacts) {
+                    points += static_cast<double>(c.point_count);
+                }
+                state.ResumeTiming();
+            } else {
+                const std::vector<obbsat::pair_index> found = obbsat::find_pairs(view, options);
+                benchmark::DoNotOptimize(found.data());
+                pairs += static_cast<double>(found.size());
+            }
+        }
+        const auto n = static_cast<double>(boxes);
+        state.counters["ns_per_box"] =
+            benchmark::Counter(n * 1e-9, static_cast<benchmark::Counter::Flags>(
+                                             benchmark::Counter::kIsIterationInvariantRate |
+                                             benchmark::Counter::kInvert));
+        state.counters["pairs_per_box"] = benchmark::Counter(pairs / n, benchmark::Counter::kAvgIterations);
+        if (contacts) {
+            state.counters["points_per_pair"] = benchmark::Counter(pairs > 0 ? points / pairs : 0.0);
+        }
+    } catch (const std::exception& e) {
+        state.SkipWithError(e.what());
+    }
+}
+
 }  // namespace
 
 void register_scene_benchmarks() {
@@ -473,6 +533,19 @@ void register_scene_benchmarks() {
             benchmark::RegisterBenchmark(name.c_str(),
                                          [boxes, filtered](benchmark::State& state) {
                                              run_filter_row(state, boxes, filtered);
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+    // The scene query with and without contacts, side by side on one scene.
+    for (const std::size_t boxes : scene_box_counts_to_register()) {
+        for (const bool contacts : {false, true}) {
+            const std::string name = std::string(contacts ? "find_contacts" : "find_pairs") + "/exact/poses/" +
+                                     scene_name_tail(boxes, obbsat::scene_sizes::uniform, 1);
+            benchmark::RegisterBenchmark(name.c_str(),
+                                         [boxes, contacts](benchmark::State& state) {
+                                             run_contacts_row(state, boxes, contacts);
                                          })
                 ->UseRealTime()
                 ->Unit(benchmark::kMillisecond);

@@ -174,27 +174,36 @@ contact manifold_of(const contact_box& a, const float inv_a[4], const contact_bo
     const float g = 1.0f / (tau[0] - tau[1]);
     const point along = minus(p2, p1);
     const point ends[2] = {p1, p2};
-    point kept_at[2] = {};
+    point at[2];
+    contact_feature features[2];
+    float separation[2];
     for (int e = 0; e < 2; ++e) {
-        point p = ends[e];
-        contact_feature feature = feature_of(flip, r, feature_type::face, (k + e) & 3, feature_type::vertex);
+        at[e] = ends[e];
+        features[e] = feature_of(flip, r, feature_type::face, (k + e) & 3, feature_type::vertex);
         if (tau[e] < 0.0f || tau[e] > T) {
             const bool below = tau[e] < 0.0f;
             const float lambda = below ? tau[0] * g : (tau[0] - T) * g;
-            p = point{p1.x + (lambda * along.x), p1.y + (lambda * along.y)};
-            feature = feature_of(flip, below ? r : (r + 1) & 3, feature_type::vertex, k, feature_type::face);
+            at[e] = point{p1.x + (lambda * along.x), p1.y + (lambda * along.y)};
+            features[e] = feature_of(flip, below ? r : (r + 1) & 3, feature_type::vertex, k, feature_type::face);
         }
-        // Step 7: keep the point when it is within the margin and not the
-        // point already kept.
-        const float separation = dot(minus(p, q1), u);
-        const bool repeats = out.point_count == 1 && p.x == kept_at[0].x && p.y == kept_at[0].y;
-        if (separation <= margin && !repeats) {
-            kept_at[out.point_count] = p;
+        separation[e] = dot(minus(at[e], q1), u);
+    }
+    // Step 7: keep the points within the margin; a touching or overlapping
+    // pair keeps its nearer point besides, since a separation of 0 exactly
+    // can round to a few ulps above the margin 0 and drop both.
+    const bool touching = sr <= 0.0f;
+    point kept_at[2] = {};
+    for (int e = 0; e < 2; ++e) {
+        const bool nearer = separation[e] <= separation[1 - e];
+        const bool within = separation[e] <= margin || (touching && nearer);
+        const bool repeats = out.point_count == 1 && at[e].x == kept_at[0].x && at[e].y == kept_at[0].y;
+        if (within && !repeats) {
+            kept_at[out.point_count] = at[e];
             contact_point& kept = out.points[out.point_count++];
-            kept.x = origin.x + p.x;
-            kept.y = origin.y + p.y;
-            kept.separation = separation;
-            kept.feature = feature;
+            kept.x = origin.x + at[e].x;
+            kept.y = origin.y + at[e].y;
+            kept.separation = separation[e] <= margin ? separation[e] : margin;
+            kept.feature = features[e];
         }
     }
     return out;

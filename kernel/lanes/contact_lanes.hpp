@@ -331,9 +331,16 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> clipped_manifold_lanes(const referenc
         const batch inc_code = xsimd::select(moved, k + four, vertex_of_incident[e]);
         feature[e] =
             feature_bits<Arch>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
-        // Step 7.
         sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
-        keep[e] = in_reach & (sep[e] <= margin);
+    }
+    // Step 7: within the margin, or the nearer point of a touching or
+    // overlapping pair; a kept separation above the margin reads as it.
+    const auto touching = xsimd::select(flip, ref.sb, ref.sa) <= zero;
+    for (int e = 0; e < 2; ++e) {
+        keep[e] = in_reach & ((sep[e] <= margin) | (touching & (sep[e] <= sep[1 - e])));
+    }
+    for (int e = 0; e < 2; ++e) {
+        sep[e] = xsimd::select(sep[e] <= margin, sep[e], margin);
     }
     // The second point only when it is not the first again.
     const auto repeats = keep[0] & (px[1] == px[0]) & (py[1] == py[0]);

@@ -47,8 +47,8 @@ struct pose_pairs {
 // margin 2^-4 (from integer arithmetic and exact float operations only, so the
 // same on every machine). Change it only with a deliberate change of the
 // contact steps or of the generator, and say so in the commit.
-constexpr std::uint64_t golden_pose_digest = 0xae087060c95b16c4;
-constexpr std::uint64_t golden_corner_digest = 0x5f6397f530b12785;
+constexpr std::uint64_t golden_pose_digest = 0xa10d44894117974b;
+constexpr std::uint64_t golden_corner_digest = 0x6183806be370f38b;
 
 /// FNV-1a (64-bit) over the bytes of the contacts.
 std::uint64_t contact_digest(const std::vector<contact>& contacts) {

@@ -144,6 +144,37 @@ TEST(contact_ref, exact_touching_has_depth_zero_and_points) {
     EXPECT_EQ(short_margin.point_count, 0u);
 }
 
+// A tilted pair that touches exactly (rotations (8, -15) and (15, 8) are at
+// right angles, and the faces meet): the depth rounds to 0, but the points'
+// separations dot(p - q1, u) round a few ulps above it. The nearer point is
+// kept at margin 0 all the same, at the place a margin of a few ulps keeps it,
+// its separation read as the margin.
+TEST(contact_ref, a_tilted_touching_pair_keeps_its_nearer_point_at_margin_zero) {
+    const rect_pose a = box(1, -1, 0.5f, 3, 8, -15), b = box(-66, -56, 2, 0.5f, 15, 8);
+    const contact c = contact_of(a, b);
+    EXPECT_EQ(c.depth, 0.0f);
+    ASSERT_GE(c.point_count, 1u);
+    const contact wider = contact_of(a, b, 0x1p-10f);
+    ASSERT_GE(wider.point_count, c.point_count);
+    float nearest = wider.points[0].separation;
+    for (unsigned k = 1; k < wider.point_count; ++k) {
+        nearest = std::fmin(nearest, wider.points[k].separation);
+    }
+    EXPECT_GT(nearest, 0.0f) << "the case needs a separation that rounds above 0";
+    for (unsigned k = 0; k < c.point_count; ++k) {
+        SCOPED_TRACE("point " + std::to_string(k));
+        EXPECT_EQ(c.points[k].separation, 0.0f);
+        bool found = false;
+        for (unsigned w = 0; w < wider.point_count; ++w) {
+            found = found || (c.points[k].x == wider.points[w].x && c.points[k].y == wider.points[w].y);
+        }
+        EXPECT_TRUE(found) << "a point the wider margin keeps too";
+    }
+
+    // Swapped, the same touch from B's side.
+    EXPECT_GE(contact_of(b, a).point_count, 1u);
+}
+
 // A segment (hy = 0) four long lying on A's top face: clipped at both of A's
 // sides. A point (both half extents 0) 0.25 inside A: one point, not twice.
 TEST(contact_ref, zero_half_extents) {

@@ -57,11 +57,15 @@
 //      point at λ is (p1.x + (λ·(p2.x − p1.x)), p1.y + (λ·(p2.y − p1.y))).
 //   7. Separation of each point: dot(p − q1, u). A point is kept iff
 //      sA <= margin, sB <= margin, the edge reaches the face, and its
-//      separation <= margin, and, for p2, unless p1 was kept at the same
+//      separation <= margin or, when sr <= 0 (touching or overlapping), it is
+//      <= the other point's (so such a pair always has a point: a separation
+//      of 0 exactly rounds to a few u·R either side, and at margin 0 both
+//      could be dropped), and, for p2, unless p1 was kept at the same
 //      place (x == x and y == y: a reference face or incident edge of zero
 //      length gives one point, not the same twice). Kept points fill points[]
 //      in the order p1, p2; point_count is how many; a point's position is
-//      (o.x + p.x, o.y + p.y).
+//      (o.x + p.x, o.y + p.y), its separation min(separation, margin) as
+//      "separation <= margin ? separation : margin".
 //   8. Features of a point (then swapped to A's and B's when flip): an endpoint
 //      left in place is (face r of R, vertex of I it is); one moved to λ0 is
 //      (vertex r of R, face k of I), to λT (vertex (r + 1) mod 4 of R, face k of I).

@@ -163,7 +163,7 @@ TEST(pair_finder_together, double_rows_with_ids_that_come_and_go) {
         std::vector<std::uint64_t> ids;
         for (const row& r : world.rows) {
             const rect_pose& p = r.pose;
-            poses.push_back({{500000.0 + p.center.x + 1e-3 * (r.id % 7), 5700000.0 + p.center.y},
+            poses.push_back({{500000.0 + p.center.x + 1e-3 * static_cast<double>(r.id % 7), 5700000.0 + p.center.y},
                              {p.half_extents.x, p.half_extents.y},
                              {p.rotation.x, p.rotation.y}});
             ids.push_back(r.id);

@@ -76,9 +76,9 @@ std::string distances_of_files(const rectangle_input& input, const io::input_fil
     read_box_store(rects_file, store, status);
     const std::vector<pair_index> pairs = read_pair_list(pairs_file, store.size(), rects_file.name(), status);
     const std::vector<closest_points> found = naming_record_line(input.path, [&] {
-        std::vector<closest_points> out(pairs.size());
-        distance_pairs(store, pairs.data(), pairs.size(), out.data(), options);
-        return out;
+        std::vector<closest_points> computed(pairs.size());
+        distance_pairs(store, pairs.data(), pairs.size(), computed.data(), options);
+        return computed;
     });
     write_distance_lines(pairs, found, header, out);
     return std::to_string(store.size()) + " boxes, " + std::to_string(pairs.size()) + " pairs";

@@ -15,10 +15,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <regex>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -351,13 +353,31 @@ TEST(double_precision, pairs_on_doubles_is_the_all_pairs_answer_of_the_double_or
 
 // Every number of the points, x, y, x1 ... attributes of an SVG.
 std::vector<double> drawn_coordinates(const std::string& svg) {
+    static const char* const names[] = {"points", "x", "y", "x1", "y1", "x2", "y2", "cx", "cy", "width", "height"};
     std::vector<double> values;
-    const std::regex attribute(R"re((?:points|x|y|x1|y1|x2|y2|cx|cy|width|height)="([^"]*)")re");
-    const std::regex number(R"([-+]?[0-9.]+(?:e[-+]?[0-9]+)?)");
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), attribute); it != std::sregex_iterator(); ++it) {
-        const std::string text = (*it)[1];
-        for (auto n = std::sregex_iterator(text.begin(), text.end(), number); n != std::sregex_iterator(); ++n) {
-            values.push_back(std::stod(n->str()));
+    for (std::size_t at = svg.find("=\""); at != std::string::npos; at = svg.find("=\"", at + 2)) {
+        // The attribute's name: the letters and digits before '='.
+        std::size_t begin = at;
+        while (begin > 0 && std::isalnum(static_cast<unsigned char>(svg[begin - 1])) != 0) {
+            --begin;
+        }
+        const std::string name = svg.substr(begin, at - begin);
+        if (std::find(std::begin(names), std::end(names), name) == std::end(names)) {
+            continue;
+        }
+        const std::size_t end = svg.find('"', at + 2);
+        const std::string text = svg.substr(at + 2, end - (at + 2));
+        // Its numbers: runs of digits, signs, points and exponents.
+        std::size_t k = 0;
+        while (k < text.size()) {
+            const char c = text[k];
+            if (std::isdigit(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '+' || c == '.') {
+                std::size_t used = 0;
+                values.push_back(std::stod(text.substr(k), &used));
+                k += used;
+            } else {
+                ++k;
+            }
         }
     }
     return values;

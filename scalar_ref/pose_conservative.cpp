@@ -1,66 +1,53 @@
-#include <obbsat/ref/pose_conservative.hpp>
+// Methods conservative and exact's certified fast path on float and on double
+// poses: one set of steps (pose_steps.hpp), the operations and the proven
+// margins stated in obbsat/ref/pose_conservative.hpp and pose_conservative64.hpp.
+#include "pose_steps.hpp"
 
-#include <cmath>
-#include <limits>
+#include <obbsat/ref/pose_conservative.hpp>
+#include <obbsat/ref/pose_conservative64.hpp>
 
 namespace obbsat::ref {
 
-void pose_gaps(const pose_axes& axes, float gap[4]) {
-    for (int k = 0; k < 4; ++k) {
-        gap[k] = std::fabs(axes.offset[k]) - axes.reach[k];
-    }
-}
-
-pose_margins margins_of(const rect_pose& a, const rect_pose& b, const pose_axes& axes) {
-    const float D = std::fabs(axes.dx) + std::fabs(axes.dy);
-    const float Ra = std::fmax(std::fabs(a.rotation.x), std::fabs(a.rotation.y));
-    const float Rb = std::fmax(std::fabs(b.rotation.x), std::fabs(b.rotation.y));
-    const float Ha = a.half_extents.x + a.half_extents.y;
-    const float Hb = b.half_extents.x + b.half_extents.y;
-    const float T = (D + (Ra * Ha)) + (Rb * Hb);
-    const float Sa = Ra * T;
-    const float Sb = Rb * T;
-    const bool in_range = Ra >= 0x1p-40f && Ra <= 0x1p62f && Rb >= 0x1p-40f && Rb <= 0x1p62f;
-    if (Sa <= 0x1p100f && Sb <= 0x1p100f && in_range) {
-        return pose_margins{(0x1p-19f * Sa) + 0x1p-140f, (0x1p-19f * Sb) + 0x1p-140f};
-    }
-    const float none = std::numeric_limits<float>::infinity();
-    return pose_margins{none, none};
-}
-
 namespace {
 
-/// The margin of axis k: A's for axes 0 and 1, B's for 2 and 3.
-float margin_of_axis(const pose_margins& m, int k) { return k < 2 ? m.a : m.b; }
+/// float32: margins proven for rotations of length 2^-40 to 2^62 and S up to 2^100.
+constexpr pose_steps::margin_limits<float> float_limits{0x1p-40f, 0x1p62f, 0x1p100f, 0x1p-19f, 0x1p-140f};
+
+/// double: margins proven for rotations of length 2^-500 to 2^500 and S up to 2^1000.
+constexpr pose_steps::margin_limits<double> double_limits{0x1p-500, 0x1p500, 0x1p1000, 0x1p-48, 0x1p-1000};
 
 }  // namespace
 
+void pose_gaps(const pose_axes& axes, float gap[4]) { pose_steps::gaps_of(axes, gap); }
+
+void pose_gaps(const pose_axes64& axes, double gap[4]) { pose_steps::gaps_of(axes, gap); }
+
+pose_margins margins_of(const rect_pose& a, const rect_pose& b, const pose_axes& axes) {
+    return pose_steps::margins_of<pose_margins>(a, b, axes, float_limits);
+}
+
+pose_margins64 margins_of(const rect_pose64& a, const rect_pose64& b, const pose_axes64& axes) {
+    return pose_steps::margins_of<pose_margins64>(a, b, axes, double_limits);
+}
+
 bool conservative(const rect_pose& a, const rect_pose& b) {
     const pose_axes axes = local_axes(a, b);
-    const pose_margins margins = margins_of(a, b, axes);
-    float gap[4];
-    pose_gaps(axes, gap);
-    for (int k = 0; k < 4; ++k) {
-        if (gap[k] > margin_of_axis(margins, k)) {
-            return false;
-        }
-    }
-    return true;
+    return pose_steps::none_apart<float>(axes, margins_of(a, b, axes));
+}
+
+bool conservative(const rect_pose64& a, const rect_pose64& b) {
+    const pose_axes64 axes = local_axes(a, b);
+    return pose_steps::none_apart<double>(axes, margins_of(a, b, axes));
 }
 
 certified_verdict certify(const rect_pose& a, const rect_pose& b) {
     const pose_axes axes = local_axes(a, b);
-    const pose_margins margins = margins_of(a, b, axes);
-    float gap[4];
-    pose_gaps(axes, gap);
-    bool apart = false;
-    bool overlapping = true;
-    for (int k = 0; k < 4; ++k) {
-        const float margin = margin_of_axis(margins, k);
-        apart = apart || gap[k] > margin;
-        overlapping = overlapping && gap[k] < -margin;
-    }
-    return certified_verdict{apart, overlapping && !apart};
+    return pose_steps::certify_from<float>(axes, margins_of(a, b, axes));
+}
+
+certified_verdict certify(const rect_pose64& a, const rect_pose64& b) {
+    const pose_axes64 axes = local_axes(a, b);
+    return pose_steps::certify_from<double>(axes, margins_of(a, b, axes));
 }
 
 }  // namespace obbsat::ref

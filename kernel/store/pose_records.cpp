@@ -1,49 +1,15 @@
 #include "store/finite_check.hpp"
+#include "store/pose_check.hpp"
 
 #include <obbsat/error.hpp>
 #include <obbsat/pose_records.hpp>
 
 #include <cmath>
 #include <cstring>
-#include <sstream>
 
 namespace obbsat {
 
-namespace {
-
-std::string shown(float value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
-[[noreturn]] void refuse(std::size_t index, const std::string& what) {
-    throw invalid_input("pose " + std::to_string(index) + ": " + what);
-}
-
-}  // namespace
-
-void require_valid_pose(const rect_pose& p, std::size_t index) {
-    const struct {
-        const char* name;
-        float value;
-    } fields[] = {{"cx", p.center.x},       {"cy", p.center.y}, {"hx", p.half_extents.x},
-                  {"hy", p.half_extents.y}, {"c", p.rotation.x}, {"s", p.rotation.y}};
-    for (const auto& f : fields) {
-        if (!std::isfinite(f.value)) {
-            refuse(index, std::string(f.name) + " is " + shown(f.value) + ", not a finite number");
-        }
-    }
-    if (p.half_extents.x < 0.0f) {
-        refuse(index, "half extent hx is " + shown(p.half_extents.x) + ", negative");
-    }
-    if (p.half_extents.y < 0.0f) {
-        refuse(index, "half extent hy is " + shown(p.half_extents.y) + ", negative");
-    }
-    if (p.rotation.x == 0.0f && p.rotation.y == 0.0f) {
-        refuse(index, "rotation vector (c, s) is (0, 0)");
-    }
-}
+void require_valid_pose(const rect_pose& p, std::size_t index) { detail::require_valid_pose_fields(p, index); }
 
 namespace {
 
@@ -94,7 +60,7 @@ pose_records pose_records::from_angles(const pose* poses, std::size_t count) {
     out.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         if (!std::isfinite(poses[i].angle)) {
-            refuse(i, "angle is " + shown(poses[i].angle) + ", not a finite number");
+            detail::refuse_pose(i, "angle is " + detail::shown_field(poses[i].angle) + ", not a finite number");
         }
         out.push_back(rect_pose_of(poses[i]));
     }

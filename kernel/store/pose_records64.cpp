@@ -1,26 +1,14 @@
 #include "store/finite_check.hpp"
+#include "store/pose_check.hpp"
 
 #include <obbsat/error.hpp>
 #include <obbsat/pose_records64.hpp>
 
 #include <cmath>
-#include <sstream>
-#include <string>
 
 namespace obbsat {
 
 namespace {
-
-std::string shown(double value) {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-}
-
-[[noreturn]] void refuse_pose(std::size_t index, const std::string& what) {
-    throw invalid_input("pose " + std::to_string(index) + ": " + what);
-}
 
 // Branch-free, so that a batch checks at copy speed; require_valid_pose names
 // the offender once a pass found one.
@@ -33,27 +21,7 @@ bool valid_pose(const rect_pose64& p) {
 
 }  // namespace
 
-void require_valid_pose(const rect_pose64& p, std::size_t index) {
-    const struct {
-        const char* name;
-        double value;
-    } fields[] = {{"cx", p.center.x},       {"cy", p.center.y},  {"hx", p.half_extents.x},
-                  {"hy", p.half_extents.y}, {"c", p.rotation.x}, {"s", p.rotation.y}};
-    for (const auto& f : fields) {
-        if (!std::isfinite(f.value)) {
-            refuse_pose(index, std::string(f.name) + " is " + shown(f.value) + ", not a finite number");
-        }
-    }
-    if (p.half_extents.x < 0.0) {
-        refuse_pose(index, "half extent hx is " + shown(p.half_extents.x) + ", negative");
-    }
-    if (p.half_extents.y < 0.0) {
-        refuse_pose(index, "half extent hy is " + shown(p.half_extents.y) + ", negative");
-    }
-    if (p.rotation.x == 0.0 && p.rotation.y == 0.0) {
-        refuse_pose(index, "rotation vector (c, s) is (0, 0)");
-    }
-}
+void require_valid_pose(const rect_pose64& p, std::size_t index) { detail::require_valid_pose_fields(p, index); }
 
 void require_valid_poses(const rect_pose64* poses, std::size_t count) {
     bool all_valid = true;

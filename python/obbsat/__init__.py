@@ -22,7 +22,8 @@ uint32 pair array are read where they are. Anything else (float16 corners,
 int64 pairs, a strided view) is converted once per call, which costs one pass
 and a temporary of N * 32 (corners) or N * 24 bytes (poses), or M * 8 bytes
 (pairs). A :func:`records` store is checked once, when built, where an array
-is checked on every call.
+is checked on every call; float64 data gives a double store
+(:class:`RectRecords64`, :class:`PoseRecords64`), decided as the array.
 
 >>> import numpy as np, obbsat
 >>> rects = np.array([[0, 1, 2, 1, 2, 0, 0, 0],
@@ -41,7 +42,7 @@ import operator as _operator
 import numpy as _np
 
 from . import _core, testing
-from ._core import FindPairsStats, PoseRecords, RectRecords, UnsupportedBackendError
+from ._core import FindPairsStats, PoseRecords, PoseRecords64, RectRecords, RectRecords64, UnsupportedBackendError
 
 __version__ = _core.__version__
 
@@ -63,7 +64,9 @@ __all__ = [
     "FindPairsStats",
     "PairFinder",
     "PoseRecords",
+    "PoseRecords64",
     "RectRecords",
+    "RectRecords64",
     "UnsupportedBackendError",
     "aligned",
     "backends",
@@ -96,6 +99,16 @@ _DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
 _DEFAULT_METHOD64 = {"corners": "exact", "poses": "local"}
 _PRECISIONS = ("float32", "float64")
 _SCENE_METHOD = "exact"
+
+# The stores records() builds: float32 ones and double ones (every double
+# kept exactly), and for each its form and the _core call that decides a
+# pair list over it.
+_FLOAT_STORES = (RectRecords, PoseRecords)
+_DOUBLE_STORES = (RectRecords64, PoseRecords64)
+_STORES = _FLOAT_STORES + _DOUBLE_STORES
+_STORE_FORM = {RectRecords: "corners", PoseRecords: "poses", RectRecords64: "corners", PoseRecords64: "poses"}
+_STORE_CALL = {RectRecords: "collide_store", PoseRecords: "collide_pose_store",
+               RectRecords64: "collide_store64", PoseRecords64: "collide_pose_store64"}
 _DEFAULT_BACKEND = "auto"
 
 
@@ -119,8 +132,8 @@ def _threads(threads):
 
 def _refuse_store(value, call, what, expected):
     """``TypeError`` naming the call, the argument and what it expected when a
-    store (:class:`RectRecords`, :class:`PoseRecords`) is passed where it does not go."""
-    if isinstance(value, (RectRecords, PoseRecords)):
+    store (:class:`RectRecords`, :class:`PoseRecords`, or a double one) is passed where it does not go."""
+    if isinstance(value, _STORES):
         raise TypeError(f"{call}: {what} must be {expected}, got {type(value).__name__}")
 
 
@@ -195,8 +208,12 @@ def _form(rects, what, precision=None):
 
     This is the one place that maps an array's shape to a store: rows of
     eight floats (``(N, 8)`` or ``(N, 4, 2)``) are corners, rows of six
-    (``(N, 6)``) are poses.
+    (``(N, 6)``) are poses. A store is refused: calls that take one handle
+    it before (:func:`_store_form`).
     """
+    if isinstance(rects, _STORES):
+        _store_form(rects, precision)
+        raise TypeError(f"{what}: expected an array of corners or poses, got {type(rects).__name__}")
     if not isinstance(rects, _np.ndarray):
         rects = _np.asarray(rects)
     if rects.dtype.kind not in "fiu":
@@ -212,8 +229,24 @@ def _form(rects, what, precision=None):
     return form, _np.ascontiguousarray(rects, dtype=_dtype_of(rects.dtype, precision))
 
 
-def _is64(array):
-    return isinstance(array, _np.ndarray) and array.dtype == _np.float64
+def _is64(rows):
+    """True for rows the library reads as doubles: a float64 array or a double store."""
+    return isinstance(rows, _DOUBLE_STORES) or (isinstance(rows, _np.ndarray) and rows.dtype == _np.float64)
+
+
+def _store_form(store, precision):
+    """The form of ``store``, ``"corners"`` or ``"poses"``. A store is never
+    converted: ``precision`` naming the other float type is a ``ValueError``
+    naming both (a float32 store cannot give back the doubles it was built
+    from; a double store is not rounded behind the caller's back)."""
+    name = type(store).__name__
+    if precision == "float64" and isinstance(store, _FLOAT_STORES):
+        raise ValueError(f"precision='float64' asks for float64 rows, but a {name} holds float32: "
+                         "pass the float64 array itself, or its double store (obbsat.records(rows))")
+    if precision == "float32" and isinstance(store, _DOUBLE_STORES):
+        raise ValueError(f"precision='float32' asks for float32 rows, but a {name} holds float64 and is never "
+                         "rounded: pass the array, or a float32 store (obbsat.records(rows, precision='float32'))")
+    return _STORE_FORM[type(store)]
 
 
 def _poses(poses, what, precision="float32"):
@@ -228,20 +261,32 @@ def _poses(poses, what, precision="float32"):
     return _np.ascontiguousarray(poses, dtype=_dtype_of(poses.dtype, precision))
 
 
-def records(rects):
-    """A store of the rectangles in the library's packed records (32 bytes
-    each, 64-byte aligned), copied and checked once: a :class:`RectRecords`
-    for corners, a :class:`PoseRecords` for poses (shape (N, 6)).
+def records(rects, *, precision=None):
+    """A store of the rectangles in the library's packed records (64-byte
+    aligned), copied and checked once. Its precision follows the data, as
+    every call's does: float64 rows give a double store, every double kept
+    exactly (:class:`RectRecords64` for corners, :class:`PoseRecords64` for
+    poses, 64 bytes a row); anything else (float32, float16, integers) a
+    float32 store (:class:`RectRecords`, :class:`PoseRecords`, 32 bytes a
+    row).
+
+    ``precision="float32"`` asks for the float32 store of float64 data,
+    rounding each coordinate to the nearest float32: faster calls and half
+    the memory, but the answers are then those of the rounded rectangles
+    (docs/python.md says what that costs). ``precision="float64"`` widens
+    float32 or integer data (exactly) to a double store. A store passed in
+    is returned as it is; a precision naming the other float type is a
+    ``ValueError`` (a store is never converted).
 
     :func:`collide` reads a float32 corner array in place but checks its
     coordinates on every call (one pass over the N rectangles), and copies a
-    pose array into pose records on every call; a store is checked (and
-    copied) when it is built, so calls over it read only the pairs. Use one
-    when many pair lists meet the same rectangles. A store holds float32: a
-    float64 array is rounded to float32 here (the calls decide a float64
-    array itself in float64). ``store.corners`` (or
-    ``store.poses``) is a read-only view of its records. A store pickles (for
-    Dask workers, say) as its corners (or poses).
+    pose array (or any float64 array) into records on every call; a store
+    is checked (and copied) when it is built, so calls over it read only the
+    pairs, and decide them on the same path as an array of its rows (the
+    same verdicts, byte for byte). Use one when many pair lists meet the
+    same rectangles. ``store.corners`` (or ``store.poses``) is a read-only
+    view of its records, float32 or float64. A store pickles (for Dask
+    workers, say) as its corners (or poses).
 
     >>> store = obbsat.records(np.array([[0, 1, 2, 1, 2, 0, 0, 0]] * 2, dtype=np.float32))
     >>> len(store), obbsat.collide(store, [[0, 1]])
@@ -249,10 +294,17 @@ def records(rects):
     >>> poses = obbsat.records(np.array([[0, 0, 1, 1, 1, 0], [2, 0, 1, 1, 0, 1]], dtype=np.float32))
     >>> type(poses).__name__, obbsat.collide(poses, [[0, 1]], method="exact")
     ('PoseRecords', array([ True]))
+    >>> utm = obbsat.records(np.array([[500000.125, 4e6, 1, 1, 1, 0], [500002.125, 4e6, 1, 1, 1, 0]]))
+    >>> utm, obbsat.collide(utm, [[0, 1]], method="exact")
+    (PoseRecords64(2 poses), array([ True]))
     """
-    if isinstance(rects, (RectRecords, PoseRecords)):
+    precision = _precision(precision)
+    if isinstance(rects, _STORES):
+        _store_form(rects, precision)
         return rects
-    form, rects = _form(rects, "rects", "float32")
+    form, rects = _form(rects, "rects", precision)
+    if _is64(rects):
+        return PoseRecords64(rects) if form == "poses" else RectRecords64(rects)
     return PoseRecords(rects) if form == "poses" else RectRecords(rects)
 
 
@@ -319,28 +371,19 @@ def _verdicts(out, count):
 _PAIRS_EXPECTED = "an (M, 2) integer array"
 
 
-def _refuse_float64_store(store, precision):
-    if precision == "float64":
-        raise ValueError(f"precision='float64' asks for float64 rows, but a {type(store).__name__} holds float32: "
-                         "pass the float64 array itself")
-
-
-def _default_method(form, array, method):
+def _default_method(form, rows, method):
+    """``method``, or for None the default of a pair-list call over ``rows`` (an array or a store) of ``form``."""
     if method is not None:
         return method
-    return (_DEFAULT_METHOD64 if _is64(array) else _DEFAULT_METHOD)[form]
+    return (_DEFAULT_METHOD64 if _is64(rows) else _DEFAULT_METHOD)[form]
 
 
 def _store(rects, method, precision=None):
     """``(rects, call, method)``: the rectangles as the library reads them, the
     ``_core`` call for their store and precision, and the method (the
     default for ``None``)."""
-    if isinstance(rects, RectRecords):
-        _refuse_float64_store(rects, precision)
-        form, call = "corners", _core.collide_store
-    elif isinstance(rects, PoseRecords):
-        _refuse_float64_store(rects, precision)
-        form, call = "poses", _core.collide_pose_store
+    if isinstance(rects, _STORES):
+        form, call = _store_form(rects, precision), getattr(_core, _STORE_CALL[type(rects)])
     else:
         form, rects = _form(rects, "rects", precision)
         if _is64(rects):
@@ -358,7 +401,9 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None, *, p
     rects : array_like, shape (N, 4, 2), (N, 8) or (N, 6), or a store
         Corners UL, UR, LR, LL of each rectangle (x, y each), or poses
         ``cx, cy, hx, hy, c, s`` (shape (N, 6)), or a :func:`records` store
-        (:class:`RectRecords`, :class:`PoseRecords`). float32 C-contiguous
+        (:class:`RectRecords`, :class:`PoseRecords`, or the double
+        :class:`RectRecords64`, :class:`PoseRecords64`, decided as the
+        float64 array of their rows). float32 C-contiguous
         corners are read in place; anything else is converted once. Every
         coordinate must be finite (checked on every call: one read pass).
         float32 C-contiguous poses are read in place too, each checked on
@@ -513,7 +558,9 @@ def corners_of_poses(poses, backend="auto", *, precision=None):
         LR = ((cx + ux) - vx, (cy + uy) - vy)    LL = ((cx - ux) - vx, (cy - uy) - vy)
 
     ``poses`` is a (N, 6) array (copied once into pose records and checked,
-    as in :func:`collide`) or a :class:`PoseRecords` store. Use it to run a
+    as in :func:`collide`) or a :class:`PoseRecords` store. float64 poses (an
+    array, or a :class:`PoseRecords64` store) give float64 corners, the same
+    operations in float64. Use it to run a
     corner method (``sat4``, ...) on poses; the corner methods then answer
     for the rounded quads, not for the poses. A pose near the end of the
     float range can give infinite corners, which :func:`collide` refuses.
@@ -530,45 +577,54 @@ def corners_of_poses(poses, backend="auto", *, precision=None):
             [ 9., -5.]]], dtype=float32)
     """
     backend = _backend(backend)
-    if isinstance(poses, PoseRecords):
+    precision = _precision(precision)
+    if isinstance(poses, (PoseRecords, PoseRecords64)):
+        _store_form(poses, precision)
+        if isinstance(poses, PoseRecords64):
+            return _corners_of_poses64(poses.poses)
         out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
         _core.store_corners(poses, out, backend)
         return out
-    _refuse_store(poses, "corners_of_poses", "poses", "a PoseRecords store or an (N, 6) float array")
-    poses = _poses(poses, "poses", _precision(precision))
+    _refuse_store(poses, "corners_of_poses", "poses", "a PoseRecords or PoseRecords64 store or an (N, 6) float array")
+    poses = _poses(poses, "poses", precision)
     if _is64(poses):
-        # The same operations in float64, each rounded once (numpy, no FMA); the
-        # poses are checked as the library checks them (the message names the pose).
+        # The poses are checked as the library checks them (the message names the pose).
         _core.pose_bounds64(poses)
-        cx, cy, hx, hy, c, s = (poses[:, k] for k in range(6))
-        ux, uy = hx * c, hx * s
-        vx, vy = -(hy * s), hy * c
-        out = _np.empty((len(poses), 4, 2), dtype=_np.float64)
-        out[:, 0, 0], out[:, 0, 1] = (cx - ux) + vx, (cy - uy) + vy
-        out[:, 1, 0], out[:, 1, 1] = (cx + ux) + vx, (cy + uy) + vy
-        out[:, 2, 0], out[:, 2, 1] = (cx + ux) - vx, (cy + uy) - vy
-        out[:, 3, 0], out[:, 3, 1] = (cx - ux) - vx, (cy - uy) - vy
-        return out
+        return _corners_of_poses64(poses)
     out = _np.empty((len(poses), 4, 2), dtype=_np.float32)
     _core.pose_corners(poses, out, backend)
     return out
 
 
+def _corners_of_poses64(poses):
+    """The corners of valid float64 poses (N, 6), float64 (N, 4, 2): the
+    operations of :func:`corners_of_poses` in float64, each rounded once
+    (numpy, no fused multiply-add)."""
+    cx, cy, hx, hy, c, s = (poses[:, k] for k in range(6))
+    ux, uy = hx * c, hx * s
+    vx, vy = -(hy * s), hy * c
+    out = _np.empty((len(poses), 4, 2), dtype=_np.float64)
+    out[:, 0, 0], out[:, 0, 1] = (cx - ux) + vx, (cy - uy) + vy
+    out[:, 1, 0], out[:, 1, 1] = (cx + ux) + vx, (cy + uy) + vy
+    out[:, 2, 0], out[:, 2, 1] = (cx + ux) - vx, (cy + uy) - vy
+    out[:, 3, 0], out[:, 3, 1] = (cx - ux) - vx, (cy - uy) - vy
+    return out
+
+
 def _scene_form(boxes, what, precision=None):
-    """``(form, boxes)`` for a scene query: a store as it is, an array as
-    :func:`_form` gives it."""
-    if isinstance(boxes, RectRecords):
-        _refuse_float64_store(boxes, precision)
-        return "corners", boxes
-    if isinstance(boxes, PoseRecords):
-        _refuse_float64_store(boxes, precision)
-        return "poses", boxes
+    """``(form, boxes)`` for a scene query: a store as it is (refused when
+    ``precision`` names the other float type), an array as :func:`_form`
+    gives it."""
+    if isinstance(boxes, _STORES):
+        return _store_form(boxes, precision), boxes
     return _form(boxes, what, precision)
 
 
 def _holds_float64(boxes):
-    if isinstance(boxes, (RectRecords, PoseRecords)):
-        return False
+    """True when the library reads ``boxes`` as doubles unless told
+    otherwise: a double store, or float64 (or wider) data."""
+    if isinstance(boxes, _STORES):
+        return isinstance(boxes, _DOUBLE_STORES)
     return _dtype_of(_np.asarray(boxes).dtype, None) == _np.float64
 
 
@@ -578,6 +634,9 @@ def _scene(boxes, against, precision=None):
     ``precision`` None, both sides are float64 when either holds float64 data
     (widening float32 is exact), else float32."""
     precision = _precision(precision)
+    if isinstance(boxes, _STORES) and isinstance(against, _STORES) and _is64(boxes) != _is64(against):
+        raise ValueError(f"boxes is a {type(boxes).__name__}, against a {type(against).__name__}: a scene query "
+                         "over two stores takes them of one precision (a store is never converted)")
     if precision is None and (_holds_float64(boxes) or (against is not None and _holds_float64(against))):
         precision = "float64"
     form, boxes = _scene_form(boxes, "boxes", precision)

@@ -4,7 +4,8 @@ The pairs are a chunked ``dask.array`` of shape (M, 2); the rectangles are one
 array that every worker needs whole (any pair may name any rectangle), corners
 or poses as :func:`obbsat.collide` takes them. It is copied once into a
 :func:`obbsat.records` store (a :class:`obbsat.RectRecords` or
-:class:`obbsat.PoseRecords`, checked once) and, with a ``distributed`` client,
+:class:`obbsat.PoseRecords`; for float64 data a :class:`obbsat.RectRecords64`
+or :class:`obbsat.PoseRecords64`, every double kept; checked once) and, with a ``distributed`` client,
 sent to every worker once (``Client.scatter(...,
 broadcast=True)``); each chunk of pairs then becomes one task that decides its
 pairs against the worker's copy. The verdicts are a lazy boolean
@@ -49,10 +50,13 @@ def _client_or_none(client):
         return None
 
 
-def shared_records(rects, client=None):
+def shared_records(rects, client=None, *, precision=None):
     """The rectangles as every worker will read them: a checked
     :func:`obbsat.records` store (:class:`obbsat.RectRecords` for corners,
-    :class:`obbsat.PoseRecords` for poses), broadcast to all workers of
+    :class:`obbsat.PoseRecords` for poses; :class:`obbsat.RectRecords64` and
+    :class:`obbsat.PoseRecords64` for float64 data, which stays float64
+    unless ``precision="float32"`` asks for a float32 store, as
+    :func:`obbsat.records` takes it), broadcast to all workers of
     ``client`` (or of the default client) when there is one, in which case a
     ``distributed.Future`` is returned. Pass the result as ``rects`` to
     :func:`collide` to reuse one broadcast for many pair lists.
@@ -64,13 +68,7 @@ def shared_records(rects, client=None):
     >>> type(poses).__name__, len(poses)
     ('PoseRecords', 2)
     """
-    if _obbsat._holds_float64(rects):
-        # float64 data stays float64 (the stores hold float32): the checked
-        # array itself is what the workers read, decided in double.
-        _, store = _obbsat._form(rects, "rects")
-        _obbsat.bounds(store)  # the check a store makes when built
-    else:
-        store = _obbsat.records(rects)
+    store = _obbsat.records(rects, precision=precision)
     client = _client_or_none(client)
     if client is None:
         return store
@@ -104,7 +102,7 @@ def _as_pair_array(pairs):
     return pairs
 
 
-def collide(rects, pairs, method=None, backend="auto", threads=1, client=None):
+def collide(rects, pairs, method=None, backend="auto", threads=1, client=None, *, precision=None):
     """Whether each pair collides, as a lazy boolean ``dask.array`` of shape
     (M,) chunked like the rows of ``pairs``.
 
@@ -118,12 +116,17 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, client=None):
         Chunked along rows; each chunk is one task.
     method, backend, threads
         As in :func:`obbsat.collide`, for each chunk (``threads`` per task);
-        ``method=None`` is ``"sat4"`` on corners, ``"local"`` on poses.
+        ``method=None`` is ``"sat4"`` on float32 corners, ``"exact"`` on
+        float64 corners, ``"local"`` on poses.
         ``threads`` out of 0 .. 2**32 - 1 is refused here (``ValueError``).
     client : distributed.Client, optional
         Where to broadcast the rectangles; the default client if omitted.
         Without any client (Dask's local schedulers) the store is shared in
         memory.
+
+    precision : None, "float32" or "float64"
+        As in :func:`obbsat.records`: float64 data is decided in float64
+        unless ``"float32"`` asks for it rounded.
 
     Errors in the rectangles are raised here; an index out of range is
     raised when computed (``IndexError`` naming the pair's row in ``pairs``).
@@ -132,13 +135,13 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, client=None):
 
     threads = _obbsat._threads(threads)
     pairs = _as_pair_array(pairs)
-    store = rects if _is_shared(rects) else shared_records(rects, client)
+    store = rects if _is_shared(rects) else shared_records(rects, client, precision=precision)
     return da.map_blocks(_decide_chunk, pairs, store, method, backend, threads,
                          drop_axis=1, dtype=bool, meta=_np.empty((0,), dtype=bool))
 
 
 def _is_shared(rects):
-    if isinstance(rects, (_obbsat.RectRecords, _obbsat.PoseRecords)):
+    if isinstance(rects, _obbsat._STORES):
         return False
     try:
         from distributed import Future
@@ -147,12 +150,12 @@ def _is_shared(rects):
     return isinstance(rects, Future)
 
 
-def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1, client=None):
+def colliding_pairs(rects, pairs, method=None, backend="auto", threads=1, client=None, *, precision=None):
     """The rows of ``pairs`` that collide, in order, as a lazy ``dask.array``
     of shape (K, 2) (K unknown until computed). Arguments as :func:`collide`.
     """
     pairs = _as_pair_array(pairs)
-    hits = collide(rects, pairs, method=method, backend=backend, threads=threads, client=client)
+    hits = collide(rects, pairs, method=method, backend=backend, threads=threads, client=client, precision=precision)
     return pairs[hits]
 
 
@@ -274,9 +277,9 @@ def _lazy_boxes(boxes, what):
     or (N, 6) for poses, float32 (float64 for float64 data), chunked along rows only."""
     import dask.array as da
 
-    if isinstance(boxes, _obbsat.RectRecords):
+    if isinstance(boxes, (_obbsat.RectRecords, _obbsat.RectRecords64)):
         boxes = boxes.corners
-    elif isinstance(boxes, _obbsat.PoseRecords):
+    elif isinstance(boxes, (_obbsat.PoseRecords, _obbsat.PoseRecords64)):
         boxes = boxes.poses
     if isinstance(boxes, da.Array):
         if boxes.dtype.kind not in "fiu":
@@ -377,8 +380,10 @@ def find_pairs(boxes, tile, against=None, *, method="exact", backend="auto", thr
             raise ValueError(f"boxes hold {form}, against holds {form_against}: a scene query compares one form")
         sides.append((against, "against"))
     width = boxes.shape[1]
-    # An unknown method or backend, a method not on the form, threads < 0: refused now.
-    _obbsat.find_pairs(_np.empty((0, width), dtype=_np.float32), method=method, backend=backend, threads=threads)
+    # An unknown method or backend, a method not on the form (in the precision the tiles decide), threads < 0:
+    # refused now.
+    dtype = _np.result_type(*(side.dtype for side, _ in sides))
+    _obbsat.find_pairs(_np.empty((0, width), dtype=dtype), method=method, backend=backend, threads=threads)
     threads = _obbsat._threads(threads)
     tile = float(tile)
     if not (_math.isfinite(tile) and tile > 0):

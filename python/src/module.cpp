@@ -8,11 +8,15 @@
 // Two stores: corners (rows of eight floats, read in place or kept in a
 // rect_records) and poses (rows of six floats cx, cy, hx, hy, c, s, read in
 // place by pair-list calls, copied into a pose_soa for streams, or kept in a
-// pose_records). A method is checked against the store before anything is
+// pose_records). float64 rows go to the double stores of each kind
+// (rect_records64, pose_records64), copied once per pair-list call or kept
+// in a RectRecords64 or PoseRecords64; a store kept from Python is decided
+// on the same library path as an array of its rows, so the verdicts are
+// the same bytes. A method is checked against the store before anything is
 // read or copied.
 //
 // Scene queries (find_pairs, PairFinder) take one or two sets of one kind:
-// a RectRecords or PoseRecords passed in, or the rows of an array, which the
+// a store passed in (store_traits names the four), or the rows of an array, which the
 // library's scene query reads in place (obbsat::box_view) and checks in the
 // pass that computes the bounds. Each side may carry pair filters
 // (obbsat/pair_filters.hpp): categories and masks as uint64, groups as
@@ -270,8 +274,161 @@ void require_runs_on_doubles(const obbsat::collide_options& options, obbsat::sto
     }
     throw obbsat::invalid_input(std::string("method ") + obbsat::method_name(options.test) + " does not run on float64 " +
                                 (store == obbsat::store_kind::poses ? "poses" : "corners") + " (they take " + offered +
-                                "); pass precision=\"float32\" to decide them rounded to float32");
+                                "); to decide them rounded to float32, pass precision=\"float32\" (for a store, "
+                                "build it with obbsat.records(rows, precision=\"float32\"))");
 }
+
+/// What each kind of store holds and reads from an array, and how Python
+/// names it. A store's records lie record_bytes apart, each starting with
+/// its `fields` values (a pose record ends in padding).
+template <class Store>
+struct store_traits;
+
+template <>
+struct store_traits<obbsat::rect_records> {
+    using row = obbsat::rect;
+    using value = float;
+    static constexpr std::size_t fields = 8;
+    static constexpr std::size_t record_bytes = sizeof(obbsat::rect);
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
+    static constexpr const char* class_name = "RectRecords";
+    static constexpr const char* rows_name = "corners";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return corners_in_place(a, what);
+    }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
+};
+
+template <>
+struct store_traits<obbsat::pose_records> {
+    using row = obbsat::rect_pose;
+    using value = float;
+    static constexpr std::size_t fields = obbsat::pose_field_count;
+    static constexpr std::size_t record_bytes = obbsat::pose_records::record_floats * sizeof(float);
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
+    static constexpr const char* class_name = "PoseRecords";
+    static constexpr const char* rows_name = "poses";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return poses_in_place(a, what);
+    }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
+};
+
+template <>
+struct store_traits<obbsat::rect_records64> {
+    using row = obbsat::rect64;
+    using value = double;
+    static constexpr std::size_t fields = 8;
+    static constexpr std::size_t record_bytes = sizeof(obbsat::rect64);
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
+    static constexpr const char* class_name = "RectRecords64";
+    static constexpr const char* rows_name = "corners";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return corners64_in_place(a, what);
+    }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
+};
+
+template <>
+struct store_traits<obbsat::pose_records64> {
+    using row = obbsat::rect_pose64;
+    using value = double;
+    static constexpr std::size_t fields = obbsat::pose_field_count;
+    static constexpr std::size_t record_bytes = obbsat::pose_records64::record_doubles * sizeof(double);
+    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
+    static constexpr const char* class_name = "PoseRecords64";
+    static constexpr const char* rows_name = "poses";
+    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
+        return poses64_in_place(a, what);
+    }
+    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
+};
+
+/// A store holding a checked copy of the rows of `rows` (read in place; a
+/// bad row is a ValueError naming the row and the field).
+template <class Store>
+Store store_of(const py::array& rows) {
+    using traits = store_traits<Store>;
+    const auto [list, count] = traits::rows_in_place(rows, traits::rows_name);
+    return without_gil([&, list = list, count = count] { return Store(list, count); });
+}
+
+/// The records of `store` as bytes, record_bytes apart.
+template <class Store>
+const unsigned char* record_bytes_of(const Store& store) {
+    return reinterpret_cast<const unsigned char*>(store.data());
+}
+
+/// The rows of `store` as a read-only (N, fields) array over its own
+/// records (rows record_bytes apart), kept alive by `owner`.
+template <class Store>
+py::array rows_view(const Store& store, py::handle owner) {
+    using traits = store_traits<Store>;
+    using value = typename traits::value;
+    py::array_t<value> view({static_cast<py::ssize_t>(store.size()), static_cast<py::ssize_t>(traits::fields)},
+                            {static_cast<py::ssize_t>(traits::record_bytes), static_cast<py::ssize_t>(sizeof(value))},
+                            reinterpret_cast<const value*>(record_bytes_of(store)), owner);
+    view.attr("setflags")(py::arg("write") = false);
+    return std::move(view);
+}
+
+/// The rows of `store` as a new C-contiguous (N, fields) array: its pickled state.
+template <class Store>
+py::array_t<typename store_traits<Store>::value> rows_copy(const Store& store) {
+    using traits = store_traits<Store>;
+    using value = typename traits::value;
+    py::array_t<value> copy({static_cast<py::ssize_t>(store.size()), static_cast<py::ssize_t>(traits::fields)});
+    auto* out = reinterpret_cast<unsigned char*>(copy.mutable_data());
+    const unsigned char* records = record_bytes_of(store);
+    constexpr std::size_t row_bytes = traits::fields * sizeof(value);
+    for (std::size_t i = 0; i < store.size(); ++i) {
+        std::memcpy(out + i * row_bytes, records + i * traits::record_bytes, row_bytes);
+    }
+    return copy;
+}
+
+/// Verdicts of pairs over a prepared store: its rows were checked when it
+/// was built, so the call reads only the pairs before deciding them, on the
+/// same library path as an array of its rows.
+template <class Store>
+std::string collide_store(const Store& store, const py::array& pairs, py::array& out, const std::string& method,
+                          const std::string& backend, long long threads) {
+    const obbsat::collide_options options = options_of(method, backend, threads);
+    const auto [pair_list, count] = pairs_in_place(pairs);
+    std::uint8_t* verdicts = verdicts_in_place(out, count);
+    require_apart(out, pairs, "pairs");
+    const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
+        store_traits<Store>::require_method(options);
+        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
+    });
+    return obbsat::backend_name(ran);
+}
+
+/// Registers the Python class of the store kind Store: built from an array
+/// of its rows (checked once), its length, a read-only view of its rows, a
+/// repr, and pickling as its rows.
+template <class Store>
+void def_store(py::module_& m, const char* doc, const char* init_doc, const char* view_doc) {
+    using traits = store_traits<Store>;
+    py::class_<Store>(m, traits::class_name, doc)
+        .def(py::init(&store_of<Store>), py::arg(traits::rows_name), init_doc)
+        .def("__len__", &Store::size)
+        .def_property_readonly(
+            traits::rows_name, [](py::object self) { return rows_view(self.cast<const Store&>(), self); }, view_doc)
+        .def("__repr__",
+             [](const Store& store) {
+                 return std::string(traits::class_name) + "(" + std::to_string(store.size()) + " " +
+                        (traits::kind == obbsat::store_kind::poses ? "poses" : "rectangles") + ")";
+             })
+        .def(py::pickle([](const Store& store) { return py::make_tuple(rows_copy(store)); },
+                        [](const py::tuple& state) {
+                            if (state.size() != 1) {
+                                throw py::value_error(std::string(traits::class_name) + ": bad pickled state");
+                            }
+                            return store_of<Store>(state[0].cast<py::array>());
+                        }));
+}
+
 
 /// A double store holding a checked copy of `count` rows; the error is prefixed "what: " when `what` is given.
 template <class Store, class Row>
@@ -382,35 +539,6 @@ std::string collide_records(const py::array& rects, const py::array& pairs, py::
     return obbsat::backend_name(ran);
 }
 
-/// collide_records over a prepared store: its coordinates were checked when
-/// it was built, so the call reads only the pairs before deciding them.
-std::string collide_store(const obbsat::rect_records& store, const py::array& pairs, py::array& out,
-                          const std::string& method, const std::string& backend, long long threads) {
-    const obbsat::collide_options options = options_of(method, backend, threads);
-    const auto [pair_list, count] = pairs_in_place(pairs);
-    std::uint8_t* verdicts = verdicts_in_place(out, count);
-    require_apart(out, pairs, "pairs");
-    const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
-        require_runs_on(options, obbsat::store_kind::corners);
-        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
-    });
-    return obbsat::backend_name(ran);
-}
-
-/// A rect_records store holding a checked copy of `corners` (float32 (N, 8), read in place).
-obbsat::rect_records records_of(const py::array& corners) {
-    const auto [rects, count] = corners_in_place(corners, "rects");
-    return without_gil([&, rects = rects, count = count] { return obbsat::rect_records(rects, count); });
-}
-
-/// The records of `store` as a read-only float32 (N, 8) array over its memory, kept alive by `owner`.
-py::array corners_view(const obbsat::rect_records& store, py::handle owner) {
-    py::array_t<float> view({static_cast<py::ssize_t>(store.size()), py::ssize_t{8}},
-                            reinterpret_cast<const float*>(store.data()), owner);
-    view.attr("setflags")(py::arg("write") = false);
-    return std::move(view);
-}
-
 /// A structure-of-arrays copy of a batch; the error names the batch.
 obbsat::rect_soa soa_copy(const obbsat::rect* rects, std::size_t count, const char* what) {
     try {
@@ -442,32 +570,6 @@ std::string collide_stream(const py::array& a, const py::array& b, py::array& ou
     return obbsat::backend_name(ran);
 }
 
-/// A pose_records store holding a checked copy of `poses` (float32 (N, 6), read in place).
-obbsat::pose_records pose_records_of(const py::array& poses) {
-    const auto [list, count] = poses_in_place(poses, "poses");
-    return without_gil([&, list = list, count = count] { return obbsat::pose_records(list, count); });
-}
-
-/// The poses of `store` as a read-only float32 (N, 6) array over its records
-/// (rows 32 bytes apart: the two padding floats are skipped), kept alive by `owner`.
-py::array poses_view(const obbsat::pose_records& store, py::handle owner) {
-    constexpr py::ssize_t row_bytes = obbsat::pose_records::record_floats * sizeof(float);
-    py::array_t<float> view({static_cast<py::ssize_t>(store.size()), py::ssize_t{6}},
-                            {row_bytes, static_cast<py::ssize_t>(sizeof(float))}, store.data(), owner);
-    view.attr("setflags")(py::arg("write") = false);
-    return std::move(view);
-}
-
-/// The poses of `store` as a new C-contiguous float32 (N, 6) array.
-py::array_t<float> poses_copy(const obbsat::pose_records& store) {
-    py::array_t<float> copy({static_cast<py::ssize_t>(store.size()), py::ssize_t{6}});
-    obbsat::rect_pose* rows = reinterpret_cast<obbsat::rect_pose*>(copy.mutable_data());
-    for (std::size_t i = 0; i < store.size(); ++i) {
-        rows[i] = store[i];
-    }
-    return copy;
-}
-
 std::string collide_poses(const py::array& poses, const py::array& pairs, py::array& out,
                           const std::string& method, const std::string& backend, long long threads) {
     const obbsat::collide_options options = options_of(method, backend, threads);
@@ -480,20 +582,6 @@ std::string collide_poses(const py::array& poses, const py::array& pairs, py::ar
                                              count = count] {
         require_runs_on(options, obbsat::store_kind::poses);
         return obbsat::collide_pairs(list, pose_count, pair_list, count, verdicts, options);
-    });
-    return obbsat::backend_name(ran);
-}
-
-/// collide_poses over a prepared store: no copy, no check of the poses.
-std::string collide_pose_store(const obbsat::pose_records& store, const py::array& pairs, py::array& out,
-                               const std::string& method, const std::string& backend, long long threads) {
-    const obbsat::collide_options options = options_of(method, backend, threads);
-    const auto [pair_list, count] = pairs_in_place(pairs);
-    std::uint8_t* verdicts = verdicts_in_place(out, count);
-    require_apart(out, pairs, "pairs");
-    const obbsat::backend ran = without_gil([&, pair_list = pair_list, count = count] {
-        require_runs_on(options, obbsat::store_kind::poses);
-        return obbsat::collide_pairs(store, pair_list, count, verdicts, options);
     });
     return obbsat::backend_name(ran);
 }
@@ -560,56 +648,6 @@ std::string pose_corners(const py::array& poses, py::array& out, const std::stri
 }
 
 // --- Scene queries ---------------------------------------------------------
-
-/// What each kind of store reads from an array, and how it names its kind.
-template <class Store>
-struct store_traits;
-
-template <>
-struct store_traits<obbsat::rect_records> {
-    using row = obbsat::rect;
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
-    static constexpr const char* class_name = "RectRecords";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return corners_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
-};
-
-template <>
-struct store_traits<obbsat::pose_records> {
-    using row = obbsat::rect_pose;
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
-    static constexpr const char* class_name = "PoseRecords";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return poses_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
-};
-
-// float64 arrays: the double stores' rows, read in place (no Python class
-// wraps a double store, so a side is always an array).
-template <>
-struct store_traits<obbsat::rect_records64> {
-    using row = obbsat::rect64;
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
-    static constexpr const char* class_name = "RectRecords";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return corners64_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
-};
-
-template <>
-struct store_traits<obbsat::pose_records64> {
-    using row = obbsat::rect_pose64;
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
-    static constexpr const char* class_name = "PoseRecords";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return poses64_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
-};
 
 /// One side of a scene query: a store passed from Python, or the rows of an
 /// array (read in place and checked by the query). The Python objects
@@ -1116,31 +1154,31 @@ PYBIND11_MODULE(_core, m) {
           py::arg("method"), py::arg("backend"), py::arg("threads"),
           "Verdicts of pairs over rectangles read in place (float32 (N, 8), uint32 (M, 2), out uint8/bool (M,)); "
           "returns the backend that ran.");
-    py::class_<obbsat::rect_records>(m, "RectRecords",
-                                     "Rectangles as packed 32-byte records, copied and checked once.")
-        .def(py::init(&records_of), py::arg("corners"),
-             "A checked copy of float32 (N, 8) corners (ValueError naming a non-finite coordinate).")
-        .def("__len__", &obbsat::rect_records::size)
-        .def_property_readonly(
-            "corners", [](py::object self) { return corners_view(self.cast<const obbsat::rect_records&>(), self); },
-            "The records as a read-only float32 (N, 8) array over the store's own memory.")
-        .def(py::pickle(
-            [](const obbsat::rect_records& store) {
-                py::array_t<float> copy({static_cast<py::ssize_t>(store.size()), py::ssize_t{8}});
-                if (store.size() != 0) {
-                    std::memcpy(copy.mutable_data(), store.data(), store.size() * sizeof(obbsat::rect));
-                }
-                return py::make_tuple(copy);
-            },
-            [](const py::tuple& state) {
-                if (state.size() != 1) {
-                    throw py::value_error("RectRecords: bad pickled state");
-                }
-                return records_of(state[0].cast<py::array>());
-            }));
-    m.def("collide_store", &collide_store, py::arg("store"), py::arg("pairs"), py::arg("out"),
+    def_store<obbsat::rect_records>(
+        m, "Rectangles as packed 32-byte records of float32 corners, copied and checked once.",
+        "A checked copy of float32 (N, 8) corners (ValueError naming a non-finite coordinate).",
+        "The records as a read-only float32 (N, 8) array over the store's own memory.");
+    def_store<obbsat::pose_records>(
+        m, "Poses as the library's 32-byte records of float32, copied and checked once.",
+        "A checked copy of float32 (N, 6) poses (ValueError naming the first bad pose and field).",
+        "The poses as a read-only float32 (N, 6) view of the store's own records (rows 32 bytes apart).");
+    def_store<obbsat::rect_records64>(
+        m, "Rectangles as 64-byte records of float64 corners (rect_records64), every double kept exactly, "
+           "copied and checked once.",
+        "A checked copy of float64 (N, 8) corners (ValueError naming a non-finite coordinate).",
+        "The records as a read-only float64 (N, 8) array over the store's own memory.");
+    def_store<obbsat::pose_records64>(
+        m, "Poses as 64-byte records of float64 (pose_records64), every double kept exactly, copied and "
+           "checked once.",
+        "A checked copy of float64 (N, 6) poses (ValueError naming the first bad pose and field).",
+        "The poses as a read-only float64 (N, 6) view of the store's own records (rows 64 bytes apart).");
+    m.def("collide_store", &collide_store<obbsat::rect_records>, py::arg("store"), py::arg("pairs"), py::arg("out"),
           py::arg("method"), py::arg("backend"), py::arg("threads"),
           "Verdicts of pairs over a RectRecords store; returns the backend that ran.");
+    m.def("collide_store64", &collide_store<obbsat::rect_records64>, py::arg("store"), py::arg("pairs"),
+          py::arg("out"), py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over a RectRecords64 store (as collide_records64 over its rows); "
+          "returns the backend that ran.");
     m.def("collide_stream", &collide_stream, py::arg("a"), py::arg("b"), py::arg("out"), py::arg("method"),
           py::arg("backend"), py::arg("threads"),
           "Verdicts of a[i] against b[i] (float32 (N, 8) each, copied to the structure-of-arrays store); "
@@ -1161,28 +1199,17 @@ PYBIND11_MODULE(_core, m) {
           py::arg("method"), py::arg("backend"), py::arg("threads"),
           "Verdicts of pairs over float64 poses (N, 6) (copied once into a pose_records64 store); "
           "returns the backend that ran.");
-    py::class_<obbsat::pose_records>(m, "PoseRecords",
-                                     "Poses as the library's 32-byte records, copied and checked once.")
-        .def(py::init(&pose_records_of), py::arg("poses"),
-             "A checked copy of float32 (N, 6) poses (ValueError naming the first bad pose and field).")
-        .def("__len__", &obbsat::pose_records::size)
-        .def_property_readonly(
-            "poses", [](py::object self) { return poses_view(self.cast<const obbsat::pose_records&>(), self); },
-            "The poses as a read-only float32 (N, 6) view of the store's own records (rows 32 bytes apart).")
-        .def(py::pickle([](const obbsat::pose_records& store) { return py::make_tuple(poses_copy(store)); },
-                        [](const py::tuple& state) {
-                            if (state.size() != 1) {
-                                throw py::value_error("PoseRecords: bad pickled state");
-                            }
-                            return pose_records_of(state[0].cast<py::array>());
-                        }));
     m.def("collide_poses", &collide_poses, py::arg("poses"), py::arg("pairs"), py::arg("out"), py::arg("method"),
           py::arg("backend"), py::arg("threads"),
           "Verdicts of pairs over poses (float32 (N, 6), copied once into 32-byte records); "
           "returns the backend that ran.");
-    m.def("collide_pose_store", &collide_pose_store, py::arg("store"), py::arg("pairs"), py::arg("out"),
-          py::arg("method"), py::arg("backend"), py::arg("threads"),
+    m.def("collide_pose_store", &collide_store<obbsat::pose_records>, py::arg("store"), py::arg("pairs"),
+          py::arg("out"), py::arg("method"), py::arg("backend"), py::arg("threads"),
           "Verdicts of pairs over a PoseRecords store; returns the backend that ran.");
+    m.def("collide_pose_store64", &collide_store<obbsat::pose_records64>, py::arg("store"), py::arg("pairs"),
+          py::arg("out"), py::arg("method"), py::arg("backend"), py::arg("threads"),
+          "Verdicts of pairs over a PoseRecords64 store (as collide_poses64 over its rows); "
+          "returns the backend that ran.");
     m.def("collide_pose_stream", &collide_pose_stream, py::arg("a"), py::arg("b"), py::arg("out"),
           py::arg("method"), py::arg("backend"), py::arg("threads"),
           "Verdicts of a[i] against b[i] (float32 (N, 6) each, copied to pose_soa stores); "
@@ -1210,14 +1237,15 @@ PYBIND11_MODULE(_core, m) {
           py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
           py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
           py::arg("against_groups") = py::none(),
-          "Every colliding pair of float64 corner boxes ((N, 8) or (N, 4, 2), read in place, every double taken "
-          "exactly), or across boxes and against: uint32 (K, 2) sorted by (i, j).");
+          "Every colliding pair of float64 corner boxes ((N, 8) or (N, 4, 2), read in place, or a RectRecords64; "
+          "every double taken exactly), or across boxes and against: uint32 (K, 2) sorted by (i, j).");
     m.def("find_pairs_poses64", &find_pairs_of<obbsat::pose_records64>, py::arg("boxes"), py::arg("against"),
           py::arg("method"), py::arg("backend"), py::arg("threads"),
           py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),
           py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
           py::arg("against_groups") = py::none(),
-          "Every colliding pair of float64 poses ((N, 6), read in place, every double taken exactly), or across "
+          "Every colliding pair of float64 poses ((N, 6), read in place, or a PoseRecords64; every double taken "
+          "exactly), or across "
           "boxes and against: uint32 (K, 2) sorted by (i, j).");
     py::class_<obbsat::find_pairs_stats>(m, "FindPairsStats", "What one scene query did (obbsat::find_pairs_stats).")
         .def(py::init<>())
@@ -1304,9 +1332,11 @@ PYBIND11_MODULE(_core, m) {
           "The bounds lo_x, lo_y, hi_x, hi_y of corner boxes (float32 (N, 8) or (N, 4, 2), or a RectRecords) "
           "as obbsat/ref/bounds.hpp computes them: float32 (N, 4).");
     m.def("corner_bounds64", &bounds_of<obbsat::rect_records64>, py::arg("boxes"),
-          "The float bounds of float64 corner boxes rounded outward (obbsat/ref/bounds64.hpp): float32 (N, 4).");
+          "The float bounds of float64 corner boxes (or a RectRecords64) rounded outward (obbsat/ref/bounds64.hpp): "
+          "float32 (N, 4).");
     m.def("pose_bounds64", &bounds_of<obbsat::pose_records64>, py::arg("boxes"),
-          "The float bounds of float64 poses rounded outward (obbsat/ref/bounds64.hpp): float32 (N, 4).");
+          "The float bounds of float64 poses (or a PoseRecords64) rounded outward (obbsat/ref/bounds64.hpp): "
+          "float32 (N, 4).");
     m.def("pose_bounds", &bounds_of<obbsat::pose_records>, py::arg("boxes"),
           "The bounds lo_x, lo_y, hi_x, hi_y of poses (float32 (N, 6), or a PoseRecords) as "
           "obbsat/ref/bounds.hpp computes them: float32 (N, 4).");

@@ -11,6 +11,10 @@ RECTS = np.array([[0, 1, 2, 1, 2, 0, 0, 0], [1, 2, 3, 2, 3, 0.5, 1, 0.5], [9, 10
                  dtype=np.float32)
 POSES = np.array([[1, 0.5, 1, 0.5, 1, 0], [2, 1.25, 1, 0.75, 1, 0], [9.5, 9.5, 0.5, 0.5, 1, 0]], dtype=np.float32)
 PAIRS = np.array([[0, 1], [0, 2], [1, 2]], dtype=np.uint32)
+# A store of each kind: float32 and double, corners and poses.
+STORES = {name: obbsat.records(rows, precision=precision)
+          for name, rows, precision in [("RectRecords", RECTS, "float32"), ("PoseRecords", POSES, "float32"),
+                                        ("RectRecords64", RECTS, "float64"), ("PoseRecords64", POSES, "float64")]}
 
 
 def dask_modules():
@@ -68,26 +72,27 @@ def test_an_unknown_method_is_still_refused():
 # --- A store where it does not go --------------------------------------------
 
 
-def test_corners_of_poses_names_a_corner_store():
-    with pytest.raises(TypeError, match=r"^corners_of_poses: poses must be a PoseRecords store or an \(N, 6\) "
-                                        r"float array, got RectRecords$"):
-        obbsat.corners_of_poses(obbsat.records(RECTS))
+@pytest.mark.parametrize("kind", ["RectRecords", "RectRecords64"])
+def test_corners_of_poses_names_a_corner_store(kind):
+    with pytest.raises(TypeError, match=r"^corners_of_poses: poses must be a PoseRecords or PoseRecords64 store or "
+                                        rf"an \(N, 6\) float array, got {kind}$"):
+        obbsat.corners_of_poses(STORES[kind])
 
 
-@pytest.mark.parametrize("boxes", [RECTS, POSES], ids=["corners", "poses"])
+@pytest.mark.parametrize("kind", list(STORES))
 @pytest.mark.parametrize("side", ["a", "b"])
-def test_collide_stream_names_a_store(boxes, side):
+def test_collide_stream_names_a_store(kind, side):
+    boxes = STORES[kind].corners if "Rect" in kind else STORES[kind].poses
     batches = {"a": boxes, "b": boxes}
-    batches[side] = obbsat.records(boxes)
-    kind = type(batches[side]).__name__
+    batches[side] = STORES[kind]
     with pytest.raises(TypeError, match=rf"^collide_stream: {side} must be an array of corners, \(N, 8\) or "
                                         rf"\(N, 4, 2\), or of poses, \(N, 6\), not a store, got {kind}$"):
         obbsat.collide_stream(batches["a"], batches["b"])
 
 
-@pytest.mark.parametrize("store", [obbsat.records(RECTS), obbsat.records(POSES)], ids=["RectRecords", "PoseRecords"])
-def test_pairs_that_are_a_store_are_named(store):
-    kind = type(store).__name__
+@pytest.mark.parametrize("kind", list(STORES))
+def test_pairs_that_are_a_store_are_named(kind):
+    store = STORES[kind]
     with pytest.raises(TypeError, match=rf"^collide: pairs must be an \(M, 2\) integer array, got {kind}$"):
         obbsat.collide(RECTS, store)
     with pytest.raises(TypeError, match=rf"^colliding_pairs: pairs must be an \(M, 2\) integer array, got {kind}$"):
@@ -96,13 +101,15 @@ def test_pairs_that_are_a_store_are_named(store):
 
 def test_stores_of_both_kinds_still_go_where_they_belong():
     assert obbsat.corners_of_poses(obbsat.records(POSES)).shape == (3, 4, 2)
-    for boxes in (RECTS, POSES):
+    assert obbsat.corners_of_poses(STORES["PoseRecords64"]).shape == (3, 4, 2)
+    for boxes in (RECTS, POSES, RECTS.astype(np.float64), POSES.astype(np.float64)):
         store = obbsat.records(boxes)
         assert np.array_equal(obbsat.collide(store, PAIRS), obbsat.collide(boxes, PAIRS))
         assert np.array_equal(obbsat.find_pairs(store), obbsat.find_pairs(boxes))
         assert np.array_equal(obbsat.bounds(store), obbsat.bounds(boxes))
-    with pytest.raises(ValueError, match="boxes hold corners, against holds poses"):
-        obbsat.find_pairs(obbsat.records(RECTS), obbsat.records(POSES))
+    for precision in ("float32", "float64"):
+        with pytest.raises(ValueError, match="boxes hold corners, against holds poses"):
+            obbsat.find_pairs(obbsat.records(RECTS, precision=precision), obbsat.records(POSES, precision=precision))
 
 
 # --- threads: 0 .. 2**32 - 1 ---------------------------------------------------

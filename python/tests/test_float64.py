@@ -10,35 +10,7 @@ import numpy as np
 import pytest
 
 import obbsat
-
-
-def utm_poses(n, seed, span=150.0):
-    """(n, 6) float64 poses near a UTM-like origin (3e5 .. 6e6 m), footprints
-    5 .. 50 m, half of them in pairs that touch exactly (axis-aligned, or
-    turned by the rotation vector (3, 4)) or lie a millimetre apart or over;
-    every coordinate that must touch exactly is a multiple of 1/8."""
-    rng = np.random.default_rng(seed)
-    x0 = 300000.0 + np.floor(rng.uniform(0, 2.7e6)) + 0.125
-    y0 = 3000000.0 + np.floor(rng.uniform(0, 2.9e6)) + 0.375
-    eighths = lambda lo, hi: np.round(rng.uniform(lo, hi) * 8) / 8
-    rows = []
-    while len(rows) < n:
-        cx, cy = x0 + eighths(0, span), y0 + eighths(0, span)
-        hx, hy = eighths(2.5, 25), eighths(2.5, 25)
-        shape = int(rng.integers(0, 4))
-        if shape == 0:
-            angle = rng.uniform(0, 2 * np.pi)
-            rows.append([cx, cy, hx, hy, np.cos(angle), np.sin(angle)])
-            continue
-        turned = shape == 1
-        c, s, scale = (0.6, 0.8, 5.0) if turned else (1.0, 0.0, 1.0)
-        ax, bx, ay = hx / scale, eighths(2.5, 25) / scale, hy / scale
-        gap = (0.001 if rng.uniform() < 0.5 else -0.001) if shape == 3 else 0.0
-        along = (ax + bx) * scale + gap
-        rot = (3.0, 4.0) if turned else (1.0, 0.0)
-        rows.append([cx, cy, ax, ay, *rot])
-        rows.append([cx + along * c, cy + along * s, bx, ay, *rot])
-    return np.array(rows[:n], dtype=np.float64)
+from conftest import utm_poses
 
 
 def exact_pose_corners(row):

@@ -7,7 +7,9 @@ from . import geo as geo
 from . import testing as testing
 from ._core import FindPairsStats as FindPairsStats
 from ._core import PoseRecords as PoseRecords
+from ._core import PoseRecords64 as PoseRecords64
 from ._core import RectRecords as RectRecords
+from ._core import RectRecords64 as RectRecords64
 from ._core import UnsupportedBackendError as UnsupportedBackendError
 
 __version__: str
@@ -15,19 +17,20 @@ __version__: str
 _Out = TypeVar("_Out", npt.NDArray[np.bool_], npt.NDArray[np.uint8])
 # None: float64 data in float64, everything else in float32.
 _Precision = Literal["float32", "float64"] | None
+# Every store records() builds: float32 and double, corners and poses.
+_Store = RectRecords | PoseRecords | RectRecords64 | PoseRecords64
+_S = TypeVar("_S", RectRecords, PoseRecords, RectRecords64, PoseRecords64)
 
 def aligned(array: npt.ArrayLike, alignment: int = ...) -> np.ndarray: ...
 def methods(poses: bool = ...) -> list[str]: ...
 def backends(compiled: bool = ...) -> list[str]: ...
 def resolved_backend(backend: str | None = ...) -> str: ...
 @overload
-def records(rects: RectRecords) -> RectRecords: ...
+def records(rects: _S, *, precision: _Precision = ...) -> _S: ...
 @overload
-def records(rects: PoseRecords) -> PoseRecords: ...
-@overload
-def records(rects: npt.ArrayLike) -> RectRecords | PoseRecords: ...
+def records(rects: npt.ArrayLike, *, precision: _Precision = ...) -> _Store: ...
 def collide(
-    rects: npt.ArrayLike | RectRecords | PoseRecords,
+    rects: npt.ArrayLike | _Store,
     pairs: npt.ArrayLike,
     method: str | None = ...,
     backend: str | None = ...,
@@ -37,7 +40,7 @@ def collide(
     precision: _Precision = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
 def colliding_pairs(
-    rects: npt.ArrayLike | RectRecords | PoseRecords,
+    rects: npt.ArrayLike | _Store,
     pairs: npt.ArrayLike,
     method: str | None = ...,
     backend: str | None = ...,
@@ -56,11 +59,11 @@ def collide_stream(
     precision: _Precision = ...,
 ) -> npt.NDArray[np.bool_] | _Out: ...
 def corners_of_poses(
-    poses: npt.ArrayLike | PoseRecords, backend: str | None = ..., *, precision: _Precision = ...
+    poses: npt.ArrayLike | PoseRecords | PoseRecords64, backend: str | None = ..., *, precision: _Precision = ...
 ) -> npt.NDArray[np.float32] | npt.NDArray[np.float64]: ...
 def find_pairs(
-    boxes: npt.ArrayLike | RectRecords | PoseRecords,
-    against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+    boxes: npt.ArrayLike | _Store,
+    against: npt.ArrayLike | _Store | None = ...,
     *,
     method: str | None = ...,
     backend: str | None = ...,
@@ -86,8 +89,8 @@ class PairFinder:
     ) -> None: ...
     def find(
         self,
-        boxes: npt.ArrayLike | RectRecords | PoseRecords,
-        against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+        boxes: npt.ArrayLike | _Store,
+        against: npt.ArrayLike | _Store | None = ...,
         *,
         ids: npt.ArrayLike | None = ...,
         against_ids: npt.ArrayLike | None = ...,
@@ -107,7 +110,7 @@ class PairFinder:
     def ended(self) -> npt.NDArray[np.uint32] | npt.NDArray[np.uint64]: ...
 
 def bounds(
-    boxes: npt.ArrayLike | RectRecords | PoseRecords, *, precision: _Precision = ...
+    boxes: npt.ArrayLike | _Store, *, precision: _Precision = ...
 ) -> npt.NDArray[np.float32]: ...
 
 class Contacts:

@@ -1,16 +1,35 @@
-from typing import Any
+from typing import Any, Literal
 
 import dask.array as da
 import numpy.typing as npt
 
-from ._core import PoseRecords, RectRecords
+from ._core import PoseRecords, PoseRecords64, RectRecords, RectRecords64
 
-def shared_records(rects: npt.ArrayLike | RectRecords | PoseRecords, client: Any = ...) -> Any: ...
+def shared_records(
+    rects: npt.ArrayLike | RectRecords | PoseRecords | RectRecords64 | PoseRecords64,
+    client: Any = ...,
+    *,
+    precision: Literal["float32", "float64"] | None = ...,
+) -> Any: ...
 def collide(
-    rects: Any, pairs: da.Array, method: str | None = ..., backend: str | None = ..., threads: int = ..., client: Any = ...
+    rects: Any,
+    pairs: da.Array,
+    method: str | None = ...,
+    backend: str | None = ...,
+    threads: int = ...,
+    client: Any = ...,
+    *,
+    precision: Literal["float32", "float64"] | None = ...,
 ) -> da.Array: ...
 def colliding_pairs(
-    rects: Any, pairs: da.Array, method: str | None = ..., backend: str | None = ..., threads: int = ..., client: Any = ...
+    rects: Any,
+    pairs: da.Array,
+    method: str | None = ...,
+    backend: str | None = ...,
+    threads: int = ...,
+    client: Any = ...,
+    *,
+    precision: Literal["float32", "float64"] | None = ...,
 ) -> da.Array: ...
 def find_pairs(
     boxes: Any,

@@ -284,64 +284,55 @@ void require_runs_on_doubles(const obbsat::collide_options& options, obbsat::sto
 template <class Store>
 struct store_traits;
 
+/// What a store's traits follow from its form and its value type: the row
+/// width, the name of its rows, and the methods it takes (those that run on
+/// doubles for a double store).
+template <obbsat::store_kind Kind, class Value>
+struct store_form {
+    using value = Value;
+    static constexpr obbsat::store_kind kind = Kind;
+    static constexpr bool poses = Kind == obbsat::store_kind::poses;
+    static constexpr std::size_t fields = poses ? obbsat::pose_field_count : 8;
+    static constexpr const char* rows_name = poses ? "poses" : "corners";
+    static void require_method(const obbsat::collide_options& options) {
+        if (std::is_same<Value, double>::value) {
+            require_runs_on_doubles(options, Kind);
+        } else {
+            require_runs_on(options, Kind);
+        }
+    }
+};
+
 template <>
-struct store_traits<obbsat::rect_records> {
+struct store_traits<obbsat::rect_records> : store_form<obbsat::store_kind::corners, float> {
     using row = obbsat::rect;
-    using value = float;
-    static constexpr std::size_t fields = 8;
     static constexpr std::size_t record_bytes = sizeof(obbsat::rect);
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
     static constexpr const char* class_name = "RectRecords";
-    static constexpr const char* rows_name = "corners";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return corners_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
+    static constexpr auto rows_in_place = &corners_in_place;
 };
 
 template <>
-struct store_traits<obbsat::pose_records> {
+struct store_traits<obbsat::pose_records> : store_form<obbsat::store_kind::poses, float> {
     using row = obbsat::rect_pose;
-    using value = float;
-    static constexpr std::size_t fields = obbsat::pose_field_count;
     static constexpr std::size_t record_bytes = obbsat::pose_records::record_floats * sizeof(float);
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
     static constexpr const char* class_name = "PoseRecords";
-    static constexpr const char* rows_name = "poses";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return poses_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on(options, kind); }
+    static constexpr auto rows_in_place = &poses_in_place;
 };
 
 template <>
-struct store_traits<obbsat::rect_records64> {
+struct store_traits<obbsat::rect_records64> : store_form<obbsat::store_kind::corners, double> {
     using row = obbsat::rect64;
-    using value = double;
-    static constexpr std::size_t fields = 8;
     static constexpr std::size_t record_bytes = sizeof(obbsat::rect64);
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::corners;
     static constexpr const char* class_name = "RectRecords64";
-    static constexpr const char* rows_name = "corners";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return corners64_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
+    static constexpr auto rows_in_place = &corners64_in_place;
 };
 
 template <>
-struct store_traits<obbsat::pose_records64> {
+struct store_traits<obbsat::pose_records64> : store_form<obbsat::store_kind::poses, double> {
     using row = obbsat::rect_pose64;
-    using value = double;
-    static constexpr std::size_t fields = obbsat::pose_field_count;
     static constexpr std::size_t record_bytes = obbsat::pose_records64::record_doubles * sizeof(double);
-    static constexpr obbsat::store_kind kind = obbsat::store_kind::poses;
     static constexpr const char* class_name = "PoseRecords64";
-    static constexpr const char* rows_name = "poses";
-    static std::pair<const row*, std::size_t> rows_in_place(const py::array& a, const char* what) {
-        return poses64_in_place(a, what);
-    }
-    static void require_method(const obbsat::collide_options& options) { require_runs_on_doubles(options, kind); }
+    static constexpr auto rows_in_place = &poses64_in_place;
 };
 
 /// A store holding a checked copy of the rows of `rows` (read in place; a
@@ -418,7 +409,7 @@ void def_store(py::module_& m, const char* doc, const char* init_doc, const char
         .def("__repr__",
              [](const Store& store) {
                  return std::string(traits::class_name) + "(" + std::to_string(store.size()) + " " +
-                        (traits::kind == obbsat::store_kind::poses ? "poses" : "rectangles") + ")";
+                        (traits::poses ? "poses" : "rectangles") + ")";
              })
         .def(py::pickle([](const Store& store) { return py::make_tuple(rows_copy(store)); },
                         [](const py::tuple& state) {

@@ -16,9 +16,9 @@
 // read or copied.
 //
 // Scene queries (find_pairs, PairFinder) take one or two sets of one kind:
-// a store passed in (store_traits names the four), or the rows of an array, which the
-// library's scene query reads in place (obbsat::box_view) and checks in the
-// pass that computes the bounds. Each side may carry pair filters
+// a store passed in (store_traits names the four), or the rows of an array,
+// which the library's scene query reads in place (obbsat::box_view) and
+// checks in the pass that computes the bounds. Each side may carry pair filters
 // (obbsat/pair_filters.hpp): categories and masks as uint64, groups as
 // int32, read in place when they already are, else converted here without
 // loss (a value that does not fit is a ValueError). The pairs come back
@@ -419,7 +419,6 @@ void def_store(py::module_& m, const char* doc, const char* init_doc, const char
                             return store_of<Store>(state[0].cast<py::array>());
                         }));
 }
-
 
 /// A double store holding a checked copy of `count` rows; the error is prefixed "what: " when `what` is given.
 template <class Store, class Row>

@@ -99,6 +99,7 @@ _DEFAULT_METHOD = {"corners": "sat4", "poses": "local"}
 _DEFAULT_METHOD64 = {"corners": "exact", "poses": "local"}
 _PRECISIONS = ("float32", "float64")
 _SCENE_METHOD = "exact"
+_DEFAULT_BACKEND = "auto"
 
 # The stores records() builds: float32 ones and double ones (every double
 # kept exactly), and for each its form and the _core call that decides a
@@ -109,7 +110,6 @@ _STORES = _FLOAT_STORES + _DOUBLE_STORES
 _STORE_FORM = {RectRecords: "corners", PoseRecords: "poses", RectRecords64: "corners", PoseRecords64: "poses"}
 _STORE_CALL = {RectRecords: "collide_store", PoseRecords: "collide_pose_store",
                RectRecords64: "collide_store64", PoseRecords64: "collide_pose_store64"}
-_DEFAULT_BACKEND = "auto"
 
 
 def _backend(backend):
@@ -415,8 +415,9 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None, *, p
         place; any other integer dtype is range-checked and converted once.
     method : str, optional
         One of :func:`methods` for the form of ``rects`` (``methods()`` on
-        corners, ``methods(poses=True)`` on poses). ``None``: ``"sat4"`` on
-        corners, ``"local"`` on poses.
+        corners, ``methods(poses=True)`` on poses; on float64 rows and
+        double stores only those with a double form). ``None``: ``"sat4"``
+        on corners (``"exact"`` on float64 corners), ``"local"`` on poses.
     backend : str, optional
         ``"auto"`` (also for ``None``) or one of :func:`backends`; verdicts
         never depend on it.
@@ -443,7 +444,9 @@ def collide(rects, pairs, method=None, backend="auto", threads=1, out=None, *, p
         wrong, a method unknown or not one that runs on the form of
         ``rects``, a backend unknown, or the backend cannot run here
         (``UnsupportedBackendError``), ``threads`` is outside 0 .. 2**32 - 1,
-        or ``out`` shares memory with ``rects`` or ``pairs``.
+        ``out`` shares memory with ``rects`` or ``pairs``, or ``precision``
+        names the other float type than a store's (a store is never
+        converted).
     TypeError
         A dtype is not numeric (rects), not integer (pairs), ``pairs`` is a
         store, or ``out`` is not a writable C-contiguous bool/uint8 array.

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import obbsat
-from conftest import random_pairs, random_poses
+from conftest import random_pairs, random_poses, utm_poses
 
 da = pytest.importorskip("dask.array")
 distributed = pytest.importorskip("distributed")
@@ -107,6 +107,24 @@ def test_poses_on_two_workers(client):
     assert (hits == obbsat.colliding_pairs(poses, pairs.astype(np.int64), method="exact")).all()
     with pytest.raises(ValueError, match=r"^method sat4 does not run on poses \(pose_records take "):
         obbsat.dask.collide(store, lazy_pairs, method="sat4").compute()
+
+
+def test_double_stores_on_two_workers(client):
+    """float64 data is broadcast as a double store (pickled as its rows) and
+    decided in float64 on each worker, as obbsat.collide decides the array."""
+    poses = utm_poses(4000, 21, span=600)
+    rng = np.random.default_rng(3)
+    pairs = random_pairs(rng, len(poses), 100_000)
+    pairs[:2000] = np.arange(4000, dtype=np.uint32).reshape(-1, 2)
+    lazy_pairs = da.from_array(pairs, chunks=(25_000, 2))
+    for rows in (poses, obbsat.corners_of_poses(poses).reshape(-1, 8)):
+        store = obbsat.dask.shared_records(rows, client)
+        assert len(client.who_has([store])[store.key]) == 2, "the double store is on both workers"
+        assert type(store.result()) in (obbsat.RectRecords64, obbsat.PoseRecords64)
+        expected = obbsat.collide(rows, pairs, method="exact")
+        assert expected.tobytes() != obbsat.collide(rows, pairs, method="exact", precision="float32").tobytes()
+        got = obbsat.dask.collide(store, lazy_pairs, method="exact").compute()
+        assert got.tobytes() == expected.tobytes()
 
 
 def test_a_bad_pose_is_refused_before_any_work(client):

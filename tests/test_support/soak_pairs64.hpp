@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace obbsat::test {
 
@@ -199,5 +200,46 @@ inline constexpr soak_family64<rect_pair64> corner_soak_families[] = {
     {"free quads", free_quad_pair},
     {"bit-fuzzed", bit_fuzzed_corner_pair},
 };
+
+}  // namespace obbsat::test
+
+namespace obbsat::test {
+
+/// The pose families whose bytes are the same on every machine (no unit
+/// rotation from the C library): those of golden digests.
+inline constexpr soak_family64<pose_pair64> portable_pose_families[] = {
+    {"uniform 1e-3..1e12", uniform_pair},
+    {"UTM contacts 500000.125", utm_contact_pair},
+    {"UTM contacts 6e6", utm_northing_contact_pair},
+    {"contacts 1e9..1e15", far_contact_pair},
+    {"slivers", sliver_pair},
+    {"scaled rotations", scaled_rotation_pair},
+    {"ulp-fuzzed contacts", ulp_fuzzed_pose_pair},
+    {"bit-fuzzed", bit_fuzzed_pose_pair},
+};
+
+/// The corner families whose bytes are the same on every machine.
+inline constexpr soak_family64<rect_pair64> portable_corner_families[] = {
+    {"uniform 1e-3..1e12", uniform_corner_pair},
+    {"UTM contacts 500000.125", corner_pair<utm_contact_pair>},
+    {"contacts 1e9..1e15", corner_pair<far_contact_pair>},
+    {"scaled rotations", corner_pair<scaled_rotation_pair>},
+    {"ulp-fuzzed contacts", ulp_fuzzed_corner_pair},
+    {"ulp-fuzzed quads", nudged_corner_pair},
+    {"free quads", free_quad_pair},
+    {"bit-fuzzed", bit_fuzzed_corner_pair},
+};
+
+/// `count` pairs, each from a family of `families` drawn at random, as the two
+/// sides' items: pair i is (a[i], b[i]).
+template <class Item, class Pair, std::size_t family_count>
+void draw_pairs(seeded_random& random, const soak_family64<Pair> (&families)[family_count], std::size_t count,
+                std::vector<Item>& a, std::vector<Item>& b) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const Pair p = families[random.below(family_count)].make(random);
+        a.push_back(p.a);
+        b.push_back(p.b);
+    }
+}
 
 }  // namespace obbsat::test

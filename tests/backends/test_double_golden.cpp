@@ -6,6 +6,7 @@
 // SIMD lanes exist; a SIMD backend collide_pairs refuses for them
 // (invalid_input, as obbsat/collide64.hpp says) is skipped, so these digests
 // bind the lanes as soon as they run.
+#include "test_support/double_references.hpp"
 #include "test_support/soak_pairs64.hpp"
 
 #include <obbsat/backend.hpp>
@@ -13,11 +14,6 @@
 #include <obbsat/digest.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/method.hpp>
-#include <obbsat/ref/conservative64.hpp>
-#include <obbsat/ref/exact64.hpp>
-#include <obbsat/ref/local64.hpp>
-#include <obbsat/ref/pose_conservative64.hpp>
-#include <obbsat/ref/pose_exact64.hpp>
 
 #include <gtest/gtest.h>
 
@@ -98,23 +94,11 @@ const golden_set<rect64>& golden_corners() {
     return set;
 }
 
-bool reference(method m, const rect_pose64& a, const rect_pose64& b) {
-    switch (m) {
-        case method::exact: return obbsat::ref::exact(a, b);
-        case method::conservative: return obbsat::ref::conservative(a, b);
-        default: return obbsat::ref::local(a, b);
-    }
-}
-
-bool reference(method m, const rect64& a, const rect64& b) {
-    return m == method::exact ? obbsat::ref::exact(a, b) : obbsat::ref::conservative(a, b);
-}
-
 template <class Item>
 std::uint64_t reference_digest(method m, const golden_set<Item>& set) {
     verdicts v;
     for (const pair_index& p : set.pairs) {
-        v.push_back(reference(m, set.pool[p.a], set.pool[p.b]) ? 1 : 0);
+        v.push_back(obbsat::test::double_reference(m, set.pool[p.a], set.pool[p.b]) ? 1 : 0);
     }
     return obbsat::verdict_digest(v.data(), v.size());
 }

@@ -20,6 +20,7 @@
 // seconds; then the pairs and collisions of each family. Stops after the batch
 // with the first disagreement and exits 1, printing the first few pairs that
 // disagree in hex floats.
+#include "test_support/double_references.hpp"
 #include "test_support/soak_pairs64.hpp"
 
 #include <obbsat/backend.hpp>
@@ -28,11 +29,6 @@
 #include <obbsat/oracle/contact64.hpp>
 #include <obbsat/oracle/pose_contact64.hpp>
 #include <obbsat/ref/certified64.hpp>
-#include <obbsat/ref/conservative64.hpp>
-#include <obbsat/ref/exact64.hpp>
-#include <obbsat/ref/local64.hpp>
-#include <obbsat/ref/pose_conservative64.hpp>
-#include <obbsat/ref/pose_exact64.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -59,18 +55,6 @@ constexpr std::size_t failures_shown = 5;
 
 double seconds_since(steady::time_point start) {
     return std::chrono::duration<double>(steady::now() - start).count();
-}
-
-bool reference(method m, const rect_pose64& a, const rect_pose64& b) {
-    switch (m) {
-        case method::exact: return obbsat::ref::exact(a, b);
-        case method::conservative: return obbsat::ref::conservative(a, b);
-        default: return obbsat::ref::local(a, b);
-    }
-}
-
-bool reference(method m, const rect64& a, const rect64& b) {
-    return m == method::exact ? obbsat::ref::exact(a, b) : obbsat::ref::conservative(a, b);
 }
 
 /// True iff the certified fast path of exact leaves the pair to the oracle.
@@ -188,7 +172,7 @@ bool soak_store(const char* store_name, const obbsat::test::soak_family64<Pair> 
             long expected_slow = 0;
             const steady::time_point ref_start = steady::now();
             for (std::size_t i = 0; i < n; ++i) {
-                expected[i] = reference(m, items[2 * i], items[2 * i + 1]) ? 1 : 0;
+                expected[i] = obbsat::test::double_reference(m, items[2 * i], items[2 * i + 1]) ? 1 : 0;
             }
             ref_row.seconds += seconds_since(ref_start);
             for (std::size_t i = 0; i < n; ++i) {

@@ -219,6 +219,45 @@ TEST(sort_pairs, equals_std_sort_by_a_then_b_with_and_without_tags) {
     }
 }
 
+TEST(sort_pairs, sorts_runs_whose_partners_lie_close_together_by_b) {
+    // Each a's partners drawn from a narrow window of b, so that many share
+    // their high bits: the bucket sort's last read must put those in order.
+    obbsat::seeded_random random(11);
+    const std::size_t a_count = 2000;
+    std::vector<obbsat::pair_index> input;
+    for (std::uint32_t a = 0; a < a_count; ++a) {
+        std::vector<std::uint32_t> window(600);
+        for (std::size_t k = 0; k < window.size(); ++k) {
+            window[k] = a * 13u + static_cast<std::uint32_t>(k);
+        }
+        const std::size_t run = random.next() % 7 == 0 ? random.next() % 300 : random.next() % 9;
+        for (std::size_t k = 0; k < run; ++k) {
+            std::swap(window[k], window[k + random.next() % (window.size() - k)]);
+            input.push_back({a, window[k]});
+        }
+    }
+    for (std::size_t i = input.size(); i > 1; --i) {
+        std::swap(input[i - 1], input[random.next() % i]);
+    }
+    std::vector<obbsat::pair_index> want = input;
+    std::sort(want.begin(), want.end(), [](const auto& x, const auto& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
+    for (const std::size_t sources : {std::size_t{1}, std::size_t{2}}) {
+        std::vector<obbsat::detail::pair_source<obbsat::pair_index>> lists(sources);
+        for (std::size_t s = 0; s < sources; ++s) {
+            const std::size_t begin = input.size() * s / sources;
+            const std::size_t end = input.size() * (s + 1) / sources;
+            lists[s].push_back({input.data() + begin, end - begin});
+        }
+        std::vector<obbsat::pair_index> got;
+        std::vector<obbsat::detail::pair_sort_scratch<obbsat::pair_index>> scratch(sources);
+        obbsat::detail::sort_pairs(lists, a_count, got, scratch);
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t i = 0; i < want.size(); ++i) {
+            ASSERT_TRUE(got[i].a == want[i].a && got[i].b == want[i].b) << sources << " sources, pair " << i;
+        }
+    }
+}
+
 TEST(repair_sort, sorts_nearly_sorted_input_and_gives_up_past_its_budget) {
     obbsat::seeded_random random(3);
     std::vector<std::uint32_t> keys(20000), values(20000);

@@ -65,14 +65,20 @@ void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, unsigned b_bits,
         pairs[by_a[spare[i].a & mask]++] = spare[i];
     }
     // Partners of one a whose b share their high bits kept the order they
-    // came in: their run is sorted by b, once, where the first is found.
-    std::size_t run_begin = 0;
+    // came in. The pairs are in order of a now, so a pair is out of place iff
+    // (a, b) as one number is below the one before it: one comparison, a
+    // branch taken rarely, where testing "same a" first would mispredict on
+    // about every other pair. Such a run is sorted by b, once.
+    const auto key_of = [](const Pair& p) { return (std::uint64_t{p.a} << 32) | p.b; };
     for (std::size_t i = 1; i < n; ++i) {
-        const bool same_a = pairs[i].a == pairs[i - 1].a;
-        run_begin = same_a ? run_begin : i;
-        if (same_a && pairs[i].b < pairs[i - 1].b) {
+        if (key_of(pairs[i]) < key_of(pairs[i - 1])) {
+            const std::uint32_t a = pairs[i].a;
+            std::size_t run_begin = i - 1;
+            while (run_begin > 0 && pairs[run_begin - 1].a == a) {
+                --run_begin;
+            }
             std::size_t run_end = i + 1;
-            while (run_end < n && pairs[run_end].a == pairs[i].a) {
+            while (run_end < n && pairs[run_end].a == a) {
                 ++run_end;
             }
             std::sort(pairs + run_begin, pairs + run_end, by_pair);

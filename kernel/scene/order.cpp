@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <new>
 #include <numeric>
 #include <vector>
 
@@ -43,7 +44,18 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 order_[i] = static_cast<std::uint32_t>(i);
             }
         });
-        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts);
+        // The records' memory, which copy_records fills next, is the sort's
+        // working memory first (16 of its 32 bytes a box): a cold query then
+        // maps and clears 16 bytes a box fewer of fresh pages. The words live
+        // in that memory until the sort is done; copy_records puts records back.
+        // (records_ is aligned to a cache line by its allocator.)
+        static_assert(sizeof(record) >= 2 * sizeof(std::uint64_t), "a record holds two words of the sort");
+        records_.resize(n_);
+        std::uint64_t* const words = reinterpret_cast<std::uint64_t*>(records_.data());
+        for (std::size_t w = 0; w < 2 * n_; ++w) {
+            ::new (static_cast<void*>(words + w)) std::uint64_t;  // no code: words begin to live here
+        }
+        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts);
     } else if (!stats_.reused_order) {
         run_parts(parts, [&](std::size_t share) {
             const auto [begin, end] = share_of(n_, share, parts);

@@ -27,9 +27,17 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     if (spare.size() < n) {
         spare.resize(n);
     }
+    radix_sort(keys, values, n, key_bits, packed.data(), spare.data(), parts);
+}
+
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
+                std::uint64_t* spare, std::size_t parts) {
+    if (n < 2) {
+        return;
+    }
     parts = std::max<std::size_t>(1, std::min(parts, n / 32768));
-    std::uint64_t* from = packed.data();
-    std::uint64_t* to = spare.data();
+    std::uint64_t* from = packed;
+    std::uint64_t* to = spare;
     const auto run = [parts](const std::function<void(std::size_t)>& task) {
         if (parts == 1) {
             task(0);

@@ -23,6 +23,11 @@ using radix_buffer = scratch_records<std::uint64_t>;
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
                 radix_buffer& spare, std::size_t parts = 1);
 
+/// radix_sort in working memory the caller lends: `packed` and `spare`, n
+/// words each, not overlapping each other, keys or values.
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
+                std::uint64_t* spare, std::size_t parts = 1);
+
 /// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
 /// (every bucket below `buckets`): starts[b] is the first i whose bucket is
 /// at least b, for b in [0, buckets]. A call writes the entries of the

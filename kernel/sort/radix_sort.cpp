@@ -36,6 +36,7 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         return;
     }
     parts = std::max<std::size_t>(1, std::min(parts, n / 32768));
+    key_bits = std::min(key_bits, 32u);  // the keys have no more
     std::uint64_t* from = packed;
     std::uint64_t* to = spare;
     const auto run = [parts](const std::function<void(std::size_t)>& task) {

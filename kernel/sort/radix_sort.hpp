@@ -2,7 +2,8 @@
 // significant digit radix sort over the pairs packed into 64-bit words, 8 bits
 // per pass (256 write streams, few enough for the TLB and the store buffers),
 // skipping passes whose digit is the same for every key, in memory backed by
-// huge pages where the OS offers them. Internal to the library.
+// huge pages where the OS offers them (or lent by the caller). On one thread
+// every digit is counted while the keys are packed. Internal to the library.
 #pragma once
 
 #include "support/scratch_vector.hpp"

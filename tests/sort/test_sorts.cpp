@@ -1,6 +1,6 @@
 // The scene queries' sorts against std::stable_sort: radix_sort on one
 // thread and split over two (the same result either way, equal keys in their
-// input order), merge_by_key against std::merge in shares split by key, and
+// input order), in its own buffers and in memory the caller lends, merge_by_key against std::merge in shares split by key, and
 // repair_sort on nearly sorted input and past its move budget; bucket_starts
 // against prefix counts; sort_pairs against std::sort by (a, b).
 #include "sort/pair_sort.hpp"
@@ -66,6 +66,26 @@ TEST(radix_sort, equals_a_stable_sort_on_one_thread_and_two) {
                 obbsat::detail::radix_sort(keys.data(), values.data(), n, key_bits, packed, spare, parts);
                 EXPECT_EQ(zipped(keys, values), want) << n << " keys of " << key_bits << " bits, " << parts << " parts";
             }
+        }
+    }
+}
+
+TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) {
+    // The scene query lends the records' memory: n words for the packed keys
+    // and n for the spare, here between words that must keep their values.
+    constexpr std::uint64_t canary = 0x5eed5eed5eed5eedull;
+    for (const std::size_t n : {std::size_t{2}, std::size_t{5000}, std::size_t{200000}}) {
+        for (const std::size_t parts : {std::size_t{1}, std::size_t{2}}) {
+            std::vector<std::uint32_t> keys, values;
+            random_input(n, 24, n + parts, keys, values);
+            const keyed want = stably_sorted(keys, values, 0);
+            std::vector<std::uint64_t> lent(2 * n + 3, canary);
+            obbsat::detail::radix_sort(keys.data(), values.data(), n, 24, lent.data() + 1, lent.data() + 2 + n,
+                                       parts);
+            EXPECT_EQ(zipped(keys, values), want) << n << " keys, " << parts << " parts";
+            EXPECT_EQ(lent[0], canary);
+            EXPECT_EQ(lent[n + 1], canary);
+            EXPECT_EQ(lent[2 * n + 2], canary);
         }
     }
 }

@@ -94,6 +94,14 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
     keys_by_id_fresh_ = with_keys;
     if (with_keys) {
         key_by_id_.resize(n_);
+    } else {
+        // Each box's lower corner is left in the arrays of the order, as
+        // bits (lo_x in keys_, lo_y in order_): order_boxes makes the keys
+        // from them once the grid is known, instead of reading every row and
+        // computing its bounds a second time. A query that may repair its
+        // last order (with_keys) keeps that order's keys in keys_ instead.
+        keys_.resize(n_);
+        order_.resize(n_);
     }
     struct partial {
         double x_low = std::numeric_limits<double>::infinity();
@@ -157,6 +165,9 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
                 ++exponents[extent_exponent[r]];
                 if (with_keys) {
                     key_by_id_[i] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
+                } else {
+                    std::memcpy(&keys_[i], &b.lo_x[r], sizeof(float));
+                    std::memcpy(&order_[i], &b.lo_y[r], sizeof(float));
                 }
                 x_low = std::min(x_low, b.lo_x[r]);
                 x_high = std::max(x_high, b.hi_x[r]);

@@ -6,6 +6,8 @@
 #include "support/work_shares.hpp"
 
 #include <algorithm>
+#include <cstring>
+#include <new>
 #include <numeric>
 #include <vector>
 
@@ -29,7 +31,32 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     order_.resize(n_);
     // The repair needs this query's keys on the last grid (measure_extent).
     stats_.reused_order = keep_grid && keys_by_id_fresh_ && repair_order(parts);
-    if (!stats_.reused_order) {
+    if (!stats_.reused_order && !keys_by_id_fresh_) {
+        // measure_extent left each box's lo_x and lo_y, widened as the sweep
+        // will widen them, in keys_ and order_ (as bits).
+        run_parts(parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(n_, share, parts);
+            for (std::size_t i = begin; i < end; ++i) {
+                float lo_x, lo_y;
+                std::memcpy(&lo_x, &keys_[i], sizeof(float));
+                std::memcpy(&lo_y, &order_[i], sizeof(float));
+                keys_[i] = grid_.key_of(lo_x, lo_y);
+                order_[i] = static_cast<std::uint32_t>(i);
+            }
+        });
+        // The records' memory, which copy_records fills next, is the sort's
+        // working memory first (16 of its 32 bytes a box): a cold query then
+        // maps and clears 16 bytes a box fewer of fresh pages. The words live
+        // in that memory until the sort is done; copy_records puts records back.
+        // (records_ is aligned to a cache line by its allocator.)
+        static_assert(sizeof(record) >= 2 * sizeof(std::uint64_t), "a record holds two words of the sort");
+        records_.resize(n_);
+        std::uint64_t* const words = reinterpret_cast<std::uint64_t*>(records_.data());
+        for (std::size_t w = 0; w < 2 * n_; ++w) {
+            ::new (static_cast<void*>(words + w)) std::uint64_t;  // no code: words begin to live here
+        }
+        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts);
+    } else if (!stats_.reused_order) {
         run_parts(parts, [&](std::size_t share) {
             const auto [begin, end] = share_of(n_, share, parts);
             bounds_run b;

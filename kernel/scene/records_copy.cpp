@@ -7,6 +7,7 @@
 #include "support/work_shares.hpp"
 
 #include <algorithm>
+#include <new>
 
 namespace obbsat::detail {
 
@@ -45,6 +46,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                     }
                 }
                 const std::uint32_t id = order_[k];
+                ::new (static_cast<void*>(&records_[k])) record;  // its memory may have held the sort's words
                 copy_row(input, id, records_[k].v);
                 if (doubles_) {
                     // The double method reads these (test_pairs), in the query's order as the floats.

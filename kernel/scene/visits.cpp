@@ -67,24 +67,36 @@ void pair_search::collect_visits(std::size_t parts) {
         const auto [begin, end] = share_of(n_, share, parts);
         bucket_starts(keys_.data(), n_, q_bits, strips, begin, end, own_begin_.data());
         std::size_t v = first_near[share];
+        const std::size_t v_end = first_near[share + 1];
         std::size_t f = first_far[share];
         std::uint32_t last_key = 0;
         unsigned sorted = 1;
-        // Whether a rectangle visits at all is as random as the scene: a
-        // rectangle that does not writes its would-be visit to `unused`.
+        // Local copies, so that the stores below, which might alias them for
+        // all the compiler knows, do not make it read them again each time.
+        const std::uint32_t* const keys = keys_.data();
+        const std::uint32_t* const highs = strip_hi_.data();
+        const std::uint32_t* const q_los = q_lo_.data();
+        std::uint32_t* const to_keys = near_keys;
+        std::uint32_t* const to_ids = near_ids;
+        // Whether a rectangle visits at all is as random as the scene, so
+        // every rectangle writes a would-be visit to the next slot, which the
+        // next visit overwrites if this was none; after the share's last
+        // visit (a well predicted test) they go to `unused`, so that no share
+        // writes into the next one's slots.
         std::uint32_t unused[2];
         for (std::size_t k = begin; k < end; ++k) {
-            const std::uint32_t low = keys_[k] >> q_bits;
-            const std::uint32_t high = std::max(strip_hi_[k], low);
-            const bool is_near = high != low;
-            const std::uint32_t key = ((low + 1) << q_bits) | q_lo_[k];
-            sorted &= ((key >= last_key) | !is_near) ? 1u : 0u;
-            last_key = is_near ? key : last_key;
-            *(is_near ? near_keys + v : unused) = key;
-            *(is_near ? near_ids + v : unused + 1) = static_cast<std::uint32_t>(k);
-            v += is_near ? 1 : 0;
+            const std::uint32_t low = keys[k] >> q_bits;
+            const std::uint32_t high = std::max(highs[k], low);
+            const std::uint32_t is_near = high != low ? 1u : 0u;
+            const std::uint32_t key = ((low + 1) << q_bits) | q_los[k];
+            sorted &= static_cast<unsigned>(key >= last_key) | (is_near ^ 1u);
+            last_key = is_near != 0 ? key : last_key;
+            const bool room = v < v_end;
+            *(room ? to_keys + v : unused) = key;
+            *(room ? to_ids + v : unused + 1) = static_cast<std::uint32_t>(k);
+            v += is_near;
             for (std::uint32_t s = low + 2; s <= high; ++s) {
-                far_keys_[f] = (s << q_bits) | q_lo_[k];
+                far_keys_[f] = (s << q_bits) | q_los[k];
                 far_ids_[f] = static_cast<std::uint32_t>(k);
                 ++f;
             }

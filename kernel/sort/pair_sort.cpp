@@ -13,65 +13,77 @@ namespace {
 
 constexpr unsigned bucket_bits = 8;
 
-/// Sorts pairs[0, n), all of whose a share their high bits, by a then b:
-/// a counting sort on the low `low_bits` of a through `spare`, then each
-/// run of equal a sorted by b on its way back.
+/// Bits of b a bucket's first counting sort looks at: the highest ones.
+constexpr unsigned b_digit_bits = 12;
+
+/// Sorts pairs[0, n), all of whose a share their high bits, by a then b, b
+/// below 2^b_bits: two stable counting sorts, by the highest b_digit_bits of
+/// b through `spare` and back by the low `low_bits` of a, leave each run of
+/// equal a sorted but for partners whose b share those high bits; a last
+/// read finds them and sorts their run. A run of equal a holds a handful of
+/// pairs in a scene, and sorting each one by b mispredicted a branch or two
+/// per run (ranks over a variable-length run, or an insertion sort); here
+/// nothing branches on the data but the rare disorder.
 template <class Pair>
-void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, std::vector<Pair>& spare,
+void sort_bucket(Pair* pairs, std::size_t n, unsigned low_bits, unsigned b_bits, std::vector<Pair>& spare,
                  std::vector<std::uint32_t>& counts) {
     if (n < 2) {
         return;
     }
-    const std::uint32_t mask = (std::uint32_t{1} << low_bits) - 1;
+    const auto by_pair = [](const Pair& x, const Pair& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); };
     if (n < 32) {
-        std::sort(pairs, pairs + n, [](const Pair& x, const Pair& y) {
-            return x.a < y.a || (x.a == y.a && x.b < y.b);
-        });
+        std::sort(pairs, pairs + n, by_pair);
         return;
     }
-    const std::size_t values = std::size_t{1} << low_bits;
-    counts.assign(values + 1, 0);
+    const std::uint32_t mask = (std::uint32_t{1} << low_bits) - 1;
+    const unsigned b_shift = b_bits > b_digit_bits ? b_bits - b_digit_bits : 0;
+    const std::size_t a_values = std::size_t{1} << low_bits;
+    const std::size_t b_values = std::size_t{1} << (b_bits - b_shift);
+    // One read counts both digits: a digit's counts do not depend on the order.
+    counts.assign(a_values + b_values, 0);
+    std::uint32_t* const by_a = counts.data();
+    std::uint32_t* const by_b = counts.data() + a_values;
     for (std::size_t i = 0; i < n; ++i) {
-        ++counts[(pairs[i].a & mask) + 1];
+        ++by_a[pairs[i].a & mask];
+        ++by_b[pairs[i].b >> b_shift];
     }
-    for (std::size_t v = 0; v < values; ++v) {
-        counts[v + 1] += counts[v];
-    }
+    const auto starts = [](std::uint32_t* c, std::size_t values) {
+        std::uint32_t sum = 0;
+        for (std::size_t v = 0; v < values; ++v) {
+            const std::uint32_t here = c[v];
+            c[v] = sum;
+            sum += here;
+        }
+    };
+    starts(by_a, a_values);
+    starts(by_b, b_values);
     spare.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        spare[counts[pairs[i].a & mask]++] = pairs[i];
+        spare[by_b[pairs[i].b >> b_shift]++] = pairs[i];
     }
-    // counts[v] is now the end of the run of low bits v, that is of one a.
-    // Each run goes back to `pairs` sorted by b: a short one by ranks (each
-    // pair to the count of pairs before it: smaller b, or equal b earlier),
-    // comparisons without branches, where an insertion sort would mispredict
-    // about once per pair; a long one by std::sort.
-    constexpr std::size_t short_run = 16;
-    std::size_t begin = 0;
-    for (std::size_t v = 0; v < values; ++v) {
-        const std::size_t end = counts[v];
-        const std::size_t m = end - begin;
-        const Pair* const from = spare.data() + begin;
-        Pair* const to = pairs + begin;
-        if (m > short_run) {
-            std::sort(spare.begin() + static_cast<std::ptrdiff_t>(begin),
-                      spare.begin() + static_cast<std::ptrdiff_t>(end),
-                      [](const Pair& x, const Pair& y) { return x.b < y.b; });
-            std::copy(from, from + m, to);
-        } else {
-            for (std::size_t i = 0; i < m; ++i) {
-                const std::uint32_t b = from[i].b;
-                std::size_t rank = 0;
-                for (std::size_t j = 0; j < i; ++j) {
-                    rank += static_cast<std::size_t>(from[j].b <= b);
-                }
-                for (std::size_t j = i + 1; j < m; ++j) {
-                    rank += static_cast<std::size_t>(from[j].b < b);
-                }
-                to[rank] = from[i];
+    for (std::size_t i = 0; i < n; ++i) {
+        pairs[by_a[spare[i].a & mask]++] = spare[i];
+    }
+    // Partners of one a whose b share their high bits kept the order they
+    // came in. The pairs are in order of a now, so a pair is out of place iff
+    // (a, b) as one number is below the one before it: one comparison, a
+    // branch taken rarely, where testing "same a" first would mispredict on
+    // about every other pair. Such a run is sorted by b, once.
+    const auto key_of = [](const Pair& p) { return (std::uint64_t{p.a} << 32) | p.b; };
+    for (std::size_t i = 1; i < n; ++i) {
+        if (key_of(pairs[i]) < key_of(pairs[i - 1])) {
+            const std::uint32_t a = pairs[i].a;
+            std::size_t run_begin = i - 1;
+            while (run_begin > 0 && pairs[run_begin - 1].a == a) {
+                --run_begin;
             }
+            std::size_t run_end = i + 1;
+            while (run_end < n && pairs[run_end].a == a) {
+                ++run_end;
+            }
+            std::sort(pairs + run_begin, pairs + run_end, by_pair);
+            i = run_end - 1;
         }
-        begin = end;
     }
 }
 
@@ -140,10 +152,21 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
         }
     };
     std::vector<std::vector<std::size_t>> next(shares, std::vector<std::size_t>(buckets, 0));
+    std::vector<std::uint32_t> b_seen(shares, 0);  ///< every b of a share, or'ed: the bits b takes
     run(shares, [&](std::size_t share) {
         std::vector<std::size_t>& count = next[share];
-        for_share(share, [&](const Pair& p) { ++count[p.a >> high_shift]; });
+        std::uint32_t b_any = 0;
+        for_share(share, [&](const Pair& p) {
+            ++count[p.a >> high_shift];
+            b_any |= p.b;
+        });
+        b_seen[share] = b_any;
     });
+    std::uint32_t b_any = 0;
+    for (const std::uint32_t b : b_seen) {
+        b_any |= b;
+    }
+    const unsigned b_bits = bits_for(b_any);
     std::vector<std::size_t> begin(buckets + 1, 0);
     std::size_t sum = 0;
     for (std::size_t k = 0; k < buckets; ++k) {
@@ -173,7 +196,7 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
     }
     run(parts, [&](std::size_t part) {
         for (std::size_t k = first_bucket[part]; k < first_bucket[part + 1]; ++k) {
-            sort_bucket(out.data() + begin[k], begin[k + 1] - begin[k], high_shift, scratch[part].spare,
+            sort_bucket(out.data() + begin[k], begin[k + 1] - begin[k], high_shift, b_bits, scratch[part].spare,
                         scratch[part].counts);
         }
     });

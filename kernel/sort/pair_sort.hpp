@@ -1,7 +1,8 @@
 // Sorting a query's pairs by (a, b). One pass scatters the pairs by the high
 // bits of a into at most 256 buckets; each bucket, small enough for the
-// cache, is then sorted by the low bits of a (a counting sort) and each run
-// of equal a (a handful of pairs in a scene) by b. Internal to the library.
+// cache, is then sorted by the high bits of b and by the low bits of a (two
+// stable counting sorts), and the rare run of equal a left out of order by b
+// is sorted on its own. Internal to the library.
 #pragma once
 
 #include <obbsat/rect.hpp>

@@ -27,9 +27,18 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     if (spare.size() < n) {
         spare.resize(n);
     }
+    radix_sort(keys, values, n, key_bits, packed.data(), spare.data(), parts);
+}
+
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
+                std::uint64_t* spare, std::size_t parts) {
+    if (n < 2) {
+        return;
+    }
     parts = std::max<std::size_t>(1, std::min(parts, n / 32768));
-    std::uint64_t* from = packed.data();
-    std::uint64_t* to = spare.data();
+    key_bits = std::min(key_bits, 32u);  // the keys have no more
+    std::uint64_t* from = packed;
+    std::uint64_t* to = spare;
     const auto run = [parts](const std::function<void(std::size_t)>& task) {
         if (parts == 1) {
             task(0);
@@ -38,23 +47,45 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         }
     };
     const auto begin_of = [n, parts](std::size_t part) { return n * part / parts; };
-    run([&](std::size_t part) {
-        for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
-            from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
+    // On one thread the counts of every digit are taken as the keys are
+    // packed: a digit's count over all keys does not depend on their order,
+    // so no pass needs a read of its own to count. With several parts each
+    // part counts the share it holds at the start of each pass.
+    constexpr unsigned max_passes = 32 / digit_bits;
+    const unsigned passes = std::min(max_passes, (key_bits + digit_bits - 1) / digit_bits);
+    std::array<std::array<std::size_t, digit_values>, max_passes> counted{};
+    if (parts == 1) {
+        std::uint64_t* const out = from;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t key = keys[i];
+            out[i] = (std::uint64_t{key} << 32) | values[i];
+            for (unsigned d = 0; d < passes; ++d) {
+                ++counted[d][(key >> (d * digit_bits)) & (digit_values - 1)];
+            }
         }
-    });
+    } else {
+        run([&](std::size_t part) {
+            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+                from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
+            }
+        });
+    }
     // count[part][digit]: each part counts its own share, then scatters it to
     // the slots after every lower digit and after the same digit of lower parts,
     // which keeps the sort stable.
     std::vector<std::array<std::size_t, digit_values>> count(parts);
     for (unsigned shift = 32; shift < 32 + key_bits; shift += digit_bits) {
-        run([&](std::size_t part) {
-            std::array<std::size_t, digit_values>& c = count[part];
-            c.fill(0);
-            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
-                ++c[(from[i] >> shift) & (digit_values - 1)];
-            }
-        });
+        if (parts == 1) {
+            count[0] = counted[(shift - 32) / digit_bits];
+        } else {
+            run([&](std::size_t part) {
+                std::array<std::size_t, digit_values>& c = count[part];
+                c.fill(0);
+                for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+                    ++c[(from[i] >> shift) & (digit_values - 1)];
+                }
+            });
+        }
         std::size_t sum = 0;
         bool one_digit = false;
         for (std::size_t d = 0; d < digit_values; ++d) {

@@ -2,7 +2,8 @@
 // significant digit radix sort over the pairs packed into 64-bit words, 8 bits
 // per pass (256 write streams, few enough for the TLB and the store buffers),
 // skipping passes whose digit is the same for every key, in memory backed by
-// huge pages where the OS offers them. Internal to the library.
+// huge pages where the OS offers them (or lent by the caller). On one thread
+// every digit is counted while the keys are packed. Internal to the library.
 #pragma once
 
 #include "support/scratch_vector.hpp"
@@ -22,6 +23,11 @@ using radix_buffer = scratch_records<std::uint64_t>;
 /// pool; the result does not depend on how many.
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
                 radix_buffer& spare, std::size_t parts = 1);
+
+/// radix_sort in working memory the caller lends: `packed` and `spare`, n
+/// words each, not overlapping each other, keys or values.
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
+                std::uint64_t* spare, std::size_t parts = 1);
 
 /// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
 /// (every bucket below `buckets`): starts[b] is the first i whose bucket is

@@ -1,6 +1,6 @@
 // The scene queries' sorts against std::stable_sort: radix_sort on one
 // thread and split over two (the same result either way, equal keys in their
-// input order), merge_by_key against std::merge in shares split by key, and
+// input order), in its own buffers and in memory the caller lends, merge_by_key against std::merge in shares split by key, and
 // repair_sort on nearly sorted input and past its move budget; bucket_starts
 // against prefix counts; sort_pairs against std::sort by (a, b).
 #include "sort/pair_sort.hpp"
@@ -66,6 +66,26 @@ TEST(radix_sort, equals_a_stable_sort_on_one_thread_and_two) {
                 obbsat::detail::radix_sort(keys.data(), values.data(), n, key_bits, packed, spare, parts);
                 EXPECT_EQ(zipped(keys, values), want) << n << " keys of " << key_bits << " bits, " << parts << " parts";
             }
+        }
+    }
+}
+
+TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) {
+    // The scene query lends the records' memory: n words for the packed keys
+    // and n for the spare, here between words that must keep their values.
+    constexpr std::uint64_t canary = 0x5eed5eed5eed5eedull;
+    for (const std::size_t n : {std::size_t{2}, std::size_t{5000}, std::size_t{200000}}) {
+        for (const std::size_t parts : {std::size_t{1}, std::size_t{2}}) {
+            std::vector<std::uint32_t> keys, values;
+            random_input(n, 24, n + parts, keys, values);
+            const keyed want = stably_sorted(keys, values, 0);
+            std::vector<std::uint64_t> lent(2 * n + 3, canary);
+            obbsat::detail::radix_sort(keys.data(), values.data(), n, 24, lent.data() + 1, lent.data() + 2 + n,
+                                       parts);
+            EXPECT_EQ(zipped(keys, values), want) << n << " keys, " << parts << " parts";
+            EXPECT_EQ(lent[0], canary);
+            EXPECT_EQ(lent[n + 1], canary);
+            EXPECT_EQ(lent[2 * n + 2], canary);
         }
     }
 }
@@ -215,6 +235,45 @@ TEST(sort_pairs, equals_std_sort_by_a_then_b_with_and_without_tags) {
                 ASSERT_TRUE(plain_got[i].a == want[i].a && plain_got[i].b == want[i].b)
                     << a_count << " boxes, pair " << i;
             }
+        }
+    }
+}
+
+TEST(sort_pairs, sorts_runs_whose_partners_lie_close_together_by_b) {
+    // Each a's partners drawn from a narrow window of b, so that many share
+    // their high bits: the bucket sort's last read must put those in order.
+    obbsat::seeded_random random(11);
+    const std::size_t a_count = 2000;
+    std::vector<obbsat::pair_index> input;
+    for (std::uint32_t a = 0; a < a_count; ++a) {
+        std::vector<std::uint32_t> window(600);
+        for (std::size_t k = 0; k < window.size(); ++k) {
+            window[k] = a * 13u + static_cast<std::uint32_t>(k);
+        }
+        const std::size_t run = random.next() % 7 == 0 ? random.next() % 300 : random.next() % 9;
+        for (std::size_t k = 0; k < run; ++k) {
+            std::swap(window[k], window[k + random.next() % (window.size() - k)]);
+            input.push_back({a, window[k]});
+        }
+    }
+    for (std::size_t i = input.size(); i > 1; --i) {
+        std::swap(input[i - 1], input[random.next() % i]);
+    }
+    std::vector<obbsat::pair_index> want = input;
+    std::sort(want.begin(), want.end(), [](const auto& x, const auto& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
+    for (const std::size_t sources : {std::size_t{1}, std::size_t{2}}) {
+        std::vector<obbsat::detail::pair_source<obbsat::pair_index>> lists(sources);
+        for (std::size_t s = 0; s < sources; ++s) {
+            const std::size_t begin = input.size() * s / sources;
+            const std::size_t end = input.size() * (s + 1) / sources;
+            lists[s].push_back({input.data() + begin, end - begin});
+        }
+        std::vector<obbsat::pair_index> got;
+        std::vector<obbsat::detail::pair_sort_scratch<obbsat::pair_index>> scratch(sources);
+        obbsat::detail::sort_pairs(lists, a_count, got, scratch);
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t i = 0; i < want.size(); ++i) {
+            ASSERT_TRUE(got[i].a == want[i].a && got[i].b == want[i].b) << sources << " sources, pair " << i;
         }
     }
 }

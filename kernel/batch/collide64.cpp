@@ -94,6 +94,15 @@ detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& tabl
     }
 }
 
+/// The backend's stream lanes for options.test on double poses.
+detail::pose64_stream_fn pose_stream_kernel_of(const detail::double_kernel_table& table, method m) {
+    switch (m) {
+        case method::exact: return table.streams.exact;
+        case method::conservative: return table.streams.conservative;
+        default: return table.streams.local;  // require_method_on_doubles admitted nothing else
+    }
+}
+
 void report_settled(const std::vector<std::size_t>& settled, const collide_options& options) {
     if (options.slow_path_pairs != nullptr) {
         std::size_t total = 0;
@@ -132,16 +141,25 @@ void decide_pairs(const Store& store, const pair_index* pairs, std::size_t count
     report_settled(settled, options);
 }
 
-/// verdicts over [0, count) by a backend's lanes, split over threads.
-void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
-               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+/// verdicts over [0, count) by `run_part(begin, end)` (returning the pairs
+/// its slow path settled), split over threads.
+template <class RunPart>
+void run_parts_of(std::size_t count, const collide_options& options, const RunPart& run_part) {
     const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
     std::vector<std::size_t> settled(parts, 0);
     detail::run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = detail::share_of(count, part, parts);
-        settled[part] = kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+        settled[part] = run_part(begin, end);
     });
     report_settled(settled, options);
+}
+
+/// verdicts over [0, count) by a backend's lanes, split over threads.
+void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
+               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+    run_parts_of(count, options, [&](std::size_t begin, std::size_t end) {
+        return kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+    });
 }
 
 }  // namespace
@@ -175,6 +193,37 @@ std::vector<std::uint8_t> collide_pairs(const pose_records64& poses, const std::
                                         const collide_options& options) {
     std::vector<std::uint8_t> verdicts(pairs.size());
     collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), options);
+    return verdicts;
+}
+
+backend collide_stream(const pose_records64& a, const pose_records64& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    if (a.size() != b.size()) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) + " poses in A, " +
+                            std::to_string(b.size()) + " in B");
+    }
+    require_method_on_doubles(options, store_kind::poses);
+    const backend ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
+    const detail::double_kernel_table* table = detail::double_kernels_for(ran);
+    const double* ra = a.data();
+    const double* rb = b.data();
+    constexpr std::size_t stride = pose_records64::record_doubles;
+    run_parts_of(a.size(), options, [&](std::size_t begin, std::size_t end) {
+        const std::size_t n = end - begin;
+        if (table == nullptr) {
+            return detail::scalar_pose64_stream(options.test, ra + stride * begin, rb + stride * begin, n,
+                                                verdicts + begin);
+        }
+        return pose_stream_kernel_of(*table, options.test)(ra + stride * begin, rb + stride * begin, n,
+                                                           verdicts + begin);
+    });
+    return table == nullptr ? backend::scalar : ran;
+}
+
+std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b,
+                                         const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
     return verdicts;
 }
 

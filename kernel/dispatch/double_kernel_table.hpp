@@ -20,11 +20,24 @@ namespace obbsat::detail {
 using pose64_indexed_fn = std::size_t (*)(const double* records, const pair_index* pairs, std::size_t count,
                                           std::uint8_t* verdicts);
 
+/// verdicts[i] = the method's verdict on a[i] and b[i] (pose_records64 records) for
+/// i < count; returns how many pairs the exact slow path settled (0 but for exact).
+using pose64_stream_fn = std::size_t (*)(const double* a, const double* b, std::size_t count,
+                                         std::uint8_t* verdicts);
+
+/// The stream entry points of one backend on double poses, one per method.
+struct pose64_stream_kernels {
+    pose64_stream_fn exact;
+    pose64_stream_fn conservative;
+    pose64_stream_fn local;
+};
+
 /// The entry points of one backend on double poses, one per method that runs there.
 struct double_kernel_table {
     pose64_indexed_fn exact;
     pose64_indexed_fn conservative;
     pose64_indexed_fn local;
+    pose64_stream_kernels streams;
 };
 
 /// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in
@@ -36,6 +49,11 @@ const double_kernel_table& double_kernels_of();
 /// records, as a pose64_indexed_fn: exact through the certified path, else the oracle.
 std::size_t scalar_pose64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts);
+
+/// The scalar references of `m` over two pose_records64 record arrays, a[i]
+/// against b[i], as a pose64_stream_fn.
+std::size_t scalar_pose64_stream(method m, const double* a, const double* b, std::size_t count,
+                                 std::uint8_t* verdicts);
 
 /// The scalar references of `m` (exact or conservative) over rect64 rows (8 doubles each).
 std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,

@@ -18,7 +18,7 @@
 #include "lanes/pose_batch.hpp"
 #include "lanes/pose_corner_lanes.hpp"
 #include "lanes/pose_lanes.hpp"
-#include "lanes/pose64_lanes.hpp"
+#include "lanes/pose64_batch.hpp"
 #include "lanes/sat4_centered_lanes.hpp"
 #include "lanes/sat4_double_lanes.hpp"
 #include "lanes/sat4_lanes.hpp"
@@ -119,9 +119,12 @@ const kernel_table& kernels_of<this_backend>() {
 // instantiate the same xsimd templates for the same architecture (README.md).
 template <>
 const double_kernel_table& double_kernels_of<this_backend>() {
-    static constexpr double_kernel_table table{pose64_indexed_batch<isa_arch, pose_exact64_lanes>,
-                                               pose64_indexed_batch<isa_arch, pose_conservative64_lanes>,
-                                               pose64_indexed_batch<isa_arch, local64_lanes>};
+    static constexpr double_kernel_table table{
+        pose64_indexed_batch<isa_arch, pose_exact64_lanes, pair_fetch::none>,
+        pose64_indexed_batch<isa_arch, pose_conservative64_lanes, pair_fetch::none>,
+        pose64_indexed_batch<isa_arch, local64_lanes, pair_fetch::none>,
+        {pose64_stream_batch<isa_arch, pose_exact64_lanes>, pose64_stream_batch<isa_arch, pose_conservative64_lanes>,
+         pose64_stream_batch<isa_arch, local64_lanes>}};
     return table;
 }
 

@@ -49,6 +49,20 @@ backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std:
 std::vector<std::uint8_t> collide_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
                                         const collide_options& options);
 
+/// verdicts[i] = 1 if a[i] and b[i] collide, else 0, for i < a.size(): a stream
+/// of pairs, the double counterpart of collide_stream over pose_records, on the
+/// same lanes as collide_pairs (consecutive records read, no index looked up)
+/// and with the same verdicts; returns the backend that ran. Throws
+/// invalid_input (nothing written) when a and b differ in length or when
+/// options.test does not run on double poses; unsupported_backend as above.
+/// `verdicts` holds a.size() bytes.
+backend collide_stream(const pose_records64& a, const pose_records64& b, std::uint8_t* verdicts,
+                       const collide_options& options);
+
+/// The verdicts of collide_stream over double poses, one byte (0 or 1) per pair.
+std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b,
+                                         const collide_options& options);
+
 /// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0, for
 /// i < count; returns backend::scalar. Throws invalid_input (nothing written) as stated above.
 backend collide_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,

@@ -95,11 +95,11 @@ detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& tabl
 }
 
 /// The backend's stream lanes for options.test on double poses.
-detail::pose64_stream_fn pose_stream_kernel_of(const detail::double_kernel_table& table, method m) {
+const detail::pose64_stream_kernels& pose_streams_of(const detail::double_kernel_table& table, method m) {
     switch (m) {
-        case method::exact: return table.streams.exact;
-        case method::conservative: return table.streams.conservative;
-        default: return table.streams.local;  // require_method_on_doubles admitted nothing else
+        case method::exact: return table.exact_stream;
+        case method::conservative: return table.conservative_stream;
+        default: return table.local_stream;  // require_method_on_doubles admitted nothing else
     }
 }
 
@@ -162,6 +162,25 @@ void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, co
     });
 }
 
+/// A stream of a_size pairs a[i], b[i] on double poses: the checks of the float
+/// streams, then `run_part(lanes, begin, n)` over the parts of the batch, with
+/// the backend's stream lanes for options.test, or nullptr for the scalar
+/// references; returns the backend that ran.
+template <class RunPart>
+backend stream_of(std::size_t a_size, std::size_t b_size, const collide_options& options, const RunPart& run_part) {
+    if (a_size != b_size) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a_size) + " poses in A, " +
+                            std::to_string(b_size) + " in B");
+    }
+    require_method_on_doubles(options, store_kind::poses);
+    const backend ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
+    const detail::double_kernel_table* table = detail::double_kernels_for(ran);
+    const detail::pose64_stream_kernels* lanes = table != nullptr ? &pose_streams_of(*table, options.test) : nullptr;
+    run_parts_of(a_size, options,
+                 [&](std::size_t begin, std::size_t end) { return run_part(lanes, begin, end - begin); });
+    return table != nullptr ? ran : backend::scalar;
+}
+
 }  // namespace
 
 backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
@@ -198,30 +217,39 @@ std::vector<std::uint8_t> collide_pairs(const pose_records64& poses, const std::
 
 backend collide_stream(const pose_records64& a, const pose_records64& b, std::uint8_t* verdicts,
                        const collide_options& options) {
-    if (a.size() != b.size()) {
-        throw invalid_input("stream batches differ in length: " + std::to_string(a.size()) + " poses in A, " +
-                            std::to_string(b.size()) + " in B");
-    }
-    require_method_on_doubles(options, store_kind::poses);
-    const backend ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
-    const detail::double_kernel_table* table = detail::double_kernels_for(ran);
+    constexpr std::size_t stride = pose_records64::record_doubles;
     const double* ra = a.data();
     const double* rb = b.data();
-    constexpr std::size_t stride = pose_records64::record_doubles;
-    run_parts_of(a.size(), options, [&](std::size_t begin, std::size_t end) {
-        const std::size_t n = end - begin;
-        if (table == nullptr) {
-            return detail::scalar_pose64_stream(options.test, ra + stride * begin, rb + stride * begin, n,
-                                                verdicts + begin);
-        }
-        return pose_stream_kernel_of(*table, options.test)(ra + stride * begin, rb + stride * begin, n,
-                                                           verdicts + begin);
-    });
-    return table == nullptr ? backend::scalar : ran;
+    return stream_of(a.size(), b.size(), options,
+                     [&](const detail::pose64_stream_kernels* lanes, std::size_t begin, std::size_t n) {
+                         const double* pa = ra + stride * begin;
+                         const double* pb = rb + stride * begin;
+                         return lanes != nullptr ? lanes->records(pa, pb, n, verdicts + begin)
+                                                 : detail::scalar_pose64_stream(options.test, pa, pb, n, verdicts + begin);
+                     });
 }
 
 std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b,
                                          const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
+}
+
+backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    const detail::pose_soa64_view va = detail::view_of(a);
+    const detail::pose_soa64_view vb = detail::view_of(b);
+    return stream_of(a.size(), b.size(), options,
+                     [&](const detail::pose64_stream_kernels* lanes, std::size_t begin, std::size_t n) {
+                         const detail::pose_soa64_view pa = detail::shifted(va, begin);
+                         const detail::pose_soa64_view pb = detail::shifted(vb, begin);
+                         return lanes != nullptr ? lanes->soa(pa, pb, n, verdicts + begin)
+                                                 : detail::scalar_pose64_stream_soa(options.test, pa, pb, n, verdicts + begin);
+                     });
+}
+
+std::vector<std::uint8_t> collide_stream(const pose_soa64& a, const pose_soa64& b, const collide_options& options) {
     std::vector<std::uint8_t> verdicts(a.size());
     collide_stream(a, b, verdicts.data(), options);
     return verdicts;

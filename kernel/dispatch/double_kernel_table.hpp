@@ -5,6 +5,8 @@
 // yet: they run on the scalar references. Internal to the library.
 #pragma once
 
+#include "dispatch/pose_soa64_view.hpp"
+
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
@@ -25,11 +27,15 @@ using pose64_indexed_fn = std::size_t (*)(const double* records, const pair_inde
 using pose64_stream_fn = std::size_t (*)(const double* a, const double* b, std::size_t count,
                                          std::uint8_t* verdicts);
 
-/// The stream entry points of one backend on double poses, one per method.
+/// verdicts[i] = the method's verdict on a[i] and b[i] (two pose_soa64 views) for
+/// i < count; returns how many pairs the exact slow path settled.
+using pose64_stream_soa_fn = std::size_t (*)(const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                             std::uint8_t* verdicts);
+
+/// The stream entry points of one method on double poses: over records and over arrays.
 struct pose64_stream_kernels {
-    pose64_stream_fn exact;
-    pose64_stream_fn conservative;
-    pose64_stream_fn local;
+    pose64_stream_fn records;
+    pose64_stream_soa_fn soa;
 };
 
 /// The entry points of one backend on double poses, one per method that runs there.
@@ -37,7 +43,9 @@ struct double_kernel_table {
     pose64_indexed_fn exact;
     pose64_indexed_fn conservative;
     pose64_indexed_fn local;
-    pose64_stream_kernels streams;
+    pose64_stream_kernels exact_stream;
+    pose64_stream_kernels conservative_stream;
+    pose64_stream_kernels local_stream;
 };
 
 /// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in
@@ -54,6 +62,10 @@ std::size_t scalar_pose64_indexed(method m, const double* records, const pair_in
 /// against b[i], as a pose64_stream_fn.
 std::size_t scalar_pose64_stream(method m, const double* a, const double* b, std::size_t count,
                                  std::uint8_t* verdicts);
+
+/// The same over two pose_soa64 views, as a pose64_stream_soa_fn.
+std::size_t scalar_pose64_stream_soa(method m, const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                     std::uint8_t* verdicts);
 
 /// The scalar references of `m` (exact or conservative) over rect64 rows (8 doubles each).
 std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,

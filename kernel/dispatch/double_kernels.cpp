@@ -68,6 +68,11 @@ std::size_t scalar_pose64_stream(method m, const double* a, const double* b, std
     return decide_all(m, count, verdicts, [&](std::size_t i) { return pose64_pair{pose_at(a, i), pose_at(b, i)}; });
 }
 
+std::size_t scalar_pose64_stream_soa(method m, const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                     std::uint8_t* verdicts) {
+    return decide_all(m, count, verdicts, [&](std::size_t i) { return pose64_pair{pose64_at(a, i), pose64_at(b, i)}; });
+}
+
 std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts) {
     std::size_t settled = 0;

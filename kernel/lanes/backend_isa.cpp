@@ -91,6 +91,12 @@ constexpr pose_method_kernels pose_kernels_of_row() {
     return k;
 }
 
+/// The stream entry points of one method on double poses, instantiated for this ISA.
+template <template <class> class Method>
+constexpr pose64_stream_kernels pose64_streams_of() {
+    return pose64_stream_kernels{pose64_stream_batch<isa_arch, Method>, pose64_stream_soa_batch<isa_arch, Method>};
+}
+
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
     kernel_table t{};
@@ -123,8 +129,8 @@ const double_kernel_table& double_kernels_of<this_backend>() {
         pose64_indexed_batch<isa_arch, pose_exact64_lanes, pair_fetch::none>,
         pose64_indexed_batch<isa_arch, pose_conservative64_lanes, pair_fetch::none>,
         pose64_indexed_batch<isa_arch, local64_lanes, pair_fetch::none>,
-        {pose64_stream_batch<isa_arch, pose_exact64_lanes>, pose64_stream_batch<isa_arch, pose_conservative64_lanes>,
-         pose64_stream_batch<isa_arch, local64_lanes>}};
+        pose64_streams_of<pose_exact64_lanes>(), pose64_streams_of<pose_conservative64_lanes>(),
+        pose64_streams_of<local64_lanes>()};
     return table;
 }
 

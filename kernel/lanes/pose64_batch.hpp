@@ -7,6 +7,7 @@
 // past the caller's arrays is read or written.
 #pragma once
 
+#include "dispatch/pose_soa64_view.hpp"
 #include "lanes/batch_kernel.hpp"
 #include "lanes/pose64_lanes.hpp"
 #include "support/fetch_ahead.hpp"
@@ -84,6 +85,56 @@ template <class Arch, template <class> class Method>
 std::size_t pose64_stream_batch(const double* a, const double* b, std::size_t count, std::uint8_t* verdicts) {
     auto same = [](std::size_t i) { return i; };
     return pose64_batch<Arch, Method, pair_fetch::none>(a, b, same, same, count, verdicts);
+}
+
+/// The poses [first, first + width) of a view, one vector per field; the caller guarantees they exist.
+template <class Arch>
+OBBSAT_LANE_INLINE pose64_lanes<Arch> load_consecutive_poses64(const pose_soa64_view& v, std::size_t first) {
+    using batch = lanes64<Arch>;
+    return pose64_lanes<Arch>{batch::load_unaligned(v.fields[0] + first), batch::load_unaligned(v.fields[1] + first),
+                              batch::load_unaligned(v.fields[2] + first), batch::load_unaligned(v.fields[3] + first),
+                              batch::load_unaligned(v.fields[4] + first), batch::load_unaligned(v.fields[5] + first)};
+}
+
+/// The poses at first + min(lane, valid - 1) of a view: a partial last vector
+/// with its last pose repeated, staged in a local array (once per batch).
+template <class Arch>
+pose64_lanes<Arch> load_last_poses64(const pose_soa64_view& v, std::size_t first, std::size_t valid) {
+    constexpr std::size_t width = lanes64<Arch>::size;
+    alignas(64) double staged[pose_field_count][width];
+    pose_soa64_view local{};
+    for (unsigned f = 0; f < pose_field_count; ++f) {
+        for (std::size_t lane = 0; lane < width; ++lane) {
+            staged[f][lane] = v.fields[f][first + (lane < valid ? lane : valid - 1)];
+        }
+        local.fields[f] = staged[f];
+    }
+    return load_consecutive_poses64<Arch>(local, 0);
+}
+
+/// verdicts[i] = Method(a[i], b[i]) for i < count over two pose_soa64 views:
+/// every field is read as a vector, nothing is transposed.
+template <class Arch, template <class> class Method>
+std::size_t pose64_stream_soa_batch(const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                    std::uint8_t* verdicts) {
+    constexpr std::size_t width = lanes64<Arch>::size;
+    std::size_t settled = 0;
+    auto finish = [&](const lane_verdicts& v, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
+        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid, [&](std::size_t lane) {
+            return make_lane_pair(pose64_at(a, i + lane), pose64_at(b, i + lane));
+        });
+    };
+    std::size_t i = 0;
+    for (; i + width <= count; i += width) {
+        finish(Method<Arch>::collide(load_consecutive_poses64<Arch>(a, i), load_consecutive_poses64<Arch>(b, i)), i,
+               width);
+    }
+    if (i < count) {
+        const std::size_t valid = count - i;
+        finish(Method<Arch>::collide(load_last_poses64<Arch>(a, i, valid), load_last_poses64<Arch>(b, i, valid)), i,
+               valid);
+    }
+    return settled;
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records64.hpp>
+#include <obbsat/pose_soa64.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records64.hpp>
 
@@ -62,6 +63,14 @@ backend collide_stream(const pose_records64& a, const pose_records64& b, std::ui
 /// The verdicts of collide_stream over double poses, one byte (0 or 1) per pair.
 std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b,
                                          const collide_options& options);
+
+/// The same over two pose_soa64 stores, the faster store for streams (each
+/// field read as a vector, nothing transposed); verdicts are identical.
+backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* verdicts,
+                       const collide_options& options);
+
+/// The verdicts of collide_stream over pose_soa64 stores as a vector.
+std::vector<std::uint8_t> collide_stream(const pose_soa64& a, const pose_soa64& b, const collide_options& options);
 
 /// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0, for
 /// i < count; returns backend::scalar. Throws invalid_input (nothing written) as stated above.

@@ -54,12 +54,21 @@ pose_stream stream_of(std::size_t count, std::uint64_t seed) {
     const rect_pose64 extremes[] = {rect_pose64{{-1e308, 0}, {1e308, 1}, {1, 0}},
                                     rect_pose64{{1e308, 5}, {1e308, 1e308}, {0x1p600, 0x1p600}},
                                     rect_pose64{{0, 0}, {1, 1}, {0x1p-700, 0x1p-700}},
-                                    rect_pose64{{0x1p-1074, 0}, {0, 0}, {1e-320, 1}}};
+                                    rect_pose64{{0x1p-1074, 0}, {0, 0}, {1e-320, 1}},
+                                    // Rotations beyond the margin's range (|c| > 2^500, < 2^-500) whose
+                                    // gaps with finite margins would prove overlap: only the oracle may decide.
+                                    rect_pose64{{0, 0}, {0x1p-600, 0x1p-600}, {0x1p501, 0}},
+                                    rect_pose64{{0, 0}, {0x1p600, 0x1p600}, {0x1p-501, 0}},
+                                    rect_pose64{{0x1p590, 0}, {0x1p600, 0x1p600}, {0x1p-501, 0x1p-502}}};
+    constexpr std::size_t extreme_count = sizeof(extremes) / sizeof(extremes[0]);
     pose_stream s;
+    std::size_t extreme = 0;
     for (std::size_t i = 0; i < count; ++i) {
         if (i % 11 == 10) {
-            s.a.push_back(extremes[(i / 11) % 4]);
-            s.b.push_back(extremes[(i / 7) % 4]);
+            // Every ordered pair of extremes in turn, each with itself too.
+            s.a.push_back(extremes[extreme % extreme_count]);
+            s.b.push_back(extremes[(extreme / extreme_count) % extreme_count]);
+            ++extreme;
             continue;
         }
         const obbsat::test::pose_pair64 p = makes[i % 7](random);

@@ -3,6 +3,7 @@
 // references of scalar_ref/ (the *64 files) on the scalar backend; on double
 // corners always the scalar references (no lanes yet).
 #include "dispatch/double_kernel_table.hpp"
+#include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
 
 #include <obbsat/collide64.hpp>
@@ -85,21 +86,30 @@ backend require_call(std::size_t size, const pair_index* pairs, std::size_t coun
     return ran;
 }
 
-/// The backend's lanes for options.test on double poses.
-detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m) {
+/// The backend's entries for options.test on double poses but the plain pair list.
+const detail::pose64_method_kernels& pose_kernels_of(const detail::double_kernel_table& table, method m) {
     switch (m) {
-        case method::exact: return table.exact;
-        case method::conservative: return table.conservative;
-        default: return table.local;  // require_call admitted nothing else
+        case method::exact: return table.exact_kernels;
+        case method::conservative: return table.conservative_kernels;
+        default: return table.local_kernels;  // the callers admit nothing else
     }
 }
 
-/// The backend's stream lanes for options.test on double poses.
-const detail::pose64_stream_kernels& pose_streams_of(const detail::double_kernel_table& table, method m) {
+/// The backend's pair-list lanes for options.test over `count` double pose
+/// records, fetching the records ahead as the store's size asks (as the float
+/// stores choose, support/fetch_ahead.hpp: 64 bytes a record here).
+detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m, std::size_t count) {
+    const std::size_t bytes = count * sizeof(double) * pose_records64::record_doubles;
+    if (bytes > detail::store_bytes_from_dram) {
+        return pose_kernels_of(table, m).indexed_far;
+    }
+    if (bytes > detail::store_bytes_in_l2) {
+        return pose_kernels_of(table, m).indexed_fetching;
+    }
     switch (m) {
-        case method::exact: return table.exact_stream;
-        case method::conservative: return table.conservative_stream;
-        default: return table.local_stream;  // require_method_on_doubles admitted nothing else
+        case method::exact: return table.exact;
+        case method::conservative: return table.conservative;
+        default: return table.local;
     }
 }
 
@@ -175,7 +185,7 @@ backend stream_of(std::size_t a_size, std::size_t b_size, const collide_options&
     require_method_on_doubles(options, store_kind::poses);
     const backend ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
     const detail::double_kernel_table* table = detail::double_kernels_for(ran);
-    const detail::pose64_stream_kernels* lanes = table != nullptr ? &pose_streams_of(*table, options.test) : nullptr;
+    const detail::pose64_method_kernels* lanes = table != nullptr ? &pose_kernels_of(*table, options.test) : nullptr;
     run_parts_of(a_size, options,
                  [&](std::size_t begin, std::size_t end) { return run_part(lanes, begin, end - begin); });
     return table != nullptr ? ran : backend::scalar;
@@ -187,7 +197,7 @@ backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std:
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = require_call(poses.size(), pairs, count, verdicts, options, store_kind::poses);
     if (const detail::double_kernel_table* table = detail::double_kernels_for(ran)) {
-        run_lanes(pose_kernel_of(*table, options.test), poses, pairs, count, verdicts, options);
+        run_lanes(pose_kernel_of(*table, options.test, poses.size()), poses, pairs, count, verdicts, options);
         return ran;
     }
     using pose64 = rect_pose64;
@@ -221,10 +231,10 @@ backend collide_stream(const pose_records64& a, const pose_records64& b, std::ui
     const double* ra = a.data();
     const double* rb = b.data();
     return stream_of(a.size(), b.size(), options,
-                     [&](const detail::pose64_stream_kernels* lanes, std::size_t begin, std::size_t n) {
+                     [&](const detail::pose64_method_kernels* lanes, std::size_t begin, std::size_t n) {
                          const double* pa = ra + stride * begin;
                          const double* pb = rb + stride * begin;
-                         return lanes != nullptr ? lanes->records(pa, pb, n, verdicts + begin)
+                         return lanes != nullptr ? lanes->stream(pa, pb, n, verdicts + begin)
                                                  : detail::scalar_pose64_stream(options.test, pa, pb, n, verdicts + begin);
                      });
 }
@@ -241,10 +251,10 @@ backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* v
     const detail::pose_soa64_view va = detail::view_of(a);
     const detail::pose_soa64_view vb = detail::view_of(b);
     return stream_of(a.size(), b.size(), options,
-                     [&](const detail::pose64_stream_kernels* lanes, std::size_t begin, std::size_t n) {
+                     [&](const detail::pose64_method_kernels* lanes, std::size_t begin, std::size_t n) {
                          const detail::pose_soa64_view pa = detail::shifted(va, begin);
                          const detail::pose_soa64_view pb = detail::shifted(vb, begin);
-                         return lanes != nullptr ? lanes->soa(pa, pb, n, verdicts + begin)
+                         return lanes != nullptr ? lanes->stream_soa(pa, pb, n, verdicts + begin)
                                                  : detail::scalar_pose64_stream_soa(options.test, pa, pb, n, verdicts + begin);
                      });
 }

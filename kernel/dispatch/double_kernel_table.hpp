@@ -32,20 +32,27 @@ using pose64_stream_fn = std::size_t (*)(const double* a, const double* b, std::
 using pose64_stream_soa_fn = std::size_t (*)(const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
                                              std::uint8_t* verdicts);
 
-/// The stream entry points of one method on double poses: over records and over arrays.
-struct pose64_stream_kernels {
-    pose64_stream_fn records;
-    pose64_stream_soa_fn soa;
+/// The entry points of one method on double poses besides the pair list that
+/// fetches nothing ahead: pair lists fetching the records of pairs ahead
+/// (support/fetch_ahead.hpp), and streams over records and over arrays.
+struct pose64_method_kernels {
+    pose64_indexed_fn indexed_fetching;  ///< 16 pairs ahead into L1: a store beyond L2, within L3
+    pose64_indexed_fn indexed_far;       ///< 128 pairs ahead into L2: a store read from DRAM
+    pose64_stream_fn stream;
+    pose64_stream_soa_fn stream_soa;
 };
 
-/// The entry points of one backend on double poses, one per method that runs there.
+/// The entry points of one backend on double poses, per method that runs there:
+/// `exact`, `conservative` and `local` decide pair lists fetching nothing ahead
+/// (records the caches hold: the scene query's rows, a store within L2); the
+/// *_kernels rows the rest.
 struct double_kernel_table {
     pose64_indexed_fn exact;
     pose64_indexed_fn conservative;
     pose64_indexed_fn local;
-    pose64_stream_kernels exact_stream;
-    pose64_stream_kernels conservative_stream;
-    pose64_stream_kernels local_stream;
+    pose64_method_kernels exact_kernels;
+    pose64_method_kernels conservative_kernels;
+    pose64_method_kernels local_kernels;
 };
 
 /// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in

@@ -91,10 +91,12 @@ constexpr pose_method_kernels pose_kernels_of_row() {
     return k;
 }
 
-/// The stream entry points of one method on double poses, instantiated for this ISA.
+/// The entry points of one method on double poses but its plain pair list, instantiated for this ISA.
 template <template <class> class Method>
-constexpr pose64_stream_kernels pose64_streams_of() {
-    return pose64_stream_kernels{pose64_stream_batch<isa_arch, Method>, pose64_stream_soa_batch<isa_arch, Method>};
+constexpr pose64_method_kernels pose64_kernels_of() {
+    return pose64_method_kernels{pose64_indexed_batch<isa_arch, Method, pair_fetch::into_l1>,
+                                 pose64_indexed_batch<isa_arch, Method, pair_fetch::into_l2>,
+                                 pose64_stream_batch<isa_arch, Method>, pose64_stream_soa_batch<isa_arch, Method>};
 }
 
 template <class... Rows>
@@ -129,8 +131,8 @@ const double_kernel_table& double_kernels_of<this_backend>() {
         pose64_indexed_batch<isa_arch, pose_exact64_lanes, pair_fetch::none>,
         pose64_indexed_batch<isa_arch, pose_conservative64_lanes, pair_fetch::none>,
         pose64_indexed_batch<isa_arch, local64_lanes, pair_fetch::none>,
-        pose64_streams_of<pose_exact64_lanes>(), pose64_streams_of<pose_conservative64_lanes>(),
-        pose64_streams_of<local64_lanes>()};
+        pose64_kernels_of<pose_exact64_lanes>(), pose64_kernels_of<pose_conservative64_lanes>(),
+        pose64_kernels_of<local64_lanes>()};
     return table;
 }
 

@@ -222,6 +222,38 @@ TEST_P(double_streams, gathered_records_on_lists_of_every_length) {
     }
 }
 
+/// Stores beyond L2 (2.5 MiB of records) and beyond the L3 share (13 MiB),
+/// whose pair lists fetch the records of pairs ahead: verdicts unchanged,
+/// on lists long enough to fetch and with a partial last vector, whose
+/// fetches must stop at the list's end.
+TEST_P(double_streams, gathered_records_fetched_ahead_from_large_stores) {
+    for (const std::size_t size : {std::size_t{40000}, std::size_t{210000}}) {
+        const pose_stream s = stream_of(size / 2, 31);
+        std::vector<rect_pose64> poses = s.a;
+        poses.insert(poses.end(), s.b.begin(), s.b.end());
+        const obbsat::pose_records64 store(poses);
+        obbsat::seeded_random random(37);
+        std::vector<pair_index> pairs;
+        for (std::size_t i = 0; i < 4001; ++i) {
+            const auto k = static_cast<std::uint32_t>(random.below(s.a.size()));
+            // Half the pairs across the store at random, half the families' pairs.
+            pairs.push_back(i % 2 == 0 ? pair_index{k, static_cast<std::uint32_t>(s.a.size()) + k}
+                                       : pair_index{k, static_cast<std::uint32_t>(random.below(poses.size()))});
+        }
+        pairs.back() = pair_index{static_cast<std::uint32_t>(poses.size() - 1), 0};
+        for (const method m : obbsat::methods_on_doubles(obbsat::store_kind::poses)) {
+            std::vector<std::uint8_t> verdicts(pairs.size() + 1, 9);
+            obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(),
+                                  options_of(m, GetParam(), 1, nullptr));
+            for (std::size_t i = 0; i < pairs.size(); ++i) {
+                ASSERT_EQ(verdicts[i], reference(m, poses[pairs[i].a], poses[pairs[i].b]) ? 1 : 0)
+                    << obbsat::method_name(m) << ", store of " << size << ", pair " << i;
+            }
+            EXPECT_EQ(verdicts[pairs.size()], 9);
+        }
+    }
+}
+
 std::vector<backend> compiled() { return obbsat::compiled_backends(); }
 
 INSTANTIATE_TEST_SUITE_P(every_backend, double_streams, ::testing::ValuesIn(compiled()),

@@ -44,6 +44,17 @@ struct pose64_record_transpose {
     using batch = lanes64<Arch>;
     static constexpr std::size_t width = batch::size;
 
+    /// The six fields, `pair_at(offset, x, y)` setting x and y to the fields at
+    /// `offset` and `offset + 1` of every lane's record.
+    template <class PairAt>
+    static OBBSAT_LANE_INLINE pose64_lanes<Arch> by_field_pairs(const PairAt& pair_at) {
+        pose64_lanes<Arch> p;
+        pair_at(0, p.cx, p.cy);
+        pair_at(2, p.hx, p.hy);
+        pair_at(4, p.c, p.s);
+        return p;
+    }
+
     /// The poses of records pick(0) .. pick(width - 1) (each a const double*
     /// to a 64-byte record), lane i from pick(i).
     template <class Pick>
@@ -82,32 +93,22 @@ struct pose64_record_transpose {
         } else if constexpr (width == 4) {
 #ifdef __AVX__
             // Per pair of fields at `offset`: blocks of records (0, 2) and (1, 3).
-            auto pair_at = [&](std::size_t offset, batch& x, batch& y) __attribute__((always_inline)) {
+            return by_field_pairs([&](std::size_t offset, batch& x, batch& y) __attribute__((always_inline)) {
                 const __m256d even = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(pick(0) + offset)),
                                                           _mm_loadu_pd(pick(2) + offset), 1);
                 const __m256d odd = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(pick(1) + offset)),
                                                          _mm_loadu_pd(pick(3) + offset), 1);
                 x = _mm256_unpacklo_pd(even, odd);
                 y = _mm256_unpackhi_pd(even, odd);
-            };
-            pose64_lanes<Arch> p;
-            pair_at(0, p.cx, p.cy);
-            pair_at(2, p.hx, p.hy);
-            pair_at(4, p.c, p.s);
-            return p;
+            });
 #endif
         } else {
-            auto pair_at = [&](std::size_t offset, batch& x, batch& y) __attribute__((always_inline)) {
+            return by_field_pairs([&](std::size_t offset, batch& x, batch& y) __attribute__((always_inline)) {
                 const __m128d first = _mm_loadu_pd(pick(0) + offset);
                 const __m128d second = _mm_loadu_pd(pick(1) + offset);
                 x = _mm_unpacklo_pd(first, second);
                 y = _mm_unpackhi_pd(first, second);
-            };
-            pose64_lanes<Arch> p;
-            pair_at(0, p.cx, p.cy);
-            pair_at(2, p.hx, p.hy);
-            pair_at(4, p.c, p.s);
-            return p;
+            });
         }
     }
 };

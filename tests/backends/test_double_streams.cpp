@@ -8,13 +8,12 @@
 //   registers, on pair lists of every length up to three vectors, with indices
 //   repeated within a vector and the last record of the store in every lane.
 #include "test_support/pose_cases64.hpp"
+#include "test_support/pose_references64.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide64.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/pose_soa64.hpp>
-#include <obbsat/ref/local64.hpp>
-#include <obbsat/ref/pose_conservative64.hpp>
 #include <obbsat/ref/pose_exact64.hpp>
 
 #include <gtest/gtest.h>
@@ -30,13 +29,7 @@ using obbsat::method;
 using obbsat::pair_index;
 using obbsat::rect_pose64;
 
-bool reference(method m, const rect_pose64& a, const rect_pose64& b) {
-    switch (m) {
-        case method::exact: return obbsat::ref::exact(a, b);
-        case method::conservative: return obbsat::ref::conservative(a, b);
-        default: return obbsat::ref::local(a, b);
-    }
-}
+using obbsat::test::reference64;
 
 /// Pairs a[i], b[i] drawn in turn from the double families (contacts, so that
 /// the exact slow path runs in the lanes, slivers, far and scaled poses), then
@@ -104,7 +97,7 @@ protected:
         std::vector<std::uint8_t> expected(n);
         std::size_t expected_slow = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            expected[i] = reference(m, s.a[i], s.b[i]) ? 1 : 0;
+            expected[i] = reference64(m, s.a[i], s.b[i]) ? 1 : 0;
             if (m == method::exact) {
                 const obbsat::ref::certified_verdict fast = obbsat::ref::certify(s.a[i], s.b[i]);
                 expected_slow += !fast.separated && !fast.intersecting ? 1 : 0;
@@ -214,7 +207,7 @@ TEST_P(double_streams, gathered_records_on_lists_of_every_length) {
                                             options_of(m, GetParam(), 1, nullptr)),
                       GetParam());
             for (std::size_t i = 0; i < count; ++i) {
-                ASSERT_EQ(verdicts[i], reference(m, poses[pairs[i].a], poses[pairs[i].b]) ? 1 : 0)
+                ASSERT_EQ(verdicts[i], reference64(m, poses[pairs[i].a], poses[pairs[i].b]) ? 1 : 0)
                     << obbsat::method_name(m) << ", " << count << " pairs, pair " << i;
             }
             EXPECT_EQ(verdicts[count], 9) << count << " pairs: written past the list";
@@ -246,7 +239,7 @@ TEST_P(double_streams, gathered_records_fetched_ahead_from_large_stores) {
             obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(),
                                   options_of(m, GetParam(), 1, nullptr));
             for (std::size_t i = 0; i < pairs.size(); ++i) {
-                ASSERT_EQ(verdicts[i], reference(m, poses[pairs[i].a], poses[pairs[i].b]) ? 1 : 0)
+                ASSERT_EQ(verdicts[i], reference64(m, poses[pairs[i].a], poses[pairs[i].b]) ? 1 : 0)
                     << obbsat::method_name(m) << ", store of " << size << ", pair " << i;
             }
             EXPECT_EQ(verdicts[pairs.size()], 9);

@@ -1,4 +1,4 @@
-// Pair lists over the double stores, split over threads: on double poses the
+// Pair lists and streams over the double stores, split over threads: on double poses the
 // backend's double lanes (dispatch/double_kernel_table.hpp), or the scalar
 // references of scalar_ref/ (the *64 files) on the scalar backend; on double
 // corners always the scalar references (no lanes yet).
@@ -191,6 +191,14 @@ backend stream_of(std::size_t a_size, std::size_t b_size, const collide_options&
     return table != nullptr ? ran : backend::scalar;
 }
 
+/// The verdicts of collide_stream over two stores of one kind, as a vector.
+template <class Store>
+std::vector<std::uint8_t> stream_verdicts_of(const Store& a, const Store& b, const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
+}
+
 }  // namespace
 
 backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
@@ -239,11 +247,8 @@ backend collide_stream(const pose_records64& a, const pose_records64& b, std::ui
                      });
 }
 
-std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b,
-                                         const collide_options& options) {
-    std::vector<std::uint8_t> verdicts(a.size());
-    collide_stream(a, b, verdicts.data(), options);
-    return verdicts;
+std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b, const collide_options& options) {
+    return stream_verdicts_of(a, b, options);
 }
 
 backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* verdicts,
@@ -260,9 +265,7 @@ backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* v
 }
 
 std::vector<std::uint8_t> collide_stream(const pose_soa64& a, const pose_soa64& b, const collide_options& options) {
-    std::vector<std::uint8_t> verdicts(a.size());
-    collide_stream(a, b, verdicts.data(), options);
-    return verdicts;
+    return stream_verdicts_of(a, b, options);
 }
 
 backend collide_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,

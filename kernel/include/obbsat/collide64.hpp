@@ -1,6 +1,7 @@
-// Batch collision queries over the double stores (pose_records64,
+// Batch collision queries over the double stores (pose_records64, pose_soa64,
 // rect_records64): which pairs of rectangles, every double taken exactly,
-// collide.
+// collide, as pair lists (collide_pairs) and, on double poses, as streams
+// (collide_stream: a[i] against b[i]).
 //
 // The methods that run on doubles are those with a double reference in
 // scalar_ref/: on double poses local, conservative and exact

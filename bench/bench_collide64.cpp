@@ -70,7 +70,7 @@ double_workload& double_workload_of() {
             corners.push_back(corners_of(q));
         }
         built.reset(new double_workload{obbsat::pose_records64(wide), obbsat::rect_records64(corners),
-                                        &w.sorted_pairs(), {}, {}});
+                                        &w.sorted_pairs(), {}, {}, {}, {}});
         const std::vector<obbsat::pair_index>& first = w.sorted_pairs();
         for (std::size_t i = 0; i < double_stream_pairs; ++i) {
             built->stream_a.push_back(wide[first[i].a]);

@@ -7,15 +7,17 @@
 // The float rows collide/<method>/indexed_sorted/.../poses are the same pairs
 // in float32.
 //
-// collide64/<method>/pose_stream/<backend>/pairs:4096/threads:1: a stream of
-// 4096 pairs a[i], b[i] (the first pairs of the list above), as the double
-// stores have it: one pose_records64 holding a then b, and the pairs
-// (i, 4096 + i). The float rows of the same size are collide/.../stream/...
+// collide64/<method>/pose_stream/<backend>/pairs:4096/threads:1: collide_stream
+// over two pose_soa64, a[i] against b[i], 4096 pairs (the first pairs of the
+// list above); collide64/<method>/pose_stream_records/...: the same over two
+// pose_records64. The float rows of the same size are
+// collide/<method>/stream/.../store:poses (pose_soa) and .../store:poses/records.
 #include "bench_registry.hpp"
 #include "bench_workload.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide64.hpp>
+#include <obbsat/pose_soa64.hpp>
 #include <obbsat/ref/conservative64.hpp>
 #include <obbsat/ref/exact64.hpp>
 #include <obbsat/ref/local64.hpp>
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace obbsat_bench {
@@ -39,8 +42,8 @@ struct double_workload {
     obbsat::pose_records64 poses;
     obbsat::rect_records64 corners;
     const std::vector<obbsat::pair_index>* pairs;
-    obbsat::pose_records64 stream;  ///< a[0..4096) then b[0..4096)
-    std::vector<obbsat::pair_index> stream_pairs;  ///< (i, 4096 + i)
+    obbsat::pose_records64 stream_a, stream_b;  ///< the poses of the first 4096 sorted pairs
+    obbsat::pose_soa64 soa_a, soa_b;             ///< the same poses as arrays
 };
 
 obbsat::rect64 corners_of(const obbsat::rect_pose64& p) {
@@ -67,17 +70,14 @@ double_workload& double_workload_of() {
             corners.push_back(corners_of(q));
         }
         built.reset(new double_workload{obbsat::pose_records64(wide), obbsat::rect_records64(corners),
-                                        &w.sorted_pairs(), {}, {}});
+                                        &w.sorted_pairs(), {}, {}, {}, {}});
         const std::vector<obbsat::pair_index>& first = w.sorted_pairs();
-        for (std::size_t side = 0; side < 2; ++side) {
-            for (std::size_t i = 0; i < double_stream_pairs; ++i) {
-                built->stream.push_back(wide[side == 0 ? first[i].a : first[i].b]);
-            }
-        }
         for (std::size_t i = 0; i < double_stream_pairs; ++i) {
-            built->stream_pairs.push_back(
-                {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(double_stream_pairs + i)});
+            built->stream_a.push_back(wide[first[i].a]);
+            built->stream_b.push_back(wide[first[i].b]);
         }
+        built->soa_a = obbsat::pose_soa64(built->stream_a);
+        built->soa_b = obbsat::pose_soa64(built->stream_b);
     }
     return *built;
 }
@@ -94,29 +94,54 @@ bool reference(obbsat::method m, const obbsat::rect64& a, const obbsat::rect64& 
     return m == obbsat::method::exact ? obbsat::ref::exact(a, b) : obbsat::ref::conservative(a, b);
 }
 
-template <class Store>
-void run_case(benchmark::State& state, const Store& store, const std::vector<obbsat::pair_index>& pairs,
-              obbsat::method m, obbsat::backend use, unsigned threads) {
+/// Times `run(verdicts, options)` deciding `count` pairs, pair_at(i) giving pair
+/// i's two rectangles, after checking its verdicts against the references.
+template <class Run, class PairAt>
+void time_case(benchmark::State& state, std::size_t count, obbsat::method m, obbsat::backend use, unsigned threads,
+               const Run& run, const PairAt& pair_at) {
     obbsat::collide_options options;
     options.test = m;
     options.use = use;
     options.threads = threads;
     std::size_t slow = 0;
     options.slow_path_pairs = &slow;
-    std::vector<std::uint8_t> verdicts(pairs.size());
-    obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), options);
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-        if (verdicts[i] != (reference(m, store[pairs[i].a], store[pairs[i].b]) ? 1 : 0)) {
+    std::vector<std::uint8_t> verdicts(count);
+    run(verdicts.data(), options);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto [a, b] = pair_at(i);
+        if (verdicts[i] != (reference(m, a, b) ? 1 : 0)) {
             state.SkipWithError(("pair " + std::to_string(i) + " differs from the double reference").c_str());
             return;
         }
     }
     for (auto _ : state) {
-        obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), options);
+        run(verdicts.data(), options);
         benchmark::DoNotOptimize(verdicts.data());
     }
-    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(pairs.size()));
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(count));
+    set_pair_rate_counters(state, count);
     state.counters["slow_path_pairs"] = static_cast<double>(slow);
+}
+
+template <class Store>
+void run_case(benchmark::State& state, const Store& store, const std::vector<obbsat::pair_index>& pairs,
+              obbsat::method m, obbsat::backend use, unsigned threads) {
+    time_case(
+        state, pairs.size(), m, use, threads,
+        [&](std::uint8_t* verdicts, const obbsat::collide_options& options) {
+            obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts, options);
+        },
+        [&](std::size_t i) { return std::make_pair(store[pairs[i].a], store[pairs[i].b]); });
+}
+
+template <class Store>
+void run_stream(benchmark::State& state, const Store& a, const Store& b, obbsat::method m, obbsat::backend use) {
+    time_case(
+        state, a.size(), m, use, 1,
+        [&](std::uint8_t* verdicts, const obbsat::collide_options& options) {
+            obbsat::collide_stream(a, b, verdicts, options);
+        },
+        [&](std::size_t i) { return std::make_pair(a[i], b[i]); });
 }
 
 }  // namespace
@@ -147,13 +172,21 @@ void register_collide64_benchmarks() {
                 if (threads != 1) {
                     continue;  // 4096 pairs take one core
                 }
-                const std::string name = std::string("collide64/") + obbsat::method_name(m) + "/pose_stream/" +
-                                         obbsat::backend_name(use) + "/pairs:" +
-                                         std::to_string(double_stream_pairs) + "/threads:1";
-                benchmark::RegisterBenchmark(name.c_str(),
+                const auto name = [&](const char* stream) {
+                    return std::string("collide64/") + obbsat::method_name(m) + "/" + stream + "/" +
+                           obbsat::backend_name(use) + "/pairs:" + std::to_string(double_stream_pairs) + "/threads:1";
+                };
+                benchmark::RegisterBenchmark(name("pose_stream").c_str(),
                                              [m, use](benchmark::State& state) {
                                                  double_workload& w = double_workload_of();
-                                                 run_case(state, w.stream, w.stream_pairs, m, use, 1);
+                                                 run_stream(state, w.soa_a, w.soa_b, m, use);
+                                             })
+                    ->UseRealTime()
+                    ->Unit(benchmark::kMicrosecond);
+                benchmark::RegisterBenchmark(name("pose_stream_records").c_str(),
+                                             [m, use](benchmark::State& state) {
+                                                 double_workload& w = double_workload_of();
+                                                 run_stream(state, w.stream_a, w.stream_b, m, use);
                                              })
                     ->UseRealTime()
                     ->Unit(benchmark::kMicrosecond);

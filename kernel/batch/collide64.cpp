@@ -1,8 +1,9 @@
-// Pair lists over the double stores, split over threads: on double poses the
+// Pair lists and streams over the double stores, split over threads: on double poses the
 // backend's double lanes (dispatch/double_kernel_table.hpp), or the scalar
 // references of scalar_ref/ (the *64 files) on the scalar backend; on double
 // corners always the scalar references (no lanes yet).
 #include "dispatch/double_kernel_table.hpp"
+#include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
 
 #include <obbsat/collide64.hpp>
@@ -85,12 +86,30 @@ backend require_call(std::size_t size, const pair_index* pairs, std::size_t coun
     return ran;
 }
 
-/// The backend's lanes for options.test on double poses.
-detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m) {
+/// The backend's entries for options.test on double poses but the plain pair list.
+const detail::pose64_method_kernels& pose_kernels_of(const detail::double_kernel_table& table, method m) {
+    switch (m) {
+        case method::exact: return table.exact_kernels;
+        case method::conservative: return table.conservative_kernels;
+        default: return table.local_kernels;  // the callers admit nothing else
+    }
+}
+
+/// The backend's pair-list lanes for options.test over `count` double pose
+/// records, fetching the records ahead as the store's size asks (as the float
+/// stores choose, support/fetch_ahead.hpp: 64 bytes a record here).
+detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m, std::size_t count) {
+    const std::size_t bytes = count * sizeof(double) * pose_records64::record_doubles;
+    if (bytes > detail::store_bytes_from_dram) {
+        return pose_kernels_of(table, m).indexed_far;
+    }
+    if (bytes > detail::store_bytes_in_l2) {
+        return pose_kernels_of(table, m).indexed_fetching;
+    }
     switch (m) {
         case method::exact: return table.exact;
         case method::conservative: return table.conservative;
-        default: return table.local;  // require_call admitted nothing else
+        default: return table.local;
     }
 }
 
@@ -132,16 +151,52 @@ void decide_pairs(const Store& store, const pair_index* pairs, std::size_t count
     report_settled(settled, options);
 }
 
-/// verdicts over [0, count) by a backend's lanes, split over threads.
-void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
-               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+/// verdicts over [0, count) by `run_part(begin, end)` (returning the pairs
+/// its slow path settled), split over threads.
+template <class RunPart>
+void run_parts_of(std::size_t count, const collide_options& options, const RunPart& run_part) {
     const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
     std::vector<std::size_t> settled(parts, 0);
     detail::run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = detail::share_of(count, part, parts);
-        settled[part] = kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+        settled[part] = run_part(begin, end);
     });
     report_settled(settled, options);
+}
+
+/// verdicts over [0, count) by a backend's lanes, split over threads.
+void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
+               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+    run_parts_of(count, options, [&](std::size_t begin, std::size_t end) {
+        return kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+    });
+}
+
+/// A stream of a_size pairs a[i], b[i] on double poses: the checks of the float
+/// streams, then `run_part(lanes, begin, n)` over the parts of the batch, with
+/// the backend's stream lanes for options.test, or nullptr for the scalar
+/// references; returns the backend that ran.
+template <class RunPart>
+backend stream_of(std::size_t a_size, std::size_t b_size, const collide_options& options, const RunPart& run_part) {
+    if (a_size != b_size) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a_size) + " poses in A, " +
+                            std::to_string(b_size) + " in B");
+    }
+    require_method_on_doubles(options, store_kind::poses);
+    const backend ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
+    const detail::double_kernel_table* table = detail::double_kernels_for(ran);
+    const detail::pose64_method_kernels* lanes = table != nullptr ? &pose_kernels_of(*table, options.test) : nullptr;
+    run_parts_of(a_size, options,
+                 [&](std::size_t begin, std::size_t end) { return run_part(lanes, begin, end - begin); });
+    return table != nullptr ? ran : backend::scalar;
+}
+
+/// The verdicts of collide_stream over two stores of one kind, as a vector.
+template <class Store>
+std::vector<std::uint8_t> stream_verdicts_of(const Store& a, const Store& b, const collide_options& options) {
+    std::vector<std::uint8_t> verdicts(a.size());
+    collide_stream(a, b, verdicts.data(), options);
+    return verdicts;
 }
 
 }  // namespace
@@ -150,7 +205,7 @@ backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std:
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = require_call(poses.size(), pairs, count, verdicts, options, store_kind::poses);
     if (const detail::double_kernel_table* table = detail::double_kernels_for(ran)) {
-        run_lanes(pose_kernel_of(*table, options.test), poses, pairs, count, verdicts, options);
+        run_lanes(pose_kernel_of(*table, options.test, poses.size()), poses, pairs, count, verdicts, options);
         return ran;
     }
     using pose64 = rect_pose64;
@@ -176,6 +231,41 @@ std::vector<std::uint8_t> collide_pairs(const pose_records64& poses, const std::
     std::vector<std::uint8_t> verdicts(pairs.size());
     collide_pairs(poses, pairs.data(), pairs.size(), verdicts.data(), options);
     return verdicts;
+}
+
+backend collide_stream(const pose_records64& a, const pose_records64& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    constexpr std::size_t stride = pose_records64::record_doubles;
+    const double* ra = a.data();
+    const double* rb = b.data();
+    return stream_of(a.size(), b.size(), options,
+                     [&](const detail::pose64_method_kernels* lanes, std::size_t begin, std::size_t n) {
+                         const double* pa = ra + stride * begin;
+                         const double* pb = rb + stride * begin;
+                         return lanes != nullptr ? lanes->stream(pa, pb, n, verdicts + begin)
+                                                 : detail::scalar_pose64_stream(options.test, pa, pb, n, verdicts + begin);
+                     });
+}
+
+std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b, const collide_options& options) {
+    return stream_verdicts_of(a, b, options);
+}
+
+backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* verdicts,
+                       const collide_options& options) {
+    const detail::pose_soa64_view va = detail::view_of(a);
+    const detail::pose_soa64_view vb = detail::view_of(b);
+    return stream_of(a.size(), b.size(), options,
+                     [&](const detail::pose64_method_kernels* lanes, std::size_t begin, std::size_t n) {
+                         const detail::pose_soa64_view pa = detail::shifted(va, begin);
+                         const detail::pose_soa64_view pb = detail::shifted(vb, begin);
+                         return lanes != nullptr ? lanes->stream_soa(pa, pb, n, verdicts + begin)
+                                                 : detail::scalar_pose64_stream_soa(options.test, pa, pb, n, verdicts + begin);
+                     });
+}
+
+std::vector<std::uint8_t> collide_stream(const pose_soa64& a, const pose_soa64& b, const collide_options& options) {
+    return stream_verdicts_of(a, b, options);
 }
 
 backend collide_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,

@@ -5,6 +5,8 @@
 // yet: they run on the scalar references. Internal to the library.
 #pragma once
 
+#include "dispatch/pose_soa64_view.hpp"
+
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
@@ -20,11 +22,37 @@ namespace obbsat::detail {
 using pose64_indexed_fn = std::size_t (*)(const double* records, const pair_index* pairs, std::size_t count,
                                           std::uint8_t* verdicts);
 
-/// The entry points of one backend on double poses, one per method that runs there.
+/// verdicts[i] = the method's verdict on a[i] and b[i] (pose_records64 records) for
+/// i < count; returns how many pairs the exact slow path settled (0 but for exact).
+using pose64_stream_fn = std::size_t (*)(const double* a, const double* b, std::size_t count,
+                                         std::uint8_t* verdicts);
+
+/// verdicts[i] = the method's verdict on a[i] and b[i] (two pose_soa64 views) for
+/// i < count; returns how many pairs the exact slow path settled.
+using pose64_stream_soa_fn = std::size_t (*)(const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                             std::uint8_t* verdicts);
+
+/// The entry points of one method on double poses besides the pair list that
+/// fetches nothing ahead: pair lists fetching the records of pairs ahead
+/// (support/fetch_ahead.hpp), and streams over records and over arrays.
+struct pose64_method_kernels {
+    pose64_indexed_fn indexed_fetching;  ///< 16 pairs ahead into L1: a store beyond L2, within L3
+    pose64_indexed_fn indexed_far;       ///< 128 pairs ahead into L2: a store read from DRAM
+    pose64_stream_fn stream;
+    pose64_stream_soa_fn stream_soa;
+};
+
+/// The entry points of one backend on double poses, per method that runs there:
+/// `exact`, `conservative` and `local` decide pair lists fetching nothing ahead
+/// (records the caches hold: the scene query's rows, a store within L2); the
+/// *_kernels rows the rest.
 struct double_kernel_table {
     pose64_indexed_fn exact;
     pose64_indexed_fn conservative;
     pose64_indexed_fn local;
+    pose64_method_kernels exact_kernels;
+    pose64_method_kernels conservative_kernels;
+    pose64_method_kernels local_kernels;
 };
 
 /// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in
@@ -36,6 +64,15 @@ const double_kernel_table& double_kernels_of();
 /// records, as a pose64_indexed_fn: exact through the certified path, else the oracle.
 std::size_t scalar_pose64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts);
+
+/// The scalar references of `m` over two pose_records64 record arrays, a[i]
+/// against b[i], as a pose64_stream_fn.
+std::size_t scalar_pose64_stream(method m, const double* a, const double* b, std::size_t count,
+                                 std::uint8_t* verdicts);
+
+/// The same over two pose_soa64 views, as a pose64_stream_soa_fn.
+std::size_t scalar_pose64_stream_soa(method m, const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                     std::uint8_t* verdicts);
 
 /// The scalar references of `m` (exact or conservative) over rect64 rows (8 doubles each).
 std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,

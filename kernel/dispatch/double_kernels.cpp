@@ -8,6 +8,8 @@
 #include <obbsat/ref/local64.hpp>
 #include <obbsat/ref/pose_conservative64.hpp>
 
+#include <utility>
+
 namespace obbsat::detail {
 
 namespace {
@@ -33,13 +35,12 @@ bool exact_settled(const Item& a, const Item& b, std::size_t& settled) {
     return oracle::intersects(a, b);
 }
 
-template <class At>
-std::size_t decide_all(method m, const double* records, const pair_index* pairs, std::size_t count,
-                       std::uint8_t* verdicts, const At& at) {
+/// verdicts[i] of `m` on the two poses pair_at(i) gives, for i < count.
+template <class PairAt>
+std::size_t decide_all(method m, std::size_t count, std::uint8_t* verdicts, const PairAt& pair_at) {
     std::size_t settled = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const auto a = at(records, pairs[i].a);
-        const auto b = at(records, pairs[i].b);
+        const auto [a, b] = pair_at(i);
         bool v = false;
         switch (m) {
             case method::exact: v = exact_settled(a, b, settled); break;
@@ -51,11 +52,25 @@ std::size_t decide_all(method m, const double* records, const pair_index* pairs,
     return settled;
 }
 
+using pose64_pair = std::pair<rect_pose64, rect_pose64>;
+
 }  // namespace
 
 std::size_t scalar_pose64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,
                                   std::uint8_t* verdicts) {
-    return decide_all(m, records, pairs, count, verdicts, pose_at);
+    return decide_all(m, count, verdicts, [&](std::size_t i) {
+        return pose64_pair{pose_at(records, pairs[i].a), pose_at(records, pairs[i].b)};
+    });
+}
+
+std::size_t scalar_pose64_stream(method m, const double* a, const double* b, std::size_t count,
+                                 std::uint8_t* verdicts) {
+    return decide_all(m, count, verdicts, [&](std::size_t i) { return pose64_pair{pose_at(a, i), pose_at(b, i)}; });
+}
+
+std::size_t scalar_pose64_stream_soa(method m, const pose_soa64_view& a, const pose_soa64_view& b, std::size_t count,
+                                     std::uint8_t* verdicts) {
+    return decide_all(m, count, verdicts, [&](std::size_t i) { return pose64_pair{pose64_at(a, i), pose64_at(b, i)}; });
 }
 
 std::size_t scalar_rect64_indexed(method m, const double* records, const pair_index* pairs, std::size_t count,

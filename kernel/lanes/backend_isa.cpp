@@ -18,7 +18,7 @@
 #include "lanes/pose_batch.hpp"
 #include "lanes/pose_corner_lanes.hpp"
 #include "lanes/pose_lanes.hpp"
-#include "lanes/pose64_lanes.hpp"
+#include "lanes/pose64_batch.hpp"
 #include "lanes/sat4_centered_lanes.hpp"
 #include "lanes/sat4_double_lanes.hpp"
 #include "lanes/sat4_lanes.hpp"
@@ -91,6 +91,14 @@ constexpr pose_method_kernels pose_kernels_of_row() {
     return k;
 }
 
+/// The entry points of one method on double poses but its plain pair list, instantiated for this ISA.
+template <template <class> class Method>
+constexpr pose64_method_kernels pose64_kernels_of() {
+    return pose64_method_kernels{pose64_indexed_batch<isa_arch, Method, pair_fetch::into_l1>,
+                                 pose64_indexed_batch<isa_arch, Method, pair_fetch::into_l2>,
+                                 pose64_stream_batch<isa_arch, Method>, pose64_stream_soa_batch<isa_arch, Method>};
+}
+
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
     kernel_table t{};
@@ -119,9 +127,12 @@ const kernel_table& kernels_of<this_backend>() {
 // instantiate the same xsimd templates for the same architecture (README.md).
 template <>
 const double_kernel_table& double_kernels_of<this_backend>() {
-    static constexpr double_kernel_table table{pose64_indexed_batch<isa_arch, pose_exact64_lanes>,
-                                               pose64_indexed_batch<isa_arch, pose_conservative64_lanes>,
-                                               pose64_indexed_batch<isa_arch, local64_lanes>};
+    static constexpr double_kernel_table table{
+        pose64_indexed_batch<isa_arch, pose_exact64_lanes, pair_fetch::none>,
+        pose64_indexed_batch<isa_arch, pose_conservative64_lanes, pair_fetch::none>,
+        pose64_indexed_batch<isa_arch, local64_lanes, pair_fetch::none>,
+        pose64_kernels_of<pose_exact64_lanes>(), pose64_kernels_of<pose_conservative64_lanes>(),
+        pose64_kernels_of<local64_lanes>()};
     return table;
 }
 

@@ -5,48 +5,14 @@
 // state them), so verdicts are bit for bit the references'.
 #pragma once
 
-#include "lanes/lanes.hpp"
+#include "lanes/pose64_record_transpose.hpp"
 
 #include <obbsat/oracle/pose_contact64.hpp>
 #include <obbsat/pose_records64.hpp>
 #include <obbsat/rect_pose64.hpp>
 
-#include <limits>
-
 namespace obbsat::detail {
 namespace {
-
-template <class Arch>
-using lanes64 = xsimd::batch<double, Arch>;
-
-template <class Arch>
-using lane_mask64 = xsimd::batch_bool<double, Arch>;
-
-/// One double pose per lane.
-template <class Arch>
-struct pose64_lanes {
-    lanes64<Arch> cx, cy, hx, hy, c, s;
-};
-
-/// One vector of poses gathered lane by lane from pose_records64 records.
-template <class Arch>
-struct staged_poses64 {
-    static constexpr std::size_t width = lanes64<Arch>::size;
-    alignas(64) double values[6][width];
-
-    void put(std::size_t lane, const double* record) {
-        for (unsigned f = 0; f < 6; ++f) {
-            values[f][lane] = record[f];
-        }
-    }
-
-    pose64_lanes<Arch> load() const {
-        using batch = lanes64<Arch>;
-        return pose64_lanes<Arch>{batch::load_aligned(values[0]), batch::load_aligned(values[1]),
-                                  batch::load_aligned(values[2]), batch::load_aligned(values[3]),
-                                  batch::load_aligned(values[4]), batch::load_aligned(values[5])};
-    }
-};
 
 template <class Arch>
 struct pose64_steps {
@@ -79,10 +45,15 @@ struct pose64_steps {
         return out;
     }
 
-    /// Steps 7 and 8 of pose_conservative64: A's and B's margins, +inf where
-    /// the pair proves nothing.
+    /// Steps 7 and 8 of pose_conservative64: A's and B's margins, and the
+    /// lanes where they prove something. The reference's margin is +inf in
+    /// the other lanes, where no gap can exceed it nor fall below its
+    /// negation: a lane outside `proves` is left undecided (exact) or kept
+    /// (conservative), which is what the callers do with the mask instead of
+    /// blending infinities in.
     struct margins {
         batch a, b;
+        mask proves;
     };
 
     static OBBSAT_LANE_INLINE margins margins_of(const pose64_lanes<Arch>& a, const pose64_lanes<Arch>& b,
@@ -96,16 +67,27 @@ struct pose64_steps {
         const batch T = (D + (Ra * Ha)) + (Rb * Hb);
         const batch Sa = Ra * T;
         const batch Sb = Rb * T;
-        const mask proves = (Sa <= batch(0x1p1000)) & (Sb <= batch(0x1p1000)) & (Ra >= batch(0x1p-500)) &
-                            (Ra <= batch(0x1p500)) & (Rb >= batch(0x1p-500)) & (Rb <= batch(0x1p500));
-        // A constant, not a call (lanes/README.md).
-        constexpr double infinity = std::numeric_limits<double>::infinity();
-        const batch none(infinity);
-        return margins{xsimd::select(proves, (batch(0x1p-48) * Sa) + batch(0x1p-1000), none),
-                       xsimd::select(proves, (batch(0x1p-48) * Sb) + batch(0x1p-1000), none)};
+        // The reference's six bounds, two by two through max and min: no value
+        // here is a NaN (Ra, Rb > 0 and finite, T >= 0), so "both <= t" is
+        // "the larger <= t" and "both >= t" is "the smaller >= t".
+        const mask proves = (xsimd::max(Sa, Sb) <= batch(0x1p1000)) & (xsimd::min(Ra, Rb) >= batch(0x1p-500)) &
+                            (xsimd::max(Ra, Rb) <= batch(0x1p500));
+        return margins{(batch(0x1p-48) * Sa) + batch(0x1p-1000), (batch(0x1p-48) * Sb) + batch(0x1p-1000), proves};
     }
 
     static OBBSAT_LANE_INLINE batch gap(const axes& x, unsigned k) { return xsimd::abs(x.offset[k]) - x.reach[k]; }
+
+    /// The larger gap on A's axes and on B's. In a lane that `proves`, every
+    /// offset and reach is finite (|offset| <= Ra * T and reach <= 6 Ra * T
+    /// on A's axes, Rb on B's, and S = R * T <= 2^1000), so no gap is a NaN
+    /// and "a gap beyond the margin" is "the larger gap beyond it", either way.
+    struct widest {
+        batch a, b;
+    };
+
+    static OBBSAT_LANE_INLINE widest widest_of(const axes& x) {
+        return widest{xsimd::max(gap(x, 0), gap(x, 1)), xsimd::max(gap(x, 2), gap(x, 3))};
+    }
 };
 
 template <class Arch>
@@ -131,11 +113,9 @@ struct pose_conservative64_lanes {
     static OBBSAT_LANE_INLINE lane_verdicts collide(const pose64_lanes<Arch>& a, const pose64_lanes<Arch>& b) {
         const typename steps::axes x = steps::axes_of(a, b);
         const typename steps::margins m = steps::margins_of(a, b, x);
-        typename steps::mask apart = steps::gap(x, 0) > m.a;
-        for (unsigned k = 1; k < 4; ++k) {
-            apart = apart | (steps::gap(x, k) > (k < 2 ? m.a : m.b));
-        }
-        return lane_verdicts{lane_bits(~apart), 0};
+        const typename steps::widest g = steps::widest_of(x);
+        const typename steps::mask apart = (g.a > m.a) | (g.b > m.b);
+        return lane_verdicts{lane_bits(~(m.proves & apart)), 0};
     }
 };
 
@@ -150,60 +130,16 @@ struct pose_exact64_lanes {
     static OBBSAT_LANE_INLINE lane_verdicts collide(const pose64_lanes<Arch>& a, const pose64_lanes<Arch>& b) {
         const typename steps::axes x = steps::axes_of(a, b);
         const typename steps::margins m = steps::margins_of(a, b, x);
-        // Margins are >= 2^-1000 or +inf: never a zero whose sign a backend could flip.
-        typename steps::mask apart = steps::gap(x, 0) > m.a;
-        typename steps::mask overlapping = steps::gap(x, 0) < -m.a;
-        for (unsigned k = 1; k < 4; ++k) {
-            const typename steps::batch g = steps::gap(x, k);
-            const typename steps::batch margin = k < 2 ? m.a : m.b;
-            apart = apart | (g > margin);
-            overlapping = overlapping & (g < -margin);
-        }
-        return lane_verdicts{lane_bits(overlapping), lane_bits(~(apart | overlapping))};
+        const typename steps::widest g = steps::widest_of(x);
+        // Margins are >= 2^-1000: never a zero whose sign a backend could flip.
+        const typename steps::mask apart = (g.a > m.a) | (g.b > m.b);
+        const typename steps::mask overlapping = (g.a < -m.a) & (g.b < -m.b);
+        const typename steps::mask hit = m.proves & overlapping;
+        return lane_verdicts{lane_bits(hit), lane_bits(~(hit | (m.proves & apart)))};
     }
 
     static bool decide_exactly(const rect_pose64& a, const rect_pose64& b) { return oracle::intersects(a, b); }
 };
-
-/// Pose `index` of pose_records64 records, as the store's operator[] reads it.
-inline rect_pose64 pose64_at(const double* records, std::size_t index) {
-    const double* r = records + index * pose_records64::record_doubles;
-    return rect_pose64{{r[0], r[1]}, {r[2], r[3]}, {r[4], r[5]}};
-}
-
-/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
-/// returns the lanes settled exactly. A partial last vector repeats its last
-/// pair in the unused lanes and stores only its own verdicts.
-template <class Arch, template <class> class Method>
-std::size_t pose64_indexed_batch(const double* records, const pair_index* pairs, std::size_t count,
-                                 std::uint8_t* verdicts) {
-    constexpr std::size_t width = lanes64<Arch>::size;
-    constexpr std::size_t stride = pose_records64::record_doubles;
-    staged_poses64<Arch> sa, sb;
-    std::size_t settled = 0;
-    for (std::size_t i = 0; i < count; i += width) {
-        const std::size_t valid = (count - i < width) ? count - i : width;
-        for (std::size_t lane = 0; lane < width; ++lane) {
-            const pair_index& p = pairs[i + (lane < valid ? lane : valid - 1)];
-            sa.put(lane, records + p.a * stride);
-            sb.put(lane, records + p.b * stride);
-        }
-        const lane_verdicts v = Method<Arch>::collide(sa.load(), sb.load());
-        store_verdicts<width>(v.hit, verdicts + i, valid);
-        if constexpr (Method<Arch>::has_slow_path) {
-            for (unsigned unsure = v.unsure; unsure != 0; unsure &= unsure - 1) {
-                const std::size_t lane = static_cast<std::size_t>(__builtin_ctz(unsure));
-                if (lane < valid) {
-                    const pair_index& p = pairs[i + lane];
-                    verdicts[i + lane] =
-                        Method<Arch>::decide_exactly(pose64_at(records, p.a), pose64_at(records, p.b)) ? 1 : 0;
-                    ++settled;
-                }
-            }
-        }
-    }
-    return settled;
-}
 
 }  // namespace
 }  // namespace obbsat::detail

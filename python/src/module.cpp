@@ -463,8 +463,9 @@ std::string collide_poses64(const py::array& poses, const py::array& pairs, py::
                                                    obbsat::store_kind::poses, pairs, out, method, backend, threads);
 }
 
-/// Verdicts of a[i] against b[i] over float64 rows: one double store holding
-/// a then b, decided as the pairs (i, N + i). Each batch's rows are checked
+/// Verdicts of a[i] against b[i] over float64 rows: poses as two pose_soa64
+/// streamed by collide_stream; corners (no double stream entry) as one double
+/// store holding a then b, decided as the pairs (i, N + i). Each batch's rows are checked
 /// apart, so an error names "a: " or "b: " and the row in that batch.
 template <class Store, class Row>
 std::string collide_stream_doubles(const std::pair<const Row*, std::size_t>& rows_a,
@@ -484,19 +485,24 @@ std::string collide_stream_doubles(const std::pair<const Row*, std::size_t>& row
         require_runs_on_doubles(options, kind);
         const Store store_a = double_store<Store>(rows_a.first, count, "a");
         const Store store_b = double_store<Store>(rows_b.first, count, "b");
-        Store both;
-        both.reserve(2 * count);
-        for (std::size_t i = 0; i < count; ++i) {
-            both.push_back(store_a[i]);
+        if constexpr (std::is_same_v<Store, obbsat::pose_soa64>) {
+            // Poses have a stream entry of their own: the arrays read as vectors.
+            return obbsat::collide_stream(store_a, store_b, verdicts, options);
+        } else {
+            Store both;
+            both.reserve(2 * count);
+            for (std::size_t i = 0; i < count; ++i) {
+                both.push_back(store_a[i]);
+            }
+            for (std::size_t i = 0; i < count; ++i) {
+                both.push_back(store_b[i]);
+            }
+            std::vector<obbsat::pair_index> pairs(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                pairs[i] = obbsat::pair_index{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(count + i)};
+            }
+            return obbsat::collide_pairs(both, pairs.data(), count, verdicts, options);
         }
-        for (std::size_t i = 0; i < count; ++i) {
-            both.push_back(store_b[i]);
-        }
-        std::vector<obbsat::pair_index> pairs(count);
-        for (std::size_t i = 0; i < count; ++i) {
-            pairs[i] = obbsat::pair_index{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(count + i)};
-        }
-        return obbsat::collide_pairs(both, pairs.data(), count, verdicts, options);
     });
     return obbsat::backend_name(ran);
 }
@@ -509,7 +515,7 @@ std::string collide_stream64(const py::array& a, const py::array& b, py::array& 
 
 std::string collide_pose_stream64(const py::array& a, const py::array& b, py::array& out, const std::string& method,
                                   const std::string& backend, long long threads) {
-    return collide_stream_doubles<obbsat::pose_records64>(poses64_in_place(a, "a"), poses64_in_place(b, "b"), a, b,
+    return collide_stream_doubles<obbsat::pose_soa64>(poses64_in_place(a, "a"), poses64_in_place(b, "b"), a, b,
                                                           obbsat::store_kind::poses, out, method, backend, threads);
 }
 

@@ -5,11 +5,10 @@
 // partial last vectors, and on poses whose arithmetic overflows (infinite and
 // NaN gaps must compare as in the references).
 #include "test_support/pose_cases64.hpp"
+#include "test_support/pose_references64.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide64.hpp>
-#include <obbsat/ref/local64.hpp>
-#include <obbsat/ref/pose_conservative64.hpp>
 #include <obbsat/ref/pose_exact64.hpp>
 
 #include <gtest/gtest.h>
@@ -25,13 +24,7 @@ using obbsat::method;
 using obbsat::pair_index;
 using obbsat::rect_pose64;
 
-bool reference(method m, const rect_pose64& a, const rect_pose64& b) {
-    switch (m) {
-        case method::exact: return obbsat::ref::exact(a, b);
-        case method::conservative: return obbsat::ref::conservative(a, b);
-        default: return obbsat::ref::local(a, b);
-    }
-}
+using obbsat::test::reference64;
 
 // Pairs (2i, 2i+1) of several families, both ways round, and some across them;
 // odd in number, so that every width leaves a partial last vector.
@@ -91,7 +84,7 @@ TEST_P(double_backends, verdicts_are_the_references_bit_for_bit) {
         for (std::size_t i = 0; i < batch.pairs.size(); ++i) {
             const rect_pose64& a = batch.poses[batch.pairs[i].a];
             const rect_pose64& pb = batch.poses[batch.pairs[i].b];
-            expected[i] = reference(m, a, pb) ? 1 : 0;
+            expected[i] = reference64(m, a, pb) ? 1 : 0;
             if (m == method::exact) {
                 const obbsat::ref::certified_verdict fast = obbsat::ref::certify(a, pb);
                 expected_slow += !fast.separated && !fast.intersecting ? 1 : 0;

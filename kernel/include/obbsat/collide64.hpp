@@ -1,6 +1,7 @@
-// Batch collision queries over the double stores (pose_records64,
+// Batch collision queries over the double stores (pose_records64, pose_soa64,
 // rect_records64): which pairs of rectangles, every double taken exactly,
-// collide.
+// collide, as pair lists (collide_pairs) and, on double poses, as streams
+// (collide_stream: a[i] against b[i]).
 //
 // The methods that run on doubles are those with a double reference in
 // scalar_ref/: on double poses local, conservative and exact
@@ -24,6 +25,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records64.hpp>
+#include <obbsat/pose_soa64.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_records64.hpp>
 
@@ -48,6 +50,28 @@ backend collide_pairs(const pose_records64& poses, const pair_index* pairs, std:
 /// The verdicts of collide_pairs over double poses, one byte (0 or 1) per pair.
 std::vector<std::uint8_t> collide_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
                                         const collide_options& options);
+
+/// verdicts[i] = 1 if a[i] and b[i] collide, else 0, for i < a.size(): a stream
+/// of pairs, the double counterpart of collide_stream over pose_records, on the
+/// same lanes as collide_pairs (consecutive records read, no index looked up)
+/// and with the same verdicts; returns the backend that ran. Throws
+/// invalid_input (nothing written) when a and b differ in length or when
+/// options.test does not run on double poses; unsupported_backend as above.
+/// `verdicts` holds a.size() bytes.
+backend collide_stream(const pose_records64& a, const pose_records64& b, std::uint8_t* verdicts,
+                       const collide_options& options);
+
+/// The verdicts of collide_stream over double poses, one byte (0 or 1) per pair.
+std::vector<std::uint8_t> collide_stream(const pose_records64& a, const pose_records64& b,
+                                         const collide_options& options);
+
+/// The same over two pose_soa64 stores, the faster store for streams (each
+/// field read as a vector, nothing transposed); verdicts are identical.
+backend collide_stream(const pose_soa64& a, const pose_soa64& b, std::uint8_t* verdicts,
+                       const collide_options& options);
+
+/// The verdicts of collide_stream over pose_soa64 stores as a vector.
+std::vector<std::uint8_t> collide_stream(const pose_soa64& a, const pose_soa64& b, const collide_options& options);
 
 /// verdicts[i] = 1 if rects[pairs[i].a] and rects[pairs[i].b] collide, else 0, for
 /// i < count; returns backend::scalar. Throws invalid_input (nothing written) as stated above.

@@ -16,6 +16,7 @@
 #include <obbsat/pose_records64.hpp>
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/pose_soa.hpp>
+#include <obbsat/pose_soa64.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>

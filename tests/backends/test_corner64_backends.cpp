@@ -75,6 +75,27 @@ rect_pair64 trapezoid_pair(obbsat::seeded_random& random) {
     return pair;
 }
 
+/// `r` moved by t times (dx, dy), each coordinate rounded once.
+rect64 moved(const rect64& r, double t, point64 d) {
+    auto at = [&](point64 p) { return point64{p.x + t * d.x, p.y + t * d.y}; };
+    return rect64{at(r.ul), at(r.ur), at(r.lr), at(r.ll)};
+}
+
+/// A rectangle and its copy moved along its UL->UR edge to within a few ulps
+/// of where conservative's margin starts to prove them apart (found by
+/// bisecting on the reference itself): every rounding of the margin counts.
+rect_pair64 margin_pair(obbsat::seeded_random& random) {
+    const rect64 a = obbsat::test::corners64(obbsat::test::utm_contact_pair(random).a);
+    const point64 edge{a.ur.x - a.ul.x, a.ur.y - a.ul.y};
+    double together = 1.0;       // touching: conservative says they collide
+    double apart = 1.0 + 1e-6;   // a gap of a micrometre per metre of edge: proven apart
+    for (int step = 0; step < 80 && obbsat::test::nudged64(together, 1) < apart; ++step) {
+        const double middle = together + 0.5 * (apart - together);
+        (obbsat::ref::conservative(a, moved(a, middle, edge)) ? together : apart) = middle;
+    }
+    return rect_pair64{a, moved(a, obbsat::test::nudged64(apart, obbsat::test::integer_in(random, -3, 3)), edge)};
+}
+
 using pair_make = rect_pair64 (*)(obbsat::seeded_random&);
 
 // The families of the suites, as corners, and the quads above.
@@ -90,6 +111,7 @@ constexpr pair_make hard_families[] = {
     obbsat::test::nudged_corner_pair,
     random_quad_pair,
     trapezoid_pair,
+    margin_pair,
 };
 
 // Families whose makes use integer and correctly rounded double operations only
@@ -103,6 +125,7 @@ constexpr pair_make portable_families[] = {
     obbsat::test::nudged_corner_pair,
     random_quad_pair,
     trapezoid_pair,
+    margin_pair,
 };
 
 /// Quads at the ends of the double range: overflowing products and areas
@@ -311,8 +334,8 @@ struct golden_entry {
     std::uint64_t digest;
 };
 constexpr golden_entry golden_digests[] = {
-    {method::exact, 0x6628af1497818e52},
-    {method::conservative, 0x254578bbb6e6d108},
+    {method::exact, 0xf915a01b757f803a},
+    {method::conservative, 0x7d81f168a4bd9fa3},
 };
 
 TEST_P(corner64_backends, golden_digests) {

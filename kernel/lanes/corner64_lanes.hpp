@@ -6,7 +6,8 @@
 //                 steps of certified_lanes.hpp in double); the lanes it leaves
 //                 undecided are settled by the exact oracle of
 //                 obbsat/oracle/contact64.hpp, as obbsat/ref/exact64.hpp says;
-//   conservative  obbsat/ref/conservative64.hpp, its fused projections and
+//   conservative  obbsat/ref/conservative64.hpp: the steps of
+//                 conservative_lanes.hpp in double, its fused projections and
 //                 margin computed by fused_multiply_add (one rounding each).
 // And the batch driver: a vector of pairs at a time, each lane's two records
 // read whole and transposed in registers (record64_transpose.hpp).
@@ -14,10 +15,9 @@
 
 #include "lanes/batch_kernel.hpp"
 #include "lanes/certified_lanes.hpp"
-#include "lanes/fused_multiply_add.hpp"
+#include "lanes/conservative_lanes.hpp"
 #include "lanes/lanes.hpp"
 #include "lanes/record64_transpose.hpp"
-#include "lanes/sat4_lanes.hpp"
 
 #include <obbsat/oracle/contact64.hpp>
 #include <obbsat/rect.hpp>
@@ -47,63 +47,10 @@ struct corner_exact64_lanes {
     static bool decide_exactly(const rect64& a, const rect64& b) { return oracle::intersects(a, b); }
 };
 
-/// Method conservative on double corners, steps 1 to 7 of conservative64.hpp.
+/// Method conservative on double corners: conservative_lanes in double, the
+/// steps of conservative64.hpp.
 template <class Arch>
-struct corner_conservative64_lanes {
-    static constexpr bool has_slow_path = false;
-
-    using batch = xsimd::batch<double, Arch>;
-    using mask = xsimd::batch_bool<double, Arch>;
-
-    /// Steps 1 and 2: (K · 2^513) · 0x1.004p-563, +inf where K >= 2^511. The
-    /// magnitudes are finite and not negative, so their largest is the same
-    /// in any order and max is the reference's max-pick.
-    static OBBSAT_LANE_INLINE batch margin_scale(const quad64_lanes<Arch>& a, const quad64_lanes<Arch>& b) {
-        batch k = xsimd::abs(a.c[0]);
-        for (unsigned i = 1; i < coord_count; ++i) {
-            k = xsimd::max(k, xsimd::abs(a.c[i]));
-        }
-        for (unsigned i = 0; i < coord_count; ++i) {
-            k = xsimd::max(k, xsimd::abs(b.c[i]));
-        }
-        return (k * batch(0x1p513)) * batch(0x1.004p-563);
-    }
-
-    /// Steps 4 and 5: min and max of the four scalars fma(x, ax, y · ay), folded UL, UR, LR, LL.
-    static OBBSAT_LANE_INLINE void project(const quad64_lanes<Arch>& q, const batch& ax, const batch& ay, batch& lo,
-                                           batch& hi) {
-        batch s[4];
-        for (unsigned k = 0; k < 4; ++k) {
-            s[k] = fused_multiply_add<Arch>(q.x(k), ax, q.y(k) * ay);
-        }
-        sat4_steps<batch>::fold(s, lo, hi);
-    }
-
-    /// Steps 6 and 7 on one axis: the lanes it proves apart (never one whose difference or margin is NaN).
-    static OBBSAT_LANE_INLINE mask proven_apart_on(const quad64_lanes<Arch>& a, const quad64_lanes<Arch>& b,
-                                                   const batch& ax, const batch& ay, const batch& scale) {
-        batch min_a, max_a, min_b, max_b;
-        project(a, ax, ay, min_a, max_a);
-        project(b, ax, ay, min_b, max_b);
-        const batch margin =
-            fused_multiply_add<Arch>(scale, max_pick(xsimd::abs(ax), xsimd::abs(ay)), batch(0x1p-1000));
-        return max_pick(min_b - max_a, min_a - max_b) > margin;
-    }
-
-    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad64_lanes<Arch>& a, const quad64_lanes<Arch>& b) {
-        const batch scale = margin_scale(a, b);
-        // Step 3, the article's axes A.UR - A.UL, A.UR - A.LR, B.UL - B.LL, B.UL - B.UR.
-        const mask apart_on_a = proven_apart_on(a, b, a.x(UR) - a.x(UL), a.y(UR) - a.y(UL), scale) |
-                                proven_apart_on(a, b, a.x(UR) - a.x(LR), a.y(UR) - a.y(LR), scale);
-        // B's axes cannot change a lane A's axes already proved apart.
-        if (xsimd::all(apart_on_a)) {
-            return lane_verdicts{0, 0};
-        }
-        const mask apart = apart_on_a | proven_apart_on(a, b, b.x(UL) - b.x(LL), b.y(UL) - b.y(LL), scale) |
-                           proven_apart_on(a, b, b.x(UL) - b.x(UR), b.y(UL) - b.y(UR), scale);
-        return lane_verdicts{lane_bits(~apart), 0};
-    }
-};
+struct corner_conservative64_lanes : conservative_steps<Arch, double> {};
 
 /// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count
 /// over rect_records64 records; returns the lanes settled exactly. The last,

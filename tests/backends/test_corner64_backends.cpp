@@ -98,35 +98,30 @@ rect_pair64 margin_pair(obbsat::seeded_random& random) {
 
 using pair_make = rect_pair64 (*)(obbsat::seeded_random&);
 
-// The families of the suites, as corners, and the quads above.
-constexpr pair_make hard_families[] = {
-    obbsat::test::corner_pair<obbsat::test::utm_random_pair>,
-    obbsat::test::corner_pair<obbsat::test::utm_contact_pair>,
-    obbsat::test::corner_pair<obbsat::test::utm_northing_contact_pair>,
-    obbsat::test::corner_pair<obbsat::test::far_contact_pair>,
-    obbsat::test::corner_pair<obbsat::test::far_random_pair>,
-    obbsat::test::corner_pair<obbsat::test::sliver_pair>,
-    obbsat::test::corner_pair<obbsat::test::near_parallel_pair>,
-    obbsat::test::corner_pair<obbsat::test::scaled_rotation_pair>,
-    obbsat::test::nudged_corner_pair,
-    random_quad_pair,
-    trapezoid_pair,
-    margin_pair,
-};
-
 // Families whose makes use integer and correctly rounded double operations only
 // (no cos or sin), so their corners, and the verdicts, are the same on every machine.
-constexpr pair_make portable_families[] = {
-    obbsat::test::corner_pair<obbsat::test::utm_contact_pair>,
-    obbsat::test::corner_pair<obbsat::test::utm_northing_contact_pair>,
-    obbsat::test::corner_pair<obbsat::test::far_contact_pair>,
-    obbsat::test::corner_pair<obbsat::test::sliver_pair>,
-    obbsat::test::corner_pair<obbsat::test::scaled_rotation_pair>,
-    obbsat::test::nudged_corner_pair,
-    random_quad_pair,
-    trapezoid_pair,
-    margin_pair,
-};
+std::vector<pair_make> portable_families() {
+    return {
+        obbsat::test::corner_pair<obbsat::test::utm_contact_pair>,
+        obbsat::test::corner_pair<obbsat::test::utm_northing_contact_pair>,
+        obbsat::test::corner_pair<obbsat::test::far_contact_pair>,
+        obbsat::test::corner_pair<obbsat::test::sliver_pair>,
+        obbsat::test::corner_pair<obbsat::test::scaled_rotation_pair>,
+        obbsat::test::nudged_corner_pair,
+        random_quad_pair,
+        trapezoid_pair,
+        margin_pair,
+    };
+}
+
+// Those and the families of the suites at random angles.
+std::vector<pair_make> hard_families() {
+    std::vector<pair_make> all = portable_families();
+    all.push_back(obbsat::test::corner_pair<obbsat::test::utm_random_pair>);
+    all.push_back(obbsat::test::corner_pair<obbsat::test::far_random_pair>);
+    all.push_back(obbsat::test::corner_pair<obbsat::test::near_parallel_pair>);
+    return all;
+}
 
 /// Quads at the ends of the double range: overflowing products and areas
 /// (|coordinates| near 1e308, or at and above 2^511 where conservative's
@@ -156,8 +151,7 @@ struct corner_batch {
 /// Pairs (2i, 2i+1) of `pairs_per_family` pairs of every family, both ways round,
 /// some across families, and every extreme quad against every other and a few
 /// others; odd in number, so that every width leaves a partial last vector.
-template <std::size_t Families>
-corner_batch batch_of(const pair_make (&families)[Families], std::size_t pairs_per_family, std::uint64_t seed) {
+corner_batch batch_of(const std::vector<pair_make>& families, std::size_t pairs_per_family, std::uint64_t seed) {
     obbsat::seeded_random random(seed);
     corner_batch b;
     for (const pair_make make : families) {
@@ -275,7 +269,7 @@ protected:
 };
 
 TEST_P(corner64_backends, hard_families_are_the_references_bit_for_bit) {
-    const corner_batch b = batch_of(hard_families, 3000, 113);
+    const corner_batch b = batch_of(hard_families(), 3000, 113);
     check_batch(b, {1u, 2u, 3u});
     EXPECT_GT(expected_of(method::exact, b).slow, 5000u);  // the slow path ran inside the lanes
 }
@@ -284,7 +278,7 @@ TEST_P(corner64_backends, hard_families_are_the_references_bit_for_bit) {
 // many times over and in every lane position, and (three in four) random
 // pairs among them.
 TEST_P(corner64_backends, a_million_pairs_are_the_references_bit_for_bit) {
-    corner_batch b = batch_of(hard_families, (std::size_t{1} << 16) / std::size(hard_families), 127);
+    corner_batch b = batch_of(hard_families(), (std::size_t{1} << 16) / hard_families().size(), 127);
     obbsat::seeded_random random(131);
     const auto made = static_cast<std::uint32_t>(b.rects.size());
     b.pairs.clear();
@@ -300,7 +294,7 @@ TEST_P(corner64_backends, a_million_pairs_are_the_references_bit_for_bit) {
 // Every batch of 1 to 17 pairs (up to a vector and a half of AVX-512's 8 or
 // more), at several starts in the pair list: only its own verdicts are written.
 TEST_P(corner64_backends, short_batches_write_only_their_verdicts) {
-    const corner_batch b = batch_of(hard_families, 4, 137);
+    const corner_batch b = batch_of(hard_families(), 4, 137);
     const obbsat::rect_records64 store(b.rects);
     for (const method m : obbsat::methods_on_doubles(obbsat::store_kind::corners)) {
         const expected_run expected = expected_of(m, b);
@@ -339,7 +333,7 @@ constexpr golden_entry golden_digests[] = {
 };
 
 TEST_P(corner64_backends, golden_digests) {
-    const corner_batch b = batch_of(portable_families, 20000, 20261126);
+    const corner_batch b = batch_of(portable_families(), 20000, 20261126);
     const obbsat::rect_records64 store(b.rects);
     for (const golden_entry& g : golden_digests) {
         const backend_run got = run_on(GetParam(), g.test, 2, store, b.pairs);

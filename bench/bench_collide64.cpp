@@ -1,6 +1,6 @@
 // collide64/<method>/<store>/<backend>/pairs:<N>/threads:<T>: collide_pairs over the
-// double stores (poses on the scalar backend and on the best this CPU runs,
-// corners on the scalar backend, the only one they have) (obbsat/collide64.hpp) on the typical scene of the collide
+// double stores (poses and corners on the scalar backend and on the best this
+// CPU runs) (obbsat/collide64.hpp) on the typical scene of the collide
 // rows, its poses widened to double and moved to UTM-like coordinates
 // (500000.125, 5712345.5), every value exact. Each row first checks its
 // verdicts against the double scalar references, pair by pair, then times.
@@ -192,15 +192,18 @@ void register_collide64_benchmarks() {
                     ->Unit(benchmark::kMicrosecond);
             }
         }
+        // Corners on the same backends as poses: the scalar references and the best lanes.
+        const std::vector<obbsat::backend>& corner_backends = pose_backends;
         for (const obbsat::method m : obbsat::methods_on_doubles(obbsat::store_kind::corners)) {
-            const obbsat::backend use = obbsat::backend::scalar;
-            benchmark::RegisterBenchmark(row(m, "corners", use, threads).c_str(),
-                                         [m, use, threads](benchmark::State& state) {
-                                             double_workload& w = double_workload_of();
-                                             run_case(state, w.corners, *w.pairs, m, use, threads);
-                                         })
-                ->UseRealTime()
-                ->Unit(benchmark::kMicrosecond);
+            for (const obbsat::backend use : corner_backends) {
+                benchmark::RegisterBenchmark(row(m, "corners", use, threads).c_str(),
+                                             [m, use, threads](benchmark::State& state) {
+                                                 double_workload& w = double_workload_of();
+                                                 run_case(state, w.corners, *w.pairs, m, use, threads);
+                                             })
+                    ->UseRealTime()
+                    ->Unit(benchmark::kMicrosecond);
+            }
         }
     }
 }

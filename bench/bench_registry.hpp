@@ -16,8 +16,8 @@ namespace obbsat_bench {
 void register_collide_benchmarks(std::ostream& skipped);
 
 /// collide64/<method>/<poses|corners>/<backend>/pairs:262144/threads:<1|2>: collide_pairs
-/// over the double stores, for every method that runs on them, poses on the
-/// scalar backend and the best this CPU runs (bench_collide64.cpp).
+/// over the double stores, for every method that runs on them, on the scalar
+/// backend and the best this CPU runs (bench_collide64.cpp).
 void register_collide64_benchmarks();
 
 /// convert/poses_to_corners/<backend>/poses:<N> for every backend this CPU

@@ -1,7 +1,7 @@
-// Pair lists and streams over the double stores, split over threads: on double poses the
-// backend's double lanes (dispatch/double_kernel_table.hpp), or the scalar
-// references of scalar_ref/ (the *64 files) on the scalar backend; on double
-// corners always the scalar references (no lanes yet).
+// Pair lists and streams over the double stores, split over threads: the
+// backend's double lanes (dispatch/double_kernel_table.hpp, one table for poses
+// and one for corners), or the scalar references of scalar_ref/ (the *64
+// files) on the scalar backend.
 #include "dispatch/double_kernel_table.hpp"
 #include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
@@ -44,14 +44,6 @@ void require_method_on_doubles(const collide_options& options, store_kind store)
     }
 }
 
-void require_scalar_backend(const collide_options& options) {
-    if (options.use != backend::automatic && options.use != backend::scalar) {
-        throw invalid_input(std::string("backend ") + backend_name(options.use) +
-                            " has no kernels for double corners: they run on the scalar backend "
-                            "(pass backend::automatic or backend::scalar)");
-    }
-}
-
 void require_verdicts_apart(const std::uint8_t* verdicts, const pair_index* pairs, std::size_t count) {
     const auto v = reinterpret_cast<std::uintptr_t>(verdicts);
     const auto p = reinterpret_cast<std::uintptr_t>(pairs);
@@ -76,12 +68,7 @@ backend require_call(std::size_t size, const pair_index* pairs, std::size_t coun
                      const collide_options& options, store_kind store) {
     require_verdicts_apart(verdicts, pairs, count);
     require_method_on_doubles(options, store);
-    backend ran = backend::scalar;
-    if (store == store_kind::poses) {
-        ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
-    } else {
-        require_scalar_backend(options);
-    }
+    const backend ran = resolve_backend(options.use);  // unsupported_backend for one this CPU cannot run
     require_indices(size, pairs, count);
     return ran;
 }
@@ -164,11 +151,12 @@ void run_parts_of(std::size_t count, const collide_options& options, const RunPa
     report_settled(settled, options);
 }
 
-/// verdicts over [0, count) by a backend's lanes, split over threads.
-void run_lanes(detail::pose64_indexed_fn kernel, const pose_records64& poses, const pair_index* pairs,
-               std::size_t count, std::uint8_t* verdicts, const collide_options& options) {
+/// verdicts over [0, count) by a backend's lanes over the records of `store`, split over threads.
+template <class Kernel, class Store>
+void run_lanes(Kernel kernel, const Store& store, const pair_index* pairs, std::size_t count,
+               std::uint8_t* verdicts, const collide_options& options) {
     run_parts_of(count, options, [&](std::size_t begin, std::size_t end) {
-        return kernel(poses.data(), pairs + begin, end - begin, verdicts + begin);
+        return kernel(store.data(), pairs + begin, end - begin, verdicts + begin);
     });
 }
 
@@ -270,7 +258,12 @@ std::vector<std::uint8_t> collide_stream(const pose_soa64& a, const pose_soa64& 
 
 backend collide_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,
                       std::uint8_t* verdicts, const collide_options& options) {
-    require_call(rects.size(), pairs, count, verdicts, options, store_kind::corners);
+    const backend ran = require_call(rects.size(), pairs, count, verdicts, options, store_kind::corners);
+    if (const detail::corner64_kernel_table* table = detail::corner64_kernels_for(ran)) {
+        run_lanes(options.test == method::exact ? table->exact : table->conservative, rects, pairs, count, verdicts,
+                  options);
+        return ran;
+    }
     if (options.test == method::exact) {
         decide_pairs(rects, pairs, count, verdicts, options,
                      [](const rect64& a, const rect64& b, std::size_t& settled) { return exact_counted(a, b, settled); });

@@ -1,8 +1,9 @@
-// The kernel table of the double stores: the entry points one SIMD backend
-// offers for pair lists over pose_records64 (one double pose per lane),
-// defined by kernel/lanes/backend_isa.cpp compiled once per SIMD backend, and
-// found at the baseline by double_kernels_for. Corners in double have no lanes
-// yet: they run on the scalar references. Internal to the library.
+// The kernel tables of the double stores: the entry points one SIMD backend
+// offers for pair lists over pose_records64 (one double pose per lane) and
+// over rect_records64 (one double-corner rectangle per lane), defined by
+// kernel/lanes/backend_isa.cpp compiled once per SIMD backend, and found at
+// the baseline by double_kernels_for and corner64_kernels_for. Internal to
+// the library.
 #pragma once
 
 #include "dispatch/pose_soa64_view.hpp"
@@ -10,6 +11,7 @@
 #include <obbsat/backend.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -81,5 +83,26 @@ std::size_t scalar_rect64_indexed(method m, const double* records, const pair_in
 /// The table of `resolved` (a backend this CPU runs), or nullptr for the scalar
 /// backend and for a backend not compiled into this build.
 const double_kernel_table* double_kernels_for(backend resolved);
+
+/// verdicts[i] = the method's verdict on records[pairs[i].a] and records[pairs[i].b]
+/// (rect_records64 records) for i < count; returns how many pairs the exact slow
+/// path settled (0 but for exact).
+using rect64_indexed_fn = std::size_t (*)(const rect64* records, const pair_index* pairs, std::size_t count,
+                                          std::uint8_t* verdicts);
+
+/// The entry points of one backend on double corners, one per method that runs there.
+struct corner64_kernel_table {
+    rect64_indexed_fn exact;
+    rect64_indexed_fn conservative;
+};
+
+/// The double-corner table of Backend (a SIMD row of dispatch/backend_catalogue.hpp),
+/// defined in its per-ISA object (lanes/backend_isa.cpp).
+template <class Backend>
+const corner64_kernel_table& corner64_kernels_of();
+
+/// The double-corner table of `resolved` (a backend this CPU runs), or nullptr for
+/// the scalar backend and for a backend not compiled into this build.
+const corner64_kernel_table* corner64_kernels_for(backend resolved);
 
 }  // namespace obbsat::detail

@@ -98,4 +98,18 @@ const double_kernel_table* double_kernels_for(backend resolved) {
 #endif
 }
 
+const corner64_kernel_table* corner64_kernels_for(backend resolved) {
+#if OBBSAT_WITH_X86_KERNELS
+    switch (resolved) {
+        case backend::avx512: return &corner64_kernels_of<avx512_backend>();
+        case backend::avx2: return &corner64_kernels_of<avx2_backend>();
+        case backend::sse2: return &corner64_kernels_of<sse2_backend>();
+        default: return nullptr;
+    }
+#else
+    (void)resolved;
+    return nullptr;
+#endif
+}
+
 }  // namespace obbsat::detail

@@ -2,8 +2,9 @@
 // SIMD row of backend_catalogue.hpp (see cmake/obbsat_isa.cmake) with
 // OBBSAT_ISA_NAME set to the backend's name and with that ISA's compiler
 // flags; it defines kernels_of<that backend>(), one row per method of
-// method_catalogue.hpp, and double_kernels_of<that backend>() for the double
-// poses (dispatch/double_kernel_table.hpp). Everything else here is private to this object
+// method_catalogue.hpp, and double_kernels_of<that backend>() and
+// corner64_kernels_of<that backend>() for the double poses and corners
+// (dispatch/double_kernel_table.hpp). Everything else here is private to this object
 // (README.md).
 #include "dispatch/backend_catalogue.hpp"
 #include "dispatch/double_kernel_table.hpp"
@@ -13,6 +14,7 @@
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
 #include "lanes/contact_batch.hpp"
+#include "lanes/corner64_lanes.hpp"
 #include "lanes/fused_multiply_add.hpp"
 #include "lanes/largest_index_lanes.hpp"
 #include "lanes/pose_batch.hpp"
@@ -133,6 +135,14 @@ const double_kernel_table& double_kernels_of<this_backend>() {
         pose64_indexed_batch<isa_arch, local64_lanes, pair_fetch::none>,
         pose64_kernels_of<pose_exact64_lanes>(), pose64_kernels_of<pose_conservative64_lanes>(),
         pose64_kernels_of<local64_lanes>()};
+    return table;
+}
+
+// So do the double-corner lanes, for the same reason.
+template <>
+const corner64_kernel_table& corner64_kernels_of<this_backend>() {
+    static constexpr corner64_kernel_table table{corner64_indexed_batch<isa_arch, corner_exact64_lanes>,
+                                                 corner64_indexed_batch<isa_arch, corner_conservative64_lanes>};
     return table;
 }
 

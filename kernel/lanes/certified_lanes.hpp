@@ -1,8 +1,8 @@
 // The certified separating-edge test on one pair per lane: the same float
-// operations, in the same order, as obbsat::ref::certify
-// (scalar_ref/include/obbsat/ref/certified.hpp states them), and method exact
-// built on it: undecided lanes are settled by the exact oracle, one pair at a
-// time.
+// (or double) operations, in the same order, as obbsat::ref::certify
+// (scalar_ref/include/obbsat/ref/certified.hpp and certified64.hpp state
+// them), and method exact on float corners built on it: undecided lanes are
+// settled by the exact oracle, one pair at a time.
 #pragma once
 
 #include "lanes/lanes.hpp"
@@ -12,10 +12,32 @@
 namespace obbsat::detail {
 namespace {
 
-template <class Arch>
+/// The guard and the bound of one precision, as scalar_ref/certified.cpp and
+/// certified64.cpp give them to the reference.
+template <class Real>
+struct certified_lane_limits;
+
+template <>
+struct certified_lane_limits<float> {
+    static constexpr float min_area = 0x1p-80f;
+    static constexpr float max_area = 0x1p100f;
+    static constexpr float bound_factor = 0x1p-20f;
+};
+
+template <>
+struct certified_lane_limits<double> {
+    static constexpr double min_area = 0x1p-900;
+    static constexpr double max_area = 0x1p1000;
+    static constexpr double bound_factor = 0x1p-49;
+};
+
+/// The steps over corners of type Real (float or double), one pair per lane.
+template <class Arch, class Real = float>
 struct certified_steps {
-    using batch = lanes<Arch>;
-    using mask = lane_mask<Arch>;
+    using batch = xsimd::batch<Real, Arch>;
+    using mask = xsimd::batch_bool<Real, Arch>;
+    using corners = quad<batch>;
+    using limits = certified_lane_limits<Real>;
 
     struct quad_edges {
         batch ex[4], ey[4];  // edge k: corner k+1 - corner k
@@ -35,7 +57,7 @@ struct certified_steps {
         batch area() const { return (xmax - xmin) * (ymax - ymin); }
     };
 
-    static OBBSAT_LANE_INLINE extent extent_of(const quad_lanes<Arch>& q) {
+    static OBBSAT_LANE_INLINE extent extent_of(const corners& q) {
         extent e{q.x(UL), q.x(UL), q.y(UL), q.y(UL)};
         for (unsigned k = 1; k < 4; ++k) {
             e.xmin = min_pick(e.xmin, q.x(k));
@@ -51,7 +73,7 @@ struct certified_steps {
                       max_pick(a.ymax, b.ymax)};
     }
 
-    static OBBSAT_LANE_INLINE quad_edges edges_of(const quad_lanes<Arch>& q, const batch& bound) {
+    static OBBSAT_LANE_INLINE quad_edges edges_of(const corners& q, const batch& bound) {
         quad_edges out;
         for (unsigned k = 0; k < 4; ++k) {
             const unsigned next = (k + 1) % 4;
@@ -67,14 +89,14 @@ struct certified_steps {
             all_right = all_right & (turn < neg_bound);
         }
         out.convex = all_left | all_right;
-        out.flip = xsimd::select(all_right, batch(-0.0f), batch(0.0f));
+        out.flip = xsimd::select(all_right, batch(Real(-0.0)), batch(Real(0.0)));
         return out;
     }
 
     /// Edges of q against the corners of `other`: some edge with every corner
     /// outside (separating) and every edge with a corner inside (blocked).
-    static OBBSAT_LANE_INLINE void scan_edges(const quad_lanes<Arch>& q, const quad_edges& qe,
-                                              const quad_lanes<Arch>& other, const batch& bound,
+    static OBBSAT_LANE_INLINE void scan_edges(const corners& q, const quad_edges& qe,
+                                              const corners& other, const batch& bound,
                                               mask& separating, mask& all_blocked) {
         // Every corner outside iff the largest outward orientation is below
         // -bound; some corner inside iff it is above bound. On a decidable
@@ -93,16 +115,16 @@ struct certified_steps {
         }
     }
 
-    static OBBSAT_LANE_INLINE verdict certify(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE verdict certify(const corners& a, const corners& b) {
         const extent xa = extent_of(a);
         const extent xb = extent_of(b);
         const batch area_a = xa.area();
         const batch area_b = xb.area();
         const batch area = joined(xa, xb).area();
-        const batch min_area(0x1p-80f);
-        const batch factor(0x1p-20f);
+        const batch min_area(limits::min_area);
+        const batch factor(limits::bound_factor);
         const mask in_range =
-            (area >= min_area) & (area <= batch(0x1p100f)) & (area_a >= min_area) & (area_b >= min_area);
+            (area >= min_area) & (area <= batch(limits::max_area)) & (area_a >= min_area) & (area_b >= min_area);
         const batch bound = area * factor;
 
         const quad_edges ea = edges_of(a, area_a * factor);

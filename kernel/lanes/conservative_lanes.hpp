@@ -1,8 +1,10 @@
 // Method conservative on one pair per lane: the same float operations, in the
 // same order, as obbsat::ref::conservative
 // (scalar_ref/include/obbsat/ref/conservative.hpp states them and why a claim
-// of "apart" is always true). Fused projections leave room for the margin:
-// the method costs what sat4 costs.
+// of "apart" is always true), or on double corners the double operations of
+// obbsat/ref/conservative64.hpp (Real = double: only the scale's constants,
+// the margin's floor and how the largest magnitude is found differ). Fused
+// projections leave room for the margin: the method costs what sat4 costs.
 #pragma once
 
 #include "lanes/fused_multiply_add.hpp"
@@ -12,27 +14,52 @@
 namespace obbsat::detail {
 namespace {
 
-template <class Arch>
-struct conservative_lanes {
+/// The constants of one precision, those of the scalar reference.
+template <class Real>
+struct conservative_constants;
+
+template <>
+struct conservative_constants<float> {
+    static constexpr float guard = 0x1p66f;         // K · guard overflows from K = 2^62 on
+    static constexpr float scale = 0x1.004p-87f;    // then (K · guard) · scale = 2^-21 K (1 + 2^-10)
+    static constexpr float margin_floor = 0x1p-140f;
+};
+
+template <>
+struct conservative_constants<double> {
+    static constexpr double guard = 0x1p513;        // K · guard overflows from K = 2^511 on
+    static constexpr double scale = 0x1.004p-563;   // then (K · guard) · scale = 2^-50 K (1 + 2^-10)
+    static constexpr double margin_floor = 0x1p-1000;
+};
+
+/// The method's steps on corners of type Real, one pair per lane.
+template <class Arch, class Real>
+struct conservative_steps {
     static constexpr bool has_slow_path = false;
 
-    using batch = lanes<Arch>;
-    using mask = lane_mask<Arch>;
+    using batch = xsimd::batch<Real, Arch>;
+    using mask = xsimd::batch_bool<Real, Arch>;
+    using corners = quad<batch>;
+    using constants = conservative_constants<Real>;
+    static constexpr bool is_float = std::is_same<Real, float>::value;
 
     /// max(|u|, |v|): one VRANGEPS where AVX-512DQ has it, exact either way.
     static OBBSAT_LANE_INLINE batch larger_magnitude(const batch& u, const batch& v) {
 #ifdef __AVX512DQ__
-        if constexpr (std::is_base_of<xsimd::avx512dq, Arch>::value) {
+        if constexpr (is_float && std::is_base_of<xsimd::avx512dq, Arch>::value) {
             return batch(_mm512_range_ps(u, v, 0x0b));  // select the larger |.|, clear the sign
         }
 #endif
         return xsimd::max(xsimd::abs(u), xsimd::abs(v));
     }
 
-    /// (K * 2^66) * c: K (1 + 2^-10) 2^-21 per lane, +inf where K >= 2^62.
-    static OBBSAT_LANE_INLINE batch margin_scale(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    /// (K * guard) * scale: K (1 + 2^-10) 2^-21 (float) or 2^-50 (double) per
+    /// lane, +inf where K · guard overflows.
+    static OBBSAT_LANE_INLINE batch margin_scale(const corners& a, const corners& b) {
         batch k;
-        if constexpr (std::is_base_of<xsimd::avx512dq, Arch>::value) {
+        // The magnitudes are finite and none is negative, so their largest,
+        // found in any order, is the reference's max-pick fold.
+        if constexpr (!is_float || std::is_base_of<xsimd::avx512dq, Arch>::value) {
             k = larger_magnitude(a.c[0], a.c[1]);
             for (unsigned i = 2; i < coord_count; ++i) {
                 k = larger_magnitude(k, a.c[i]);
@@ -54,11 +81,11 @@ struct conservative_lanes {
             }
             k = xsimd::bitwise_cast<batch>(largest);
         }
-        return (k * batch(0x1p66f)) * batch(0x1.004p-87f);
+        return (k * batch(constants::guard)) * batch(constants::scale);
     }
 
     /// min and max of the four fused corner scalars fma(x, ax, y * ay), folded UL, UR, LR, LL.
-    static OBBSAT_LANE_INLINE void project(const quad_lanes<Arch>& q, const batch& ax, const batch& ay, batch& lo,
+    static OBBSAT_LANE_INLINE void project(const corners& q, const batch& ax, const batch& ay, batch& lo,
                                            batch& hi) {
         batch s[4];
         for (unsigned k = 0; k < 4; ++k) {
@@ -67,16 +94,16 @@ struct conservative_lanes {
         sat4_steps<batch>::fold(s, lo, hi);
     }
 
-    static OBBSAT_LANE_INLINE mask proven_apart_on(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b,
+    static OBBSAT_LANE_INLINE mask proven_apart_on(const corners& a, const corners& b,
                                                    const batch& ax, const batch& ay, const batch& scale) {
         batch min_a, max_a, min_b, max_b;
         project(a, ax, ay, min_a, max_a);
         project(b, ax, ay, min_b, max_b);
-        const batch margin = fused_multiply_add<Arch>(scale, larger_magnitude(ax, ay), batch(0x1p-140f));
+        const batch margin = fused_multiply_add<Arch>(scale, larger_magnitude(ax, ay), batch(constants::margin_floor));
         return max_pick(min_b - max_a, min_a - max_b) > margin;
     }
 
-    static OBBSAT_LANE_INLINE lane_verdicts collide(const quad_lanes<Arch>& a, const quad_lanes<Arch>& b) {
+    static OBBSAT_LANE_INLINE lane_verdicts collide(const corners& a, const corners& b) {
         const batch scale = margin_scale(a, b);
         const mask apart_on_a = proven_apart_on(a, b, a.x(UR) - a.x(UL), a.y(UR) - a.y(UL), scale) |
                                 proven_apart_on(a, b, a.x(UR) - a.x(LR), a.y(UR) - a.y(LR), scale);
@@ -89,6 +116,10 @@ struct conservative_lanes {
         return lane_verdicts{lane_bits(~apart), 0};
     }
 };
+
+/// Method conservative on float corners (the lanes method_catalogue.hpp names).
+template <class Arch>
+struct conservative_lanes : conservative_steps<Arch, float> {};
 
 }  // namespace
 }  // namespace obbsat::detail

@@ -9,6 +9,8 @@
 
 #include "lanes/lanes.hpp"
 
+#include <cmath>
+
 namespace obbsat::detail {
 namespace {
 
@@ -80,6 +82,34 @@ lanes<Arch> fused_multiply_add(const lanes<Arch>& x, const lanes<Arch>& y, const
             high = multiply_add_rounded_to_odd(x_high, y_high, z_high);
         }
         return lanes<Arch>(_mm_movelh_ps(_mm_cvtpd_ps(low), _mm_cvtpd_ps(high)));
+    }
+}
+
+/// The same on double lanes, the operation std::fma does on one double. SSE2
+/// has neither the instruction nor a wider type to compute it exactly in, so
+/// there each lane goes through std::fma itself (a call into the C library,
+/// compiled at the baseline): correct, not fast.
+template <class Arch>
+xsimd::batch<double, Arch> fused_multiply_add(const xsimd::batch<double, Arch>& x,
+                                              const xsimd::batch<double, Arch>& y,
+                                              const xsimd::batch<double, Arch>& z) {
+    using batch = xsimd::batch<double, Arch>;
+    if constexpr (std::is_base_of<xsimd::avx512f, Arch>::value) {
+#ifdef __AVX512F__
+        return batch(_mm512_fmadd_pd(x, y, z));
+#endif
+    } else if constexpr (std::is_base_of<xsimd::avx, Arch>::value) {
+#ifdef __FMA__
+        return batch(_mm256_fmadd_pd(x, y, z));
+#else
+        static_assert(sizeof(Arch) == 0, "the AVX2 backend must be compiled with -mfma");
+#endif
+    } else {
+        const __m128d xd = x, yd = y, zd = z;
+        const double low = std::fma(_mm_cvtsd_f64(xd), _mm_cvtsd_f64(yd), _mm_cvtsd_f64(zd));
+        const double high = std::fma(_mm_cvtsd_f64(_mm_unpackhi_pd(xd, xd)), _mm_cvtsd_f64(_mm_unpackhi_pd(yd, yd)),
+                                     _mm_cvtsd_f64(_mm_unpackhi_pd(zd, zd)));
+        return batch(_mm_set_pd(high, low));
     }
 }
 

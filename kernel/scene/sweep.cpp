@@ -21,11 +21,16 @@ void pair_search::test_pairs(part& p, const pair_index* pairs, std::size_t count
     const auto kernel_start = clock_type::now();
     if (doubles_) {
         // The double method on the double rows in the query's order: the
-        // backend's double-pose lanes, or the scalar references (double
-        // corners have no lanes; neither has the scalar backend).
+        // backend's double lanes, or the scalar references on the scalar backend.
         const double* rows = records64_.data()->v;
         const double_kernel_table* lanes = double_kind_ == store_kind::poses ? double_kernels_for(ran_) : nullptr;
-        if (lanes != nullptr) {
+        const corner64_kernel_table* corner_lanes =
+            double_kind_ == store_kind::corners ? corner64_kernels_for(ran_) : nullptr;
+        if (corner_lanes != nullptr) {
+            const rect64_indexed_fn kernel =
+                options_.test == method::exact ? corner_lanes->exact : corner_lanes->conservative;
+            p.slow_path += kernel(reinterpret_cast<const rect64*>(rows), pairs, count, verdicts);
+        } else if (lanes != nullptr) {
             const pose64_indexed_fn kernel = options_.test == method::exact          ? lanes->exact
                                              : options_.test == method::conservative ? lanes->conservative
                                                                                      : lanes->local;

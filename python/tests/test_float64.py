@@ -85,6 +85,18 @@ def test_float64_poses_and_corners_give_the_exact_answer(scene):
     assert obbsat.colliding_pairs(rects, pairs).tolist() == pairs[expected_rects].tolist()
 
 
+def test_float64_corners_give_the_exact_answer_on_every_backend(scene):
+    poses, rects, truth_poses, truth_rects = scene
+    pairs = np.array(list(itertools.combinations(range(60), 2)), dtype=np.uint32)
+    in_rects = {tuple(p) for p in truth_rects.tolist()}
+    expected = [tuple(p) in in_rects for p in pairs.tolist()]
+    for backend in obbsat.backends():
+        assert obbsat.collide(rects, pairs, method="exact", backend=backend).tolist() == expected, backend
+        conservative = obbsat.collide(rects, pairs, method="conservative", backend=backend, threads=2)
+        assert conservative.tolist() == obbsat.collide(rects, pairs, method="conservative", backend="scalar").tolist()
+        assert obbsat.find_pairs(rects, backend=backend).tolist() == truth_rects.tolist(), backend
+
+
 def test_float32_rounding_flips_verdicts_and_is_only_taken_on_request(scene):
     poses, rects, truth_poses, truth_rects = scene
     rounded = obbsat.find_pairs(poses, precision="float32")

@@ -1,6 +1,6 @@
 // collide_pairs over the double stores: verdicts equal to the double scalar
 // references pair by pair, whatever the thread count; methods that do not run on
-// doubles, SIMD backends, bad indices and overlapping buffers refused with
+// doubles, bad indices and overlapping buffers refused with
 // invalid_input and nothing written; the slow-path count of exact reported.
 #include "test_support/pose_cases64.hpp"
 
@@ -133,10 +133,9 @@ TEST(collide64, refuses_what_does_not_run_on_doubles_and_writes_nothing) {
               "method local does not run on double corners (they take conservative, exact)");
     EXPECT_EQ(on_corners(with(method::sat4_double)),
               "method sat4_double does not run on double corners (they take conservative, exact)");
-    collide_options simd = with(method::exact);
-    simd.use = obbsat::backend::sse2;
-    EXPECT_EQ(on_corners(simd), "backend sse2 has no kernels for double corners: they run on the scalar backend "
-                                "(pass backend::automatic or backend::scalar)");
+    collide_options unknown = with(method::exact);
+    unknown.test = static_cast<method>(200);
+    EXPECT_EQ(on_corners(unknown), "collide_options::test holds 200, which names no method");
     std::vector<pair_index> bad = s.pairs;
     bad[5].b = 100;
     EXPECT_EQ(refusal([&] { obbsat::collide_pairs(poses, bad, with(method::exact)); }),

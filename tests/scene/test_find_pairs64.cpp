@@ -6,7 +6,9 @@
 // that the double reference calls colliding. Also: the outward bounds contain
 // every corner, a pair_finder over moving frames answers as fresh queries,
 // cross queries, the errors, and a scene whose float32 rounding flips
-// verdicts that the double query gets right.
+// verdicts that the double query gets right. The double-corner candidates
+// are decided on every backend this CPU runs.
+#include <obbsat/backend.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/oracle/contact64.hpp>
@@ -186,6 +188,16 @@ TEST(FindPairs64, EveryMethodEqualsBruteForceOnPosesAndCorners) {
                 const collide_options o = options_for(m, threads);
                 EXPECT_TRUE(same_pairs(obbsat::find_pairs(rects, o), on_corners)) << obbsat::method_name(m);
                 EXPECT_TRUE(same_pairs(obbsat::find_pairs(rect_store, o), on_corners)) << obbsat::method_name(m);
+            }
+            // The candidates on double corners through every backend's lanes.
+            for (const obbsat::backend b : obbsat::compiled_backends()) {
+                if (!obbsat::cpu_supports(b)) {
+                    continue;
+                }
+                collide_options o = options_for(m, 1);
+                o.use = b;
+                EXPECT_TRUE(same_pairs(obbsat::find_pairs(rect_store, o), on_corners))
+                    << obbsat::method_name(m) << " on " << obbsat::backend_name(b);
             }
         }
     }

@@ -82,7 +82,7 @@ int run_double_accuracy(const accuracy::accuracy_settings& settings, io::atomic_
     std::fflush(stdout);
     const accuracy::double_accuracy_report report =
         accuracy::measure_double_accuracy(settings, family_progress(""));
-    std::printf("verdicts on the %s backend (the fastest this CPU runs; double corners: scalar); cpu: %s\n\n",
+    std::printf("verdicts on the %s backend (the fastest this CPU runs); cpu: %s\n\n",
                 backend_name(report.used), report.cpu.c_str());
     accuracy::print_double_report(stdout, report);
     if (json != nullptr || svg != nullptr) {
@@ -120,8 +120,8 @@ void print_accuracy_help(std::FILE* out) {
                  "\n"
                  "With --precision double: N pairs of every double family (see 'obbsat gen\n"
                  "--help'), labelled by the exact double oracle; rows exact, conservative and\n"
-                 "local on double poses, exact and conservative on double corners (scalar\n"
-                 "backend), and for contrast float32 exact on the same pairs rounded to\n"
+                 "local on double poses, exact and conservative on double corners, and for\n"
+                 "contrast float32 exact on the same pairs rounded to\n"
                  "float32, scored against the double truth (pairs float32 cannot hold are\n"
                  "counted apart). Speed is that of the scoring runs (--reps is not used);\n"
                  "--json and --svg write the same rows.\n"

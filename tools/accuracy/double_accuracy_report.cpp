@@ -184,8 +184,7 @@ double_accuracy_report measure_double_accuracy(const accuracy_settings& settings
                 seconds[r] += score_row(row, float_store, rounded_set.pairs, rounded_set.truth, report.used,
                                         settings.threads);
             } else {
-                // Double corners run on the scalar backend only.
-                seconds[r] += score_row(row, store, s.pairs, truth, backend::scalar, settings.threads);
+                seconds[r] += score_row(row, store, s.pairs, truth, report.used, settings.threads);
             }
             row.not_representable.push_back(row.float32 ? rounded_set.dropped : 0);
             row.total_not_representable += row.not_representable.back();

@@ -7,7 +7,7 @@
 //
 // Rows: exact, conservative and local on pose_records64 over the double pose
 // families; exact and conservative on rect_records64 over the double corner
-// families (scalar backend: double corners have no SIMD lanes yet); exact on
+// families; exact on
 // pose_records and on rect_records over the same pairs rounded to float32. A
 // pair that float32 cannot hold (a value beyond float range, a rotation vector
 // rounded to (0, 0)) is left out of the float32 row's counts and counted as
@@ -44,7 +44,7 @@ struct double_method_result {
 
 struct double_accuracy_report {
     accuracy_settings settings;
-    backend used = backend::scalar;  ///< the backend of every row but the double corners (scalar)
+    backend used = backend::scalar;  ///< the backend of every row
     std::string cpu;
     std::vector<family_truth> pose_families;    ///< double_pose_family_names() order
     std::vector<family_truth> corner_families;  ///< double_corner_family_names() order

@@ -82,7 +82,7 @@ void print_double_report(std::FILE* out, const double_accuracy_report& report) {
     }
     std::fprintf(out,
                  "summary over all families of each row's store; Mpairs/s over all its scoring runs\n"
-                 "(boundary-heavy pairs, %u thread(s), %s backend; double corners: scalar):\n",
+                 "(boundary-heavy pairs, %u thread(s), %s backend):\n",
                  report.settings.threads, backend_name(report.used));
     std::fprintf(out, "  %-30s %9s %9s %9s %11s  %10s  %9s  %12s\n", "method", "pairs", "FP", "FN touch",
                  "FN overlap", "error rate", "Mpairs/s", "not in float");

@@ -202,18 +202,6 @@ precision precision_option(const parsed_options& options) {
 
 const char* precision_name(precision p) { return p == precision::double_ ? "double" : "float"; }
 
-backend store_backend(const parsed_options& options, const rectangle_input& input, precision p, backend resolved) {
-    if (p != precision::double_ || input.kind != store_kind::corners) {
-        return resolved;
-    }
-    const backend asked = backend_option(options);
-    if (asked != backend::automatic && asked != backend::scalar) {
-        throw usage_error(std::string("--backend ") + backend_name(asked) +
-                          ": double corners (--rects with --precision double) run on the scalar backend only");
-    }
-    return backend::scalar;
-}
-
 method double_store_method_option(const parsed_options& options, const rectangle_input& input) {
     const method m = method_option(options, input.kind == store_kind::corners ? method::exact : method::local);
     if (!runs_on_doubles(m, input.kind)) {

@@ -112,9 +112,4 @@ const char* precision_name(precision p);
 /// methods that do.
 method double_store_method_option(const parsed_options& options, const rectangle_input& input);
 
-/// The backend a command runs on: `resolved` (resolve_backend of --backend),
-/// except for double corners, which run on the scalar backend only: there an
-/// explicit --backend other than scalar is a usage error.
-backend store_backend(const parsed_options& options, const rectangle_input& input, precision p, backend resolved);
-
 }  // namespace obbsat::cli

@@ -136,7 +136,7 @@ void print_collide_help(std::FILE* out) {
                  "decimal or hex) into the double stores and decides the pairs for those\n"
                  "doubles, not for a float rounding of them (UTM metres, for one). Methods\n"
                  "(default: exact on --rects, local on --poses; any other is an error):\n"
-                 "  on --rects: %s (scalar backend only)\n"
+                 "  on --rects: %s\n"
                  "  on --poses: %s\n",
                  method_list(methods_on_doubles(store_kind::corners)).c_str(),
                  method_list(methods_on_doubles(store_kind::poses)).c_str());
@@ -188,7 +188,6 @@ int run_collide(const arguments& args) {
     // Resolved once, before any file is read, so a backend this CPU lacks (or
     // a bad OBBSAT_BACKEND) fails at once, and every chunk runs on the same one.
     run.use = resolve_backend(backend_option(options));
-    run.use = store_backend(options, input, digits, run.use);
 
     // Open everything before the long parse, so a missing file or an
     // unwritable --out is reported at once.

@@ -275,7 +275,6 @@ int run_draw(const arguments& args) {
     run.test = digits == precision::double_ ? double_store_method_option(options, input)
                                             : store_method_option(options, input);
     run.use = resolve_backend(backend_option(options));
-    run.use = store_backend(options, input, digits, run.use);
 
     const io::input_file rects_file(input.path);
     const io::input_file pairs_file(pairs_path);

@@ -9,13 +9,12 @@
 // double corners conservative and exact (conservative64.hpp, exact64.hpp).
 // Any other method is refused with invalid_input naming those that run.
 //
-// On double poses every backend runs them, one pair per lane of doubles (2 per
-// SSE2 vector, 4 per AVX2, 8 per AVX-512), bit for bit the scalar references;
-// options.use picks the backend as for float stores (unsupported_backend for
-// one this CPU cannot run). Double corners have no SIMD lanes yet: they run on
-// the scalar backend, and an explicit SIMD backend is refused with
-// invalid_input. Either way the batch is split over options.threads cores, and
-// verdicts never depend on the backend or the thread count. Indices are checked
+// On both double stores every backend runs them, one pair per lane of doubles
+// (2 per SSE2 vector, 4 per AVX2, 8 per AVX-512), bit for bit the scalar
+// references; options.use picks the backend as for float stores
+// (unsupported_backend for one this CPU cannot run). The batch is split over
+// options.threads cores, and verdicts never depend on the backend or the
+// thread count. Indices are checked
 // first (invalid_input naming the first bad pair), and a verdict buffer that
 // shares memory with the pairs is refused; nothing is written then. For exact,
 // options.slow_path_pairs receives how many pairs the double oracle settled.

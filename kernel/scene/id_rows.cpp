@@ -4,6 +4,7 @@
 #include <obbsat/error.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -229,6 +230,27 @@ void id_rows::commit(const std::uint64_t* ids, const row_match& m) {
         ids_.assign(ids, ids + m.count);
     }
     ready_ = true;
+}
+
+void rematch_as_new(row_match& m, const std::vector<std::uint32_t>& last_rows) {
+    if (last_rows.empty()) {
+        return;
+    }
+    std::vector<std::uint32_t> rows_now;
+    rows_now.reserve(last_rows.size());
+    for (const std::uint32_t l : last_rows) {
+        rows_now.push_back(m.now_of_last[l]);
+        m.now_of_last[l] = no_row;
+    }
+    std::sort(rows_now.begin(), rows_now.end());
+    const auto merge_in = [](std::vector<std::uint32_t>& into, const std::vector<std::uint32_t>& more) {
+        const auto middle = static_cast<std::ptrdiff_t>(into.size());
+        into.insert(into.end(), more.begin(), more.end());
+        std::inplace_merge(into.begin(), into.begin() + middle, into.end());
+    };
+    merge_in(m.gone, last_rows);
+    merge_in(m.fresh, rows_now);
+    m.same_rows = false;
 }
 
 void id_rows::clear() {

@@ -238,7 +238,7 @@ bool pair_search::absorb_changes(const query_input& input) {
     add_slots(input, fresh);
     // Step 3: the new slots' candidates, appended to the kept ones.
     const std::size_t kept_before = kept_.pairs.size();
-    find_new_candidates(first_new);
+    find_new_candidates(input, first_new);
     // Step 4: by_caller in this call's rows, with the new candidates.
     kept_.moved_pairs.clear();
     for (std::size_t i = kept_before; i < kept_.pairs.size(); ++i) {
@@ -336,7 +336,21 @@ void pair_search::add_slots(const query_input& input, const std::vector<std::uin
     }
 }
 
-void pair_search::find_new_candidates(std::size_t first_new) {
+bool pair_search::follow_filters(const query_input& input) {
+    std::vector<std::uint32_t> changed_a, changed_b;
+    if (!kept_filters_.changed_rows(input, match_a_, self_ ? nullptr : &match_b_, changed_a, changed_b)) {
+        return false;
+    }
+    if (changed_a.empty() && changed_b.empty()) {
+        return true;
+    }
+    rematch_as_new(match_a_, changed_a);
+    rematch_as_new(match_b_, changed_b);
+    rows_changed_ = true;
+    return true;
+}
+
+void pair_search::find_new_candidates(const query_input& input, std::size_t first_new) {
     const unsigned q_bits = grid_.q_bits;
     const std::uint32_t* const order = order_.data();
     const std::uint32_t* const keys = keys_.data();
@@ -344,6 +358,7 @@ void pair_search::find_new_candidates(std::size_t first_new) {
     const std::uint32_t* const added_begin = kept_.added_begin.data();
     const signed_bounds* const widened = kept_.widened.data();
     const auto offset = static_cast<std::uint32_t>(a_count_);
+    const bool filtered = input.filtered();
     std::vector<std::uint32_t>& near = kept_.near;
     for (std::size_t xs = first_new; xs < kept_.slots; ++xs) {
         const auto x = static_cast<std::uint32_t>(xs);
@@ -403,6 +418,7 @@ void pair_search::find_new_candidates(std::size_t first_new) {
         std::size_t found = 0;
         const std::uint32_t x_row = order[x];
         const std::uint8_t x_side = side_[x];
+        const filter_values x_filters = filtered ? filter_of(input, x_row) : filter_values{};
         for (const std::uint32_t y : near) {
             const signed_bounds& by = widened[y];
             const std::uint32_t y_row = order[y];
@@ -410,9 +426,11 @@ void pair_search::find_new_candidates(std::size_t first_new) {
                                  (bx.v[1] <= -by.v[3]);
             const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
                                (self_ | (side_[y] != x_side));
+            // The filters, as the sweep drops a filtered pair before it keeps it.
+            const bool passes = !filtered || (y_row != no_row && filters_pass(x_filters, filter_of(input, y_row)) != 0);
             const bool swap = self_ ? x_row > y_row : x_row >= offset;
             out[found] = swap ? pair_index{y, x} : pair_index{x, y};
-            found += (overlap & other) ? 1u : 0u;
+            found += (overlap & other & passes) ? 1u : 0u;
         }
         kept_.pairs.resize(at + found);
     }

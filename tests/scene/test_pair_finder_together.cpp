@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/pair_finder_id_pairs.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -28,6 +30,9 @@ using obbsat::id_pair;
 using obbsat::method;
 using obbsat::pair_index;
 using obbsat::rect_pose;
+using obbsat_test::by_id;
+using obbsat_test::id_less;
+using obbsat_test::minus;
 
 /// Runs the ranges of a task last to first, on the calling thread.
 void* enqueue_backwards(obbsat::executor_task task, std::size_t count, std::size_t, void* task_context, void*) {
@@ -79,24 +84,35 @@ struct frames {
 
     /// Drift, about 1% of the rows erased, swap-removed or appended, now and then a filter changed.
     void step() {
-        for (row& r : rows) {
-            r.pose.center.x += random.uniform(-0.02f, 0.02f);
-            r.pose.center.y += random.uniform(-0.02f, 0.02f);
-        }
+        drift();
         const std::size_t changes = rows.size() / 100 + 1;
         for (std::size_t c = 0; c < changes; ++c) {
             const std::size_t at = random.below(rows.size());
             const std::uint64_t what = random.below(3);
-            if (what == 0) {
-                rows.erase(rows.begin() + static_cast<std::ptrdiff_t>(at));
-            } else if (what == 1) {
-                rows[at] = rows.back();
-                rows.pop_back();
+            if (what < 2) {
+                remove_row(at, what == 1);
             }
             rows.push_back(fresh_row());
         }
         if (random.below(5) == 0) {
             rows[random.below(rows.size())].group = 7;
+        }
+    }
+
+    /// Row `at` erased (the rows after it shift) or, with `swap_last`, replaced by the last row.
+    void remove_row(std::size_t at, bool swap_last) {
+        if (swap_last) {
+            rows[at] = rows.back();
+            rows.pop_back();
+        } else {
+            rows.erase(rows.begin() + static_cast<std::ptrdiff_t>(at));
+        }
+    }
+
+    void drift() {
+        for (row& r : rows) {
+            r.pose.center.x += random.uniform(-0.02f, 0.02f);
+            r.pose.center.y += random.uniform(-0.02f, 0.02f);
         }
     }
 
@@ -116,19 +132,13 @@ struct frames {
     /// appended or inserted, two rows swapped, a row's filters changed; now
     /// and then a run of rows reversed. The count stays about steady.
     void step_mixed(std::size_t changes) {
-        for (row& r : rows) {
-            r.pose.center.x += random.uniform(-0.02f, 0.02f);
-            r.pose.center.y += random.uniform(-0.02f, 0.02f);
-        }
+        drift();
         const std::size_t target = rows.size();
         for (std::size_t c = 0; c < changes; ++c) {
             const std::size_t at = random.below(rows.size());
             const std::uint64_t what = random.below(7);
-            if (what == 0) {
-                rows.erase(rows.begin() + static_cast<std::ptrdiff_t>(at));
-            } else if (what == 1) {
-                rows[at] = rows.back();
-                rows.pop_back();
+            if (what < 2) {
+                remove_row(at, what == 1);
             } else if (what == 2) {
                 rows.push_back(fresh_row());
             } else if (what == 3) {
@@ -155,6 +165,12 @@ struct frames {
     }
 };
 
+collide_options options_for(method m) {
+    collide_options options;
+    options.test = m;
+    return options;
+}
+
 /// The arrays of one frame's rows, which a box_view reads in place.
 struct frame_arrays {
     std::vector<rect_pose> poses;
@@ -172,30 +188,6 @@ struct frame_arrays {
     obbsat::pair_filters filters() const { return {categories.data(), masks.data(), groups.data()}; }
     obbsat::box_view view() const { return obbsat::box_view(poses).with_filters(filters()); }
 };
-
-bool id_less(const id_pair& x, const id_pair& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); }
-
-/// The answer read as id pairs, sorted: the smaller id first within one set, a's id first across two.
-std::vector<id_pair> by_id(const std::vector<pair_index>& pairs, const std::vector<std::uint64_t>& a_ids,
-                           const std::vector<std::uint64_t>* b_ids) {
-    std::vector<id_pair> out;
-    for (const pair_index& p : pairs) {
-        std::uint64_t x = a_ids[p.a];
-        std::uint64_t y = b_ids != nullptr ? (*b_ids)[p.b] : a_ids[p.b];
-        if (b_ids == nullptr && x > y) {
-            std::swap(x, y);
-        }
-        out.push_back(id_pair{x, y});
-    }
-    std::sort(out.begin(), out.end(), id_less);
-    return out;
-}
-
-std::vector<id_pair> minus(const std::vector<id_pair>& x, const std::vector<id_pair>& y) {
-    std::vector<id_pair> out;
-    std::set_difference(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(out), id_less);
-    return out;
-}
 
 bool same_pairs(const std::vector<pair_index>& x, const std::vector<pair_index>& y) {
     return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(), [](const pair_index& p, const pair_index& q) {
@@ -252,8 +244,7 @@ TEST(pair_finder_together, ids_filters_and_an_engine_executor) {
 // is the fresh double query's answer.
 TEST(pair_finder_together, double_rows_with_ids_that_come_and_go) {
     frames world(2000, 41);
-    collide_options options;
-    options.test = method::exact;
+    const collide_options options = options_for(method::exact);
     obbsat::pair_finder finder(options);
     for (int frame = 0; frame < 20; ++frame) {
         if (frame > 0) {
@@ -334,8 +325,7 @@ TEST(pair_finder_together, a_filter_change_alone_ends_and_begins_pairs_from_kept
         r.mask = ~std::uint64_t{0};
         r.group = 0;
     }
-    collide_options options;
-    options.test = method::exact;
+    const collide_options options = options_for(method::exact);
     obbsat::pair_finder finder(options);
     finder.track_events(true);
     const auto answer = [&]() {
@@ -372,8 +362,7 @@ TEST(pair_finder_together, a_filter_change_alone_ends_and_begins_pairs_from_kept
 TEST(pair_finder_together, filters_follow_ids_on_both_sides_of_two_sets) {
     frames a(2000, 71);
     frames b(2000, 72);
-    collide_options options;
-    options.test = method::exact;
+    const collide_options options = options_for(method::exact);
     obbsat::pair_finder finder(options);
     std::size_t from_kept = 0;
     for (int frame = 0; frame < 25; ++frame) {
@@ -394,8 +383,7 @@ TEST(pair_finder_together, filters_follow_ids_on_both_sides_of_two_sets) {
 // Filters given, taken away and given again between frames with ids: each such frame is a full query, right.
 TEST(pair_finder_together, filters_given_and_taken_away_with_ids_answer_right) {
     frames world(2000, 81);
-    collide_options options;
-    options.test = method::local;
+    const collide_options options = options_for(method::local);
     obbsat::pair_finder finder(options);
     for (int frame = 0; frame < 12; ++frame) {
         if (frame > 0) {

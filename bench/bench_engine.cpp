@@ -11,6 +11,10 @@
 //       (box_view::with_ids), so that the finder follows rows that come and
 //       go; engine_frame/drift is the same scene with no rows changed, so
 //       spawn_despawn over drift reads the cost of the change from one run.
+//       A scene with pair filters (spawn_despawn_filtered) passes them to
+//       both rows (box_view::with_filters); its reused_candidates counter
+//       shows whether frames whose rows and filters changed are answered
+//       from kept candidates (the filters follow the ids).
 //   engine_cold/<scene>/boxes:<N>/threads:<T>   a fresh obbsat::find_pairs
 //       on the same frames.
 // Both on poses, method exact. Counters ns_per_box and pairs_per_box (per
@@ -75,9 +79,16 @@ obbsat::collide_options exact_options(unsigned threads) {
     return options;
 }
 
-/// The current frame's rows, with their ids when the scene gives ids.
-obbsat::box_view frame_view(const engine_sequence& frames) {
+/// The current frame's rows, with their filters when the scene gives filters.
+obbsat::box_view cold_view(const engine_sequence& frames) {
     const obbsat::box_view rows(frames.poses());
+    const obbsat::pair_filters filters = frames.filters();
+    return filters.any() ? rows.with_filters(filters) : rows;
+}
+
+/// The same, with their ids when the scene gives ids.
+obbsat::box_view frame_view(const engine_sequence& frames) {
+    const obbsat::box_view rows = cold_view(frames);
     const std::vector<std::uint64_t>* ids = frames.ids();
     return ids != nullptr ? rows.with_ids(*ids) : rows;
 }
@@ -96,7 +107,7 @@ const std::string& check_engine_scene(engine_scene scene, std::size_t boxes, uns
     const int count = boxes <= check_limit ? check_frames : 4;
     for (int t = 0; t < count && error.empty(); ++t, frames->step()) {
         const std::vector<obbsat::pair_index>& kept = finder.find(frame_view(*frames));
-        const std::vector<obbsat::pair_index> cold = obbsat::find_pairs(frames->poses(), exact_options(threads));
+        const std::vector<obbsat::pair_index> cold = obbsat::find_pairs(cold_view(*frames), exact_options(threads));
         const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
             return x.a == y.a && x.b == y.b;
         };
@@ -144,7 +155,7 @@ void run_engine_row(benchmark::State& state, engine_scene scene, std::size_t box
                 candidates += static_cast<double>(finder.stats().candidates);
                 kept_candidates += static_cast<double>(finder.stats().kept_candidates);
             } else {
-                cold = obbsat::find_pairs(frames->poses(), exact_options(threads));
+                cold = obbsat::find_pairs(cold_view(*frames), exact_options(threads));
                 benchmark::DoNotOptimize(cold.data());
                 pairs += static_cast<double>(cold.size());
             }

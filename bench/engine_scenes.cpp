@@ -297,11 +297,30 @@ protected:
     obbsat::pose_records current_;
 };
 
+/// The filter values of a box, drawn from its id and how many times its filters changed.
+struct box_filters {
+    std::uint64_t category;
+    std::uint64_t mask;
+    std::int32_t group;
+};
+
+box_filters filters_of(std::uint64_t id, std::uint64_t changes) {
+    obbsat::seeded_random draw(id * 0x9e3779b97f4a7c15ull + changes);
+    box_filters f;
+    f.category = std::uint64_t{1} << draw.below(4);
+    f.mask = draw.below(8) == 0 ? ~(std::uint64_t{1} << draw.below(4)) : ~std::uint64_t{0};
+    // Groups of a few boxes with neighbouring ids.
+    f.group = draw.below(16) == 0 ? static_cast<std::int32_t>(1 + (id / (2 + draw.below(3))) % 100000) : 0;
+    return f;
+}
+
 class spawn_despawn_sequence final : public drifting_uniform_sequence {
 public:
-    explicit spawn_despawn_sequence(std::size_t boxes) : drifting_uniform_sequence(boxes, 41) {
+    spawn_despawn_sequence(std::size_t boxes, bool filtered)
+        : drifting_uniform_sequence(boxes, 41), filtered_(filtered) {
         for (std::size_t i = 0; i < rows_.size(); ++i) {
             ids_.push_back(next_id_++);
+            add_filters(ids_.back());
         }
     }
 
@@ -315,26 +334,68 @@ public:
                 rows_[kept] = rows_[i];
                 velocity_[kept] = velocity_[i];
                 ids_[kept] = ids_[i];
+                if (filtered_) {
+                    categories_[kept] = categories_[i];
+                    masks_[kept] = masks_[i];
+                    groups_[kept] = groups_[i];
+                }
                 ++kept;
             }
         }
         rows_.resize(kept);
         velocity_.resize(kept);
         ids_.resize(kept);
+        if (filtered_) {
+            categories_.resize(kept);
+            masks_.resize(kept);
+            groups_.resize(kept);
+        }
         for (std::size_t k = 0; k < churn; ++k) {
             rows_.push_back(random_box());
             velocity_.push_back(random_velocity());
             ids_.push_back(next_id_++);
+            add_filters(ids_.back());
+        }
+        if (filtered_) {
+            // A few boxes change their filters (their own draws: the rows stay spawn_despawn's).
+            const std::size_t changed = std::max<std::size_t>(1, rows_.size() / 1000);
+            for (std::size_t k = 0; k < changed; ++k) {
+                const auto i = static_cast<std::size_t>(filter_random_.below(rows_.size()));
+                const box_filters f = filters_of(ids_[i], ++filter_changes_);
+                categories_[i] = f.category;
+                masks_[i] = f.mask;
+                groups_[i] = f.group;
+            }
         }
         // The rows a user would pass: a new store each frame.
         current_ = obbsat::pose_records(rows_);
     }
 
     const std::vector<std::uint64_t>* ids() const override { return &ids_; }
+    obbsat::pair_filters filters() const override {
+        if (!filtered_) {
+            return {};
+        }
+        return {categories_.data(), masks_.data(), groups_.data()};
+    }
 
 private:
+    void add_filters(std::uint64_t id) {
+        if (filtered_) {
+            const box_filters f = filters_of(id, 0);
+            categories_.push_back(f.category);
+            masks_.push_back(f.mask);
+            groups_.push_back(f.group);
+        }
+    }
+
+    bool filtered_;
     std::vector<std::uint64_t> ids_;
     std::uint64_t next_id_ = 0;
+    std::vector<std::uint64_t> categories_, masks_;
+    std::vector<std::int32_t> groups_;
+    obbsat::seeded_random filter_random_{43};
+    std::uint64_t filter_changes_ = 0;
 };
 
 class drift_sequence final : public drifting_uniform_sequence {
@@ -375,6 +436,8 @@ const char* engine_scene_name(engine_scene scene) {
             return "tumbler";
         case engine_scene::spawn_despawn:
             return "spawn_despawn";
+        case engine_scene::spawn_despawn_filtered:
+            return "spawn_despawn_filtered";
         case engine_scene::drift:
             return "drift";
         case engine_scene::teleports:
@@ -390,7 +453,9 @@ std::unique_ptr<engine_sequence> make_engine_sequence(engine_scene scene, std::s
         case engine_scene::tumbler:
             return std::make_unique<tumbler_sequence>(boxes);
         case engine_scene::spawn_despawn:
-            return std::make_unique<spawn_despawn_sequence>(boxes);
+            return std::make_unique<spawn_despawn_sequence>(boxes, false);
+        case engine_scene::spawn_despawn_filtered:
+            return std::make_unique<spawn_despawn_sequence>(boxes, true);
         case engine_scene::drift:
             return std::make_unique<drift_sequence>(boxes);
         case engine_scene::teleports:

@@ -32,6 +32,14 @@
 //                  Each box has an id (counted up as boxes are made, the
 //                  ids of removed boxes never come back), which the
 //                  engine_frame rows pass (box_view::with_ids).
+//   spawn_despawn_filtered
+//                  spawn_despawn's frames (the same rows, ids and changes)
+//                  with pair filters that travel with their rows
+//                  (box_view::with_filters): a category of one of 4 bits,
+//                  a mask refusing one category for 1 box in 8, a group of 2
+//                  to 4 boxes for 1 box in 16, drawn from the box's id; and
+//                  every frame 0.1% of the boxes, drawn at random, take new
+//                  filter values. The engine_frame row passes ids and filters.
 //   drift          The same uniform drifting scene with no box removed or
 //                  added: spawn_despawn's frames without the change of rows,
 //                  the baseline its frame rows compare with.
@@ -40,6 +48,7 @@
 //                  scene's square.
 #pragma once
 
+#include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_records.hpp>
 
 #include <cstddef>
@@ -49,13 +58,13 @@
 
 namespace obbsat_bench {
 
-enum class engine_scene { stacks, tumbler, spawn_despawn, drift, teleports };
+enum class engine_scene { stacks, tumbler, spawn_despawn, spawn_despawn_filtered, drift, teleports };
 
-inline constexpr engine_scene engine_scenes[] = {engine_scene::stacks, engine_scene::tumbler,
-                                                 engine_scene::spawn_despawn, engine_scene::drift,
-                                                 engine_scene::teleports};
+inline constexpr engine_scene engine_scenes[] = {engine_scene::stacks,        engine_scene::tumbler,
+                                                 engine_scene::spawn_despawn, engine_scene::spawn_despawn_filtered,
+                                                 engine_scene::drift,         engine_scene::teleports};
 
-/// "stacks", "tumbler", "spawn_despawn", "drift" or "teleports".
+/// "stacks", "tumbler", "spawn_despawn", "spawn_despawn_filtered", "drift" or "teleports".
 const char* engine_scene_name(engine_scene scene);
 
 /// One run through a scene's frames, from frame 0.
@@ -69,6 +78,9 @@ public:
     /// The ids of the current frame's rows, one per row, when the scene
     /// gives its boxes ids (spawn_despawn); nullptr otherwise.
     virtual const std::vector<std::uint64_t>* ids() const { return nullptr; }
+    /// The pair filters of the current frame's rows (spawn_despawn_filtered),
+    /// valid until the next step; none given otherwise.
+    virtual obbsat::pair_filters filters() const { return {}; }
 };
 
 /// Frame 0 of `scene` with `boxes` boxes (walls and grounds counted).

@@ -4,8 +4,8 @@
 #include <obbsat/error.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 namespace obbsat::detail {
@@ -174,16 +174,19 @@ void id_rows::match(const std::uint64_t* ids, std::size_t count, bool follow, co
     // that row, moved; one whose id the last call had elsewhere shares it
     // with the row now matched there (the last ids are unique); any other is
     // fresh, and two fresh rows with one id are found by the sort.
-    std::unordered_map<std::uint64_t, std::uint32_t> left_ids;
+    // The left-over last ids sorted, searched by halving: a few thousand of
+    // them fit in the cache, where a node-based map allocated each one.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> left_ids;
     left_ids.reserve(left_last.size());
     for (const std::uint32_t row : left_last) {
-        left_ids.emplace(last[row], row);
+        left_ids.emplace_back(last[row], row);
     }
+    std::sort(left_ids.begin(), left_ids.end());
     std::vector<std::pair<std::uint64_t, std::uint32_t>> fresh;
     for (const std::uint32_t row : left_now) {
         const std::uint64_t id = ids[row];
-        const auto found = left_ids.find(id);
-        if (found != left_ids.end()) {
+        const auto found = std::lower_bound(left_ids.begin(), left_ids.end(), std::make_pair(id, std::uint32_t{0}));
+        if (found != left_ids.end() && found->first == id) {
             std::uint32_t& now = out.now_of_last[found->second];
             if (now != no_row) {
                 refuse_duplicate(label, now, row, id);
@@ -229,6 +232,27 @@ void id_rows::commit(const std::uint64_t* ids, const row_match& m) {
         ids_.assign(ids, ids + m.count);
     }
     ready_ = true;
+}
+
+void rematch_as_new(row_match& m, const std::vector<std::uint32_t>& last_rows) {
+    if (last_rows.empty()) {
+        return;
+    }
+    std::vector<std::uint32_t> rows_now;
+    rows_now.reserve(last_rows.size());
+    for (const std::uint32_t l : last_rows) {
+        rows_now.push_back(m.now_of_last[l]);
+        m.now_of_last[l] = no_row;
+    }
+    std::sort(rows_now.begin(), rows_now.end());
+    const auto merge_in = [](std::vector<std::uint32_t>& into, const std::vector<std::uint32_t>& more) {
+        const auto middle = static_cast<std::ptrdiff_t>(into.size());
+        into.insert(into.end(), more.begin(), more.end());
+        std::inplace_merge(into.begin(), into.begin() + middle, into.end());
+    };
+    merge_in(m.gone, last_rows);
+    merge_in(m.fresh, rows_now);
+    m.same_rows = false;
 }
 
 void id_rows::clear() {

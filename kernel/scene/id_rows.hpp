@@ -42,6 +42,11 @@ struct row_match {
     bool unchanged() const { return same_rows; }
 };
 
+/// Takes the last call's rows `last_rows` (increasing, each matched to a row
+/// now) as gone and their rows now as fresh, with the same ids: a row whose
+/// pair filters changed is carried over as a new row (kept_filters.hpp).
+void rematch_as_new(row_match& m, const std::vector<std::uint32_t>& last_rows);
+
 /// The ids of the last call's rows, and where each one was.
 class id_rows {
 public:

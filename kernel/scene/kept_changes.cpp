@@ -38,6 +38,7 @@
 #include "dispatch/backend_registry.hpp"
 #include "scene/out_of_order.hpp"
 #include "scene/search_common.hpp"
+#include "sort/pair_sort.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -238,7 +239,7 @@ bool pair_search::absorb_changes(const query_input& input) {
     add_slots(input, fresh);
     // Step 3: the new slots' candidates, appended to the kept ones.
     const std::size_t kept_before = kept_.pairs.size();
-    find_new_candidates(first_new);
+    find_new_candidates(input, first_new);
     // Step 4: by_caller in this call's rows, with the new candidates.
     kept_.moved_pairs.clear();
     for (std::size_t i = kept_before; i < kept_.pairs.size(); ++i) {
@@ -336,7 +337,21 @@ void pair_search::add_slots(const query_input& input, const std::vector<std::uin
     }
 }
 
-void pair_search::find_new_candidates(std::size_t first_new) {
+bool pair_search::follow_filters(const query_input& input) {
+    std::vector<std::uint32_t> changed_a, changed_b;
+    if (!kept_filters_.changed_rows(input, match_a_, self_ ? nullptr : &match_b_, changed_a, changed_b)) {
+        return false;
+    }
+    if (changed_a.empty() && changed_b.empty()) {
+        return true;
+    }
+    rematch_as_new(match_a_, changed_a);
+    rematch_as_new(match_b_, changed_b);
+    rows_changed_ = true;
+    return true;
+}
+
+void pair_search::find_new_candidates(const query_input& input, std::size_t first_new) {
     const unsigned q_bits = grid_.q_bits;
     const std::uint32_t* const order = order_.data();
     const std::uint32_t* const keys = keys_.data();
@@ -344,77 +359,99 @@ void pair_search::find_new_candidates(std::size_t first_new) {
     const std::uint32_t* const added_begin = kept_.added_begin.data();
     const signed_bounds* const widened = kept_.widened.data();
     const auto offset = static_cast<std::uint32_t>(a_count_);
+    const bool filtered = input.filtered();
+    // The slots in reach of a batch of new slots are gathered first
+    // (sequential reads of the strips' sorted keys), each one's widened
+    // bounds and row fetched ahead, and tested after, with no branch on the
+    // outcome: the random reads of a whole batch overlap (they are most of
+    // this step's cost).
+    constexpr std::size_t batch = 32;
+    std::size_t near_end[batch];
     std::vector<std::uint32_t>& near = kept_.near;
-    for (std::size_t xs = first_new; xs < kept_.slots; ++xs) {
-        const auto x = static_cast<std::uint32_t>(xs);
-        const std::uint32_t low = keys[x] >> q_bits;
-        const std::uint32_t high = strip_hi_[x];
-        const std::uint32_t q_lo = q_lo_[x];
-        const std::uint32_t q_hi = q_hi_[x];
-        const signed_bounds bx = widened[x];
-        // The slots in reach are gathered first (sequential reads of the
-        // strips' sorted keys) and tested after, with no branch on the
-        // outcome, so that their random reads overlap.
+    const auto consider = [&](std::uint32_t y) {
+        __builtin_prefetch(widened + y);
+        __builtin_prefetch(order + y);
+        near.push_back(y);
+    };
+    for (std::size_t batch_begin = first_new; batch_begin < kept_.slots; batch_begin += batch) {
+        const std::size_t batch_end = std::min(kept_.slots, batch_begin + batch);
         near.clear();
-        const auto consider = [&](std::uint32_t y) { near.push_back(y); };
-        for (std::uint32_t t = low; t <= high; ++t) {
-            const std::uint32_t strip_key = t << q_bits;
-            const std::uint32_t hi_key = strip_key | q_hi;
-            // The full query's entries of strip t: its own, and on x's lowest strip its visitors.
-            {
-                const std::uint32_t reach = kept_.full_reach[t];
-                const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
-                const std::uint32_t* const begin = keys + own_begin_[t];
-                const std::uint32_t* const end = keys + own_begin_[t + 1];
-                for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
-                    consider(static_cast<std::uint32_t>(k - keys));
+        for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+            const auto x = static_cast<std::uint32_t>(xs);
+            const std::uint32_t low = keys[x] >> q_bits;
+            const std::uint32_t high = strip_hi_[x];
+            const std::uint32_t q_lo = q_lo_[x];
+            const std::uint32_t q_hi = q_hi_[x];
+            for (std::uint32_t t = low; t <= high; ++t) {
+                const std::uint32_t strip_key = t << q_bits;
+                const std::uint32_t hi_key = strip_key | q_hi;
+                // The full query's entries of strip t: its own, and on x's lowest strip its visitors.
+                {
+                    const std::uint32_t reach = kept_.full_reach[t];
+                    const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
+                    const std::uint32_t* const begin = keys + own_begin_[t];
+                    const std::uint32_t* const end = keys + own_begin_[t + 1];
+                    for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
+                        consider(static_cast<std::uint32_t>(k - keys));
+                    }
+                    if (t == low) {
+                        const std::uint32_t* const vbegin = visit_keys_.data() + visit_begin_[t];
+                        const std::uint32_t* const vend = visit_keys_.data() + visit_begin_[t + 1];
+                        for (const std::uint32_t* v = seek(vbegin, vend, lo_key); v != vend && *v <= hi_key;
+                             ++v) {
+                            consider(visit_ids_[static_cast<std::size_t>(v - visit_keys_.data())]);
+                        }
+                    }
                 }
-                if (t == low) {
-                    const std::uint32_t* const vbegin = visit_keys_.data() + visit_begin_[t];
-                    const std::uint32_t* const vend = visit_keys_.data() + visit_begin_[t + 1];
-                    for (const std::uint32_t* v = seek(vbegin, vend, lo_key); v != vend && *v <= hi_key;
-                         ++v) {
-                        consider(visit_ids_[static_cast<std::size_t>(v - visit_keys_.data())]);
+                // The slots added since, in the strip holding the larger of the two lowest strips.
+                {
+                    const std::uint32_t reach = kept_.added_reach[t];
+                    const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
+                    const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
+                    const std::uint64_t* const strip_end = added + added_begin[t + 1];
+                    for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);
+                         e != strip_end && *e <= hi_entry; ++e) {
+                        const auto y = static_cast<std::uint32_t>(*e & 0xffffffffu);
+                        if (t == std::max(low, keys[y] >> q_bits)) {
+                            consider(y);
+                        }
                     }
                 }
             }
-            // The slots added since, in the strip holding the larger of the two lowest strips.
-            {
-                const std::uint32_t reach = kept_.added_reach[t];
-                const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
-                const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
-                const std::uint64_t* const strip_end = added + added_begin[t + 1];
-                for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);
-                     e != strip_end && *e <= hi_entry; ++e) {
-                    const auto y = static_cast<std::uint32_t>(*e & 0xffffffffu);
-                    if (t == std::max(low, keys[y] >> q_bits)) {
-                        consider(y);
-                    }
-                }
+            near_end[xs - batch_begin] = near.size();
+        }
+        std::size_t from = 0;
+        for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+            const auto x = static_cast<std::uint32_t>(xs);
+            // The widened bounds, the sweep's test; and not an empty slot, x
+            // itself, a new slot that finds x itself, or one of the same set.
+            // Each pair is put in the caller's order, as the sweep puts its
+            // candidates (flush_candidates).
+            const std::size_t at = kept_.pairs.size();
+            kept_.pairs.resize(at + (near_end[xs - batch_begin] - from));
+            pair_index* const out = kept_.pairs.data() + at;
+            std::size_t found = 0;
+            const signed_bounds bx = widened[x];
+            const std::uint32_t x_row = order[x];
+            const std::uint8_t x_side = side_[x];
+            const filter_values x_filters = filtered ? filter_of(input, x_row) : filter_values{};
+            for (std::size_t i = from; i < near_end[xs - batch_begin]; ++i) {
+                const std::uint32_t y = near[i];
+                const signed_bounds& by = widened[y];
+                const std::uint32_t y_row = order[y];
+                const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
+                                     (bx.v[1] <= -by.v[3]);
+                const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
+                                   (self_ | (side_[y] != x_side));
+                // The filters, as the sweep drops a filtered pair before it keeps it.
+                const bool passes = !filtered || (y_row != no_row && filters_pass(x_filters, filter_of(input, y_row)) != 0);
+                const bool swap = self_ ? x_row > y_row : x_row >= offset;
+                out[found] = swap ? pair_index{y, x} : pair_index{x, y};
+                found += (overlap & other & passes) ? 1u : 0u;
             }
+            kept_.pairs.resize(at + found);
+            from = near_end[xs - batch_begin];
         }
-        // The widened bounds, the sweep's test; and not an empty slot, x
-        // itself, a new slot that finds x itself, or one of the same set.
-        // Each pair is put in the caller's order, as the sweep puts its
-        // candidates (flush_candidates).
-        const std::size_t at = kept_.pairs.size();
-        kept_.pairs.resize(at + near.size());
-        pair_index* const out = kept_.pairs.data() + at;
-        std::size_t found = 0;
-        const std::uint32_t x_row = order[x];
-        const std::uint8_t x_side = side_[x];
-        for (const std::uint32_t y : near) {
-            const signed_bounds& by = widened[y];
-            const std::uint32_t y_row = order[y];
-            const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
-                                 (bx.v[1] <= -by.v[3]);
-            const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
-                               (self_ | (side_[y] != x_side));
-            const bool swap = self_ ? x_row > y_row : x_row >= offset;
-            out[found] = swap ? pair_index{y, x} : pair_index{x, y};
-            found += (overlap & other) ? 1u : 0u;
-        }
-        kept_.pairs.resize(at + found);
     }
 }
 
@@ -445,8 +482,16 @@ void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
             kept_.moved_pairs.push_back(tagged_pair{a, b, p.tag});
         }
     }
-    std::sort(kept_.moved_pairs.begin(), kept_.moved_pairs.end(),
-              [](const tagged_pair& x, const tagged_pair& y) { return order_key(x) < order_key(y); });
+    // The radix sort of the answer's pairs: a comparison sort of the new
+    // rows' few thousand pairs cost more than the rest of this step.
+    if (!kept_.moved_pairs.empty()) {
+        if (kept_.tag_scratch.empty()) {
+            kept_.tag_scratch.resize(1);
+        }
+        const std::vector<pair_source<tagged_pair>> sources = {{{kept_.moved_pairs.data(), kept_.moved_pairs.size()}}};
+        sort_pairs(sources, self_ ? n_ : a_count_, kept_.moved_sorted, kept_.tag_scratch);
+        kept_.moved_pairs.swap(kept_.moved_sorted);
+    }
     kept_.remap_pending = true;
     kept_.remap_any_moved = any_moved;
     kept_.remap_last_a = last_a_count;

@@ -76,10 +76,10 @@ const std::vector<pair_index>& pair_search::collect(const query_input& input) {
 
 const std::vector<pair_index>& pair_search::collect_matched(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
-    if (kept_.ready && !kept_filters_.same_as(input)) {
+    if (kept_.ready && !(ids_followed_ ? follow_filters(input) : kept_filters_.same_as(input))) {
         // Kept candidates hold only the pairs their filters let through
-        // (kept_filters.hpp), compared by position: rows that came, went or
-        // changed places with filters make a full query.
+        // (kept_filters.hpp): compared by id when the rows carry ids (a row
+        // whose filters changed is then a new row), else by position.
         kept_.ready = false;
     }
     probe_carried_ = false;
@@ -116,6 +116,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
             if (kept_.remap_pending) {
                 test_kept(parts, exact, 1);
                 answer_by_id();
+                kept_filters_.take(input);  // the kept candidates' filters, in this call's rows
             } else {
                 test_kept(parts, exact, parts);
                 answer_from_kept(parts);

@@ -134,6 +134,7 @@ struct kept_pairs {
     scratch_vector<signed_bounds> widened;
     std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
+    std::vector<tagged_pair> moved_sorted;     ///< moved_pairs' next contents while they are sorted
     /// Set while by_caller is in the last call's rows, to be carried to this
     /// call's as the answer is read (pair_search::answer_by_id).
     bool remap_pending = false;

@@ -246,8 +246,12 @@ private:
     void start_changes();
     /// Slots for the rows now in `fresh` (combined rows), with their records and widened bounds.
     void add_slots(const query_input& input, const std::vector<std::uint32_t>& fresh);
-    /// Kept candidates of the slots from `first_new` on, against every slot whose widened bounds they meet.
-    void find_new_candidates(std::size_t first_new);
+    /// Kept candidates of the slots from `first_new` on, against every slot whose widened bounds they meet
+    /// and whose filters let the pair through.
+    void find_new_candidates(const query_input& input, std::size_t first_new);
+    /// Rows matched by id whose pair filters changed since the kept candidates' become new rows
+    /// (kept_filters.hpp); false when filters were given or taken away.
+    bool follow_filters(const query_input& input);
     /// The kept pairs of rows that changed places against the others (kept_.row_moved; `any_moved`: there
     /// are some), mapped to this call's rows through now_of_last_, sorted with the new ones (moved_pairs).
     void sort_moved_pairs(std::size_t last_a_count, bool any_moved);

@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/pair_finder_id_pairs.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -32,9 +34,10 @@ using obbsat::id_pair;
 using obbsat::method;
 using obbsat::pair_index;
 using obbsat::rect_pose;
+using obbsat_test::by_id;
+using obbsat_test::minus;
 
 bool less(const pair_index& x, const pair_index& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); }
-bool id_less(const id_pair& x, const id_pair& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); }
 
 bool same_pairs(const std::vector<pair_index>& x, const std::vector<pair_index>& y) {
     return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(), [](const pair_index& p, const pair_index& q) {
@@ -340,28 +343,6 @@ TEST(pair_finder_ids, erase_and_append_frames_across_two_sets) {
         const std::vector<pair_index> want = obbsat::find_pairs(va, vb, options_for(method::exact));
         ASSERT_TRUE(same_pairs(got, want)) << "frame " << f << ": " << describe(got, want);
     }
-}
-
-/// The answer read as id pairs, sorted (smaller id first within one set; the id in a first across two).
-std::vector<id_pair> by_id(const std::vector<pair_index>& pairs, const std::vector<std::uint64_t>& a_ids,
-                           const std::vector<std::uint64_t>* b_ids) {
-    std::vector<id_pair> out;
-    for (const pair_index& p : pairs) {
-        std::uint64_t x = a_ids[p.a];
-        std::uint64_t y = b_ids != nullptr ? (*b_ids)[p.b] : a_ids[p.b];
-        if (b_ids == nullptr && x > y) {
-            std::swap(x, y);
-        }
-        out.push_back(id_pair{x, y});
-    }
-    std::sort(out.begin(), out.end(), id_less);
-    return out;
-}
-
-std::vector<id_pair> minus(const std::vector<id_pair>& x, const std::vector<id_pair>& y) {
-    std::vector<id_pair> out;
-    std::set_difference(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(out), id_less);
-    return out;
 }
 
 TEST(pair_finder_ids, events_are_the_differences_of_consecutive_answers_by_id) {

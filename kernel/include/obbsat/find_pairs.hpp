@@ -241,12 +241,16 @@ class pair_events;
 /// query, and 16 per rectangle once keeping has paused (the probe's bounds).
 ///
 /// Pair filters (box_view::with_filters): the kept candidates hold only the
-/// pairs the filters of the full query that kept them let through, so a call
-/// whose filters differ from those in any value (or gives an array they did
-/// not, or leaves out one they gave) is a full query that keeps anew: each
-/// call with filters compares them with a copy of the kept ones (up to 20
-/// bytes per rectangle, read in order). The answer is still always that of
-/// find_pairs with the same filters.
+/// pairs the filters of the calls they serve let through. Each call with
+/// filters compares them with a copy of the last call's (up to 20 bytes per
+/// rectangle). Without ids a call whose filters differ in any value is a
+/// full query that keeps anew; with ids (below) the filters follow the ids:
+/// a row whose filters changed is carried over as a new row (its kept pairs
+/// dropped, its candidates looked up anew and filtered), so frames whose
+/// rows and filters change are answered from the kept candidates. A call
+/// that gives an array the last did not, or leaves out one it gave, is a
+/// full query either way. The answer is always that of find_pairs with the
+/// same filters.
 /// Rows with ids (box_view::with_ids): the kept candidates follow each box by
 /// its id, so rows may be appended, removed (erased or swap-removed),
 /// inserted and reordered between calls; the pairs are still row indices of

@@ -264,12 +264,17 @@ private:
 }  // namespace
 
 scene_contacts find_contacts(box_view boxes, const collide_options& options, float margin) {
+    scene_contacts found;
+    find_contacts(boxes, options, margin, found);
+    return found;
+}
+
+void find_contacts(box_view boxes, const collide_options& options, float margin, scene_contacts& found) {
     if (!(margin >= 0.0f) || !std::isfinite(margin)) {
         throw invalid_input("margin must be finite and >= 0");
     }
     const detail::executor_scope scope(options.executor);
     const detail::contact_fn kernel = checked_kernel(boxes, options, "find_contacts");
-    scene_contacts found;
     kept_contacts kept;
     detail::query_contacts& contacts = kept.get();
     if (margin == 0.0f) {
@@ -279,7 +284,7 @@ scene_contacts find_contacts(box_view boxes, const collide_options& options, flo
         contacts.read_records(kernel, 0.0f);
         search.collect_with_contacts(search.bound_doubles(detail::input_of(boxes, nullptr)), contacts);
         answer_of(contacts, found, [](const pair_index&, const contact&) { return true; });
-        return found;
+        return;
     }
 
     // The method's pairs first: this query also checks every box.
@@ -309,7 +314,6 @@ scene_contacts find_contacts(box_view boxes, const collide_options& options, flo
         const bool reported = next < colliding.size() && same_pair(colliding[next], candidate);
         return reported || c.point_count > 0;
     });
-    return found;
 }
 
 const scene_contacts& pair_finder::find_contacts(box_view boxes) {

@@ -14,6 +14,8 @@
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/rect_records.hpp>
 
+#include "scene/contact_scenes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -26,6 +28,8 @@ namespace {
 
 using obbsat::contact;
 using obbsat::pair_index;
+using contact_scenes::exact_on;
+using contact_scenes::scene_of;
 
 std::vector<obbsat::rect_pose> small_scene(std::uint64_t seed) {
     obbsat::pose_scene_spec spec;
@@ -81,13 +85,6 @@ void expect_same(const obbsat::scene_contacts& found, const obbsat::scene_contac
     }
 }
 
-obbsat::collide_options exact_on(obbsat::backend use, unsigned threads) {
-    obbsat::collide_options options;
-    options.test = obbsat::method::exact;
-    options.use = use;
-    options.threads = threads;
-    return options;
-}
 
 TEST(FindContacts, PosesMatchEveryPairDecidedAloneWithAndWithoutMargin) {
     const std::vector<obbsat::rect_pose> rows = small_scene(5);
@@ -169,14 +166,6 @@ obbsat::scene_contacts contacts_of_found_pairs(const Store& store, const obbsat:
     return expected;
 }
 
-/// A scene of `boxes` poses of mixed sizes, about two pairs a box.
-std::vector<obbsat::rect_pose> scene_of(std::size_t boxes, std::uint64_t seed) {
-    obbsat::pose_scene_spec spec;
-    spec.seed = seed;
-    spec.boxes = boxes;
-    spec.sizes = obbsat::scene_sizes::mixed;
-    return obbsat::make_pose_scene(spec);
-}
 
 // Enough boxes for several threads' shares and several units each, and
 // enough pairs that each unit fills more than one block of contacts.

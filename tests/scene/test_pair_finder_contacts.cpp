@@ -12,6 +12,8 @@
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/ref/contact.hpp>
 
+#include "scene/contact_scenes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,14 +27,9 @@ namespace {
 
 using obbsat::contact;
 using obbsat::pair_index;
+using contact_scenes::exact_on;
+using contact_scenes::scene_of;
 
-obbsat::collide_options exact_on(obbsat::backend use, unsigned threads) {
-    obbsat::collide_options options;
-    options.test = obbsat::method::exact;
-    options.use = use;
-    options.threads = threads;
-    return options;
-}
 
 /// Frame `f` of a scene whose boxes drift and turn a little each frame.
 std::vector<obbsat::rect_pose> frame_of(const std::vector<obbsat::rect_pose>& start, int f) {
@@ -71,13 +68,6 @@ void expect_frame(const obbsat::scene_contacts& got, const std::vector<pair_inde
     }
 }
 
-std::vector<obbsat::rect_pose> scene_of(std::size_t boxes, std::uint64_t seed) {
-    obbsat::pose_scene_spec spec;
-    spec.seed = seed;
-    spec.boxes = boxes;
-    spec.sizes = obbsat::scene_sizes::mixed;
-    return obbsat::make_pose_scene(spec);
-}
 
 TEST(PairFinderContacts, EveryFrameIsContactPairsOverFindsPairs) {
     const std::vector<obbsat::rect_pose> start = scene_of(40000, 31);

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <limits>
 #include <vector>
 
@@ -242,6 +243,27 @@ TEST(FindContacts, LargeAndSmallScenesInTurnReuseTheKeptBlocks) {
         expect_same(obbsat::find_contacts(large, options), want_large);
         expect_same(obbsat::find_contacts(small, options), want_small);
         expect_same(obbsat::find_contacts(small, options), want_small);
+    }
+}
+
+TEST(FindContacts, CallsFromSeveralThreadsAtOnceEachGetTheirOwn) {
+    // One call holds the kept blocks; the others make their own meanwhile.
+    const obbsat::pose_records first(scene_of(20000, 25));
+    const obbsat::pose_records second(scene_of(30000, 26));
+    const auto options = exact_on(obbsat::backend::automatic, 1);
+    const obbsat::scene_contacts want_first = contacts_of_found_pairs(first, options);
+    const obbsat::scene_contacts want_second = contacts_of_found_pairs(second, options);
+    std::vector<obbsat::scene_contacts> got(8);
+    std::vector<std::thread> callers;
+    for (std::size_t t = 0; t < got.size(); ++t) {
+        callers.emplace_back([&, t] { got[t] = obbsat::find_contacts(t % 2 == 0 ? first : second, options); });
+    }
+    for (std::thread& caller : callers) {
+        caller.join();
+    }
+    for (std::size_t t = 0; t < got.size(); ++t) {
+        SCOPED_TRACE("caller " + std::to_string(t));
+        expect_same(got[t], t % 2 == 0 ? want_first : want_second);
     }
 }
 

@@ -30,10 +30,12 @@
 //       the same query's bounds (up to check_limit boxes): the double one
 //       against the double oracle. Counter pairs_per_box.
 //
-//   find_pairs/exact/poses/... and find_contacts/exact/poses/...  the scene
-//       query on one thread over the as-generated uniform scene, without and
-//       with contacts (obbsat::find_contacts at margin 0), in the same run.
-//       Both check that find_contacts's pairs are find_pairs's (up to
+//   find_pairs/exact/poses/..., find_contacts/exact/poses/... and
+//       find_contacts_into/exact/poses/...  the scene query on one thread
+//       over the as-generated uniform scene, without and with contacts
+//       (obbsat::find_contacts at margin 0; _into: into one scene_contacts
+//       kept between iterations, so no fresh memory), in the same run.
+//       Each checks that find_contacts's pairs are find_pairs's (up to
 //       check_limit boxes). Counters pairs_per_box, points_per_pair.
 //
 // The peers' rows (peer_scene/, peer_frame/) answer the same question on the
@@ -428,11 +430,16 @@ void run_precision_row(benchmark::State& state, std::size_t boxes, bool doubles)
 }
 
 
-/// One row of the pair: find_pairs (contacts false) or find_contacts at
-/// margin 0 (contacts true) with method exact on one thread, over the
-/// as-generated uniform scene. Both first check that find_contacts's pairs
-/// are find_pairs's (up to check_limit boxes).
-void run_contacts_row(benchmark::State& state, std::size_t boxes, bool contacts) {
+/// What a row of the contacts rows times.
+enum class contacts_row { pairs, contacts, contacts_into };
+
+/// One row of the three: find_pairs, find_contacts at margin 0, or
+/// find_contacts into one scene_contacts kept from one iteration to the
+/// next, with method exact on one thread, over the as-generated uniform
+/// scene. Each first checks that find_contacts's pairs are find_pairs's (up
+/// to check_limit boxes).
+void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row row) {
+    const bool contacts = row != contacts_row::pairs;
     try {
         scene_workload& w = scene_workload_for(boxes, obbsat::scene_sizes::uniform);
         const obbsat::box_view view(w.poses(scene_frame::as_generated));
@@ -450,9 +457,16 @@ void run_contacts_row(benchmark::State& state, std::size_t boxes, bool contacts)
             }
         }
         double pairs = 0, points = 0;
+        obbsat::scene_contacts kept;
         for (auto _ : state) {
             if (contacts) {
-                const obbsat::scene_contacts found = obbsat::find_contacts(view, options);
+                obbsat::scene_contacts fresh;
+                if (row == contacts_row::contacts_into) {
+                    obbsat::find_contacts(view, options, 0.0f, kept);
+                } else {
+                    fresh = obbsat::find_contacts(view, options);
+                }
+                const obbsat::scene_contacts& found = row == contacts_row::contacts_into ? kept : fresh;
                 benchmark::DoNotOptimize(found.contacts.data());
                 pairs += static_cast<double>(found.pairs.size());
                 state.PauseTiming();
@@ -540,12 +554,15 @@ void register_scene_benchmarks() {
     }
     // The scene query with and without contacts, side by side on one scene.
     for (const std::size_t boxes : scene_box_counts_to_register()) {
-        for (const bool contacts : {false, true}) {
-            const std::string name = std::string(contacts ? "find_contacts" : "find_pairs") + "/exact/poses/" +
+        for (const contacts_row row : {contacts_row::pairs, contacts_row::contacts, contacts_row::contacts_into}) {
+            const char* call = row == contacts_row::pairs      ? "find_pairs"
+                               : row == contacts_row::contacts ? "find_contacts"
+                                                               : "find_contacts_into";
+            const std::string name = std::string(call) + "/exact/poses/" +
                                      scene_name_tail(boxes, obbsat::scene_sizes::uniform, 1);
             benchmark::RegisterBenchmark(name.c_str(),
-                                         [boxes, contacts](benchmark::State& state) {
-                                             run_contacts_row(state, boxes, contacts);
+                                         [boxes, row](benchmark::State& state) {
+                                             run_contacts_row(state, boxes, row);
                                          })
                 ->UseRealTime()
                 ->Unit(benchmark::kMillisecond);

@@ -3,6 +3,7 @@
 #include "support/executor_scope.hpp"
 
 #include <obbsat/error.hpp>
+#include <obbsat/find_contacts.hpp>
 #include <obbsat/find_pairs.hpp>
 
 #include <string>
@@ -71,13 +72,11 @@ box_view::box_view(const std::vector<rect_pose64>& poses) : box_view(poses.data(
 
 box_view::box_view(const std::vector<rect64>& rects) : box_view(rects.data(), rects.size()) {}
 
-namespace {
-
 /// The query over `a`, and `b` when it is not nullptr. An empty set's
 /// pointer may be nullptr, but the second set's must not be: nullptr there
 /// means "a query within the first set". The rows' ids are taken only `with_ids`
 /// (a pair_finder's calls); a query across two sets takes them from both or neither.
-detail::query_input input_of(const box_view& a, const box_view* b, bool with_ids = false) {
+detail::query_input detail::input_of(const box_view& a, const box_view* b, bool with_ids) {
     static const float none[8] = {};
     static const double none64[8] = {};
     const bool doubles = a.precision() == precision::float64;
@@ -130,7 +129,7 @@ detail::query_input input_of(const box_view& a, const box_view* b, bool with_ids
     return in;
 }
 
-}  // namespace
+using detail::input_of;
 
 std::vector<pair_index> find_pairs(box_view boxes, const collide_options& options) {
     const detail::executor_scope scope(options.executor);

@@ -63,6 +63,7 @@
 #include "scene/id_rows.hpp"
 #include "scene/kept_pairs.hpp"
 #include "scene/pair_blocks.hpp"
+#include "scene/query_contacts.hpp"
 #include "scene/query_input.hpp"
 #include "sort/pair_sort.hpp"
 #include "sort/radix_sort.hpp"
@@ -109,11 +110,17 @@ public:
     /// are released before the sorted copy is made, and nothing is kept.
     std::vector<pair_index> collect_once(const query_input& input);
 
+    /// Runs the query with the contact of each pair computed as the pair is
+    /// found (query_contacts.hpp); the pairs, sorted by (a, b), are then
+    /// contacts.sorted(). [find_contacts.cpp]
+    void collect_with_contacts(const query_input& input, query_contacts& contacts);
+
     const find_pairs_stats& stats() const { return stats_; }
 
     /// The caller's executor (collide_options::executor), or nullptr; the
     /// public entry points put it in scope (support/executor_scope.hpp).
     const executor* caller_executor() const { return options_.executor; }
+    const collide_options& options() const { return options_; }
 
 private:
     /// collect() once the rows' ids (if any) are matched and taken.
@@ -144,6 +151,7 @@ private:
         // Colliding pairs in the caller's indices.
         pair_blocks found;
         kept_share keep;  ///< this share of the kept candidates (kept_pairs.hpp)
+        unit_contacts contacts;  ///< a query with contacts: its pairs with their contacts instead of `found`
         std::size_t tested = 0;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;
@@ -322,6 +330,7 @@ private:
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 
+    query_contacts* contacts_ = nullptr;  ///< collect_with_contacts: where flush_candidates hands the pairs found
     kept_pairs kept_;  ///< pair_finder's kept candidates and the policy that keeps them
     kept_filters kept_filters_;  ///< the pair filters kept_ was built with (kept_filters.hpp)
 

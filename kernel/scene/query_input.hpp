@@ -17,6 +17,10 @@
 #include <cstdint>
 #include <cstring>
 
+namespace obbsat {
+class box_view;
+}
+
 namespace obbsat::detail {
 
 /// The rectangles of one query: one or two sets of one kind, each rows of
@@ -123,5 +127,10 @@ inline void copy_row(const query_input& input, std::size_t id, float* out) {
         widen_pose_row(out, row);
     }
 }
+
+/// The query over `a`, and `b` when it is not nullptr (a query across two
+/// sets); the rows' ids only `with_ids` (pair_finder). Throws invalid_input
+/// when the sets differ in kind or precision, or only one carries ids. [find_pairs.cpp]
+query_input input_of(const box_view& a, const box_view* b, bool with_ids = false);
 
 }  // namespace obbsat::detail

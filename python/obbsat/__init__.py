@@ -866,17 +866,49 @@ class PairFinder:
         pairs are still row indices of this call. Without ids rows are
         matched by position. Two rows with one id raise ValueError naming
         both rows and the id, and change nothing."""
+        return self._frame("find", boxes, against, ids, against_ids, categories=categories, masks=masks,
+                           groups=groups, against_categories=against_categories, against_masks=against_masks,
+                           against_groups=against_groups)
+
+    def find_contacts(self, boxes, against=None, *, ids=None, against_ids=None, categories=None, masks=None,
+                      groups=None, against_categories=None, against_masks=None, against_groups=None):
+        """The pairs of :meth:`find` with the same arguments, each with its
+        contact (``obbsat::pair_finder::find_contacts``, margin 0):
+        ``(pairs, contacts)``, a :class:`Contacts` row per pair, each what
+        :func:`contacts` gives for that pair of this call's rows (``boxes``
+        then ``against`` across two sets). A pair that persists from one
+        call to the next keeps its points' feature keys while the same
+        corners touch the same edges, so a solver can match them by key.
+        float32 only (a finder of ``precision="float64"`` raises ValueError),
+        as for :func:`contacts`; a row contacts do not accept raises
+        ValueError before the frame changes anything.
+
+        >>> finder = obbsat.PairFinder()
+        >>> poses = np.array([[0, 0, 1, 1, 1, 0], [1.5, 0, 1, 1, 1, 0]], dtype=np.float32)
+        >>> pairs, c = finder.find_contacts(poses)
+        >>> pairs, c.depths
+        (array([[0, 1]], dtype=uint32), array([0.5], dtype=float32))
+        """
+        if self._precision == "float64":
+            raise ValueError("PairFinder.find_contacts: contacts are computed in float32 only; this finder was "
+                             "made with precision=\"float64\"")
+        sides = {"boxes": boxes} if against is None else {"boxes": boxes, "against": against}
+        _float32_only("PairFinder.find_contacts", self._precision, **sides)
+        pairs, columns = self._frame("find_contacts", boxes, against, ids, against_ids, categories=categories,
+                                     masks=masks, groups=groups, against_categories=against_categories,
+                                     against_masks=against_masks, against_groups=against_groups)
+        return pairs, Contacts(columns)
+
+    def _frame(self, call, boxes, against, ids, against_ids, **filters):
+        """The finder's ``call`` (find or find_contacts) for the form of ``boxes``."""
         form, boxes, against = _scene(boxes, against, self._precision)
         if against is None and against_ids is not None:
             raise ValueError("against_ids given without against")
         ids = _ids(ids, "ids")
         against_ids = _ids(against_ids, "against_ids")
-        find = getattr(self._query, _scene_call(form, boxes, "find"))
-        pairs = find(boxes, against, ids, against_ids, categories=categories, masks=masks, groups=groups,
-                     against_categories=against_categories, against_masks=against_masks,
-                     against_groups=against_groups)
+        answer = getattr(self._query, _scene_call(form, boxes, call))(boxes, against, ids, against_ids, **filters)
         self._ran = True
-        return pairs
+        return answer
 
     @property
     def stats(self):

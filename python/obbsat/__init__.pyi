@@ -101,6 +101,20 @@ class PairFinder:
         against_masks: npt.ArrayLike | None = ...,
         against_groups: npt.ArrayLike | None = ...,
     ) -> npt.NDArray[np.uint32]: ...
+    def find_contacts(
+        self,
+        boxes: npt.ArrayLike | RectRecords | PoseRecords,
+        against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+        *,
+        ids: npt.ArrayLike | None = ...,
+        against_ids: npt.ArrayLike | None = ...,
+        categories: npt.ArrayLike | None = ...,
+        masks: npt.ArrayLike | None = ...,
+        groups: npt.ArrayLike | None = ...,
+        against_categories: npt.ArrayLike | None = ...,
+        against_masks: npt.ArrayLike | None = ...,
+        against_groups: npt.ArrayLike | None = ...,
+    ) -> tuple[npt.NDArray[np.uint32], Contacts]: ...
     @property
     def stats(self) -> FindPairsStats: ...
     @property

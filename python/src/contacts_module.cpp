@@ -423,18 +423,23 @@ py::tuple find_contacts_of(const py::object& boxes, const std::string& method, d
     without_gil([&] { found = obbsat::find_contacts(view, options, static_cast<float>(margin)); });
     const std::size_t count = found.pairs.size();
     py::array_t<std::uint32_t> pairs({static_cast<py::ssize_t>(count), py::ssize_t{2}});
-    contact_columns columns(count);
-    {
+    if (count > 0) {
         py::gil_scoped_release release;
-        if (count > 0) {
-            std::memcpy(pairs.mutable_data(), found.pairs.data(), count * sizeof(obbsat::pair_index));
-        }
-        columns.fill(found.contacts.data());
+        std::memcpy(pairs.mutable_data(), found.pairs.data(), count * sizeof(obbsat::pair_index));
     }
-    return py::make_tuple(pairs, columns.dict());
+    return py::make_tuple(pairs, contact_dict(found.contacts.data(), count));
 }
 
 }  // namespace
+
+py::dict contact_dict(const obbsat::contact* contacts, std::size_t count) {
+    contact_columns columns(count);
+    {
+        py::gil_scoped_release release;
+        columns.fill(contacts);
+    }
+    return columns.dict();
+}
 
 void register_contacts(py::module_& m) {
     m.def("contacts_of_pairs", &contacts_of_pairs, py::arg("boxes"), py::arg("pairs"), py::arg("margin"),

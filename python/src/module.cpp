@@ -37,6 +37,7 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/collide64.hpp>
 #include <obbsat/error.hpp>
+#include <obbsat/find_contacts.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_conversion.hpp>
@@ -913,6 +914,43 @@ public:
                                     const py::object& masks, const py::object& groups,
                                     const py::object& against_categories, const py::object& against_masks,
                                     const py::object& against_groups) {
+        return pair_array(query<Store>(boxes, against, ids, against_ids, categories, masks, groups,
+                                       against_categories, against_masks, against_groups,
+                                       [&](const obbsat::box_view& a, const obbsat::box_view* b) {
+                                           return std::vector<obbsat::pair_index>(b ? finder_.find(a, *b)
+                                                                                    : finder_.find(a));
+                                       }));
+    }
+
+    /// find, with the contact of each pair (obbsat::pair_finder::find_contacts): (pairs, contact columns).
+    template <class Store>
+    py::tuple find_contacts(const py::object& boxes, const py::object& against, const py::object& ids,
+                            const py::object& against_ids, const py::object& categories, const py::object& masks,
+                            const py::object& groups, const py::object& against_categories,
+                            const py::object& against_masks, const py::object& against_groups) {
+        // The frame's contacts stay in the finder until its next call, which
+        // waits for the mutex; the columns are copied out before.
+        std::vector<obbsat::contact> contacts;
+        std::vector<obbsat::pair_index> pairs = query<Store>(
+            boxes, against, ids, against_ids, categories, masks, groups, against_categories, against_masks,
+            against_groups, [&](const obbsat::box_view& a, const obbsat::box_view* b) {
+                const obbsat::scene_contacts& found = b ? finder_.find_contacts(a, *b) : finder_.find_contacts(a);
+                contacts = found.contacts;
+                return found.pairs;
+            });
+        py::dict columns = contact_dict(contacts.data(), contacts.size());
+        return py::make_tuple(pair_array(std::move(pairs)), columns);
+    }
+
+private:
+    /// Runs `call(a, b)` (b nullptr within one set) on the rows, filters and
+    /// ids given, with the finder's lock held and the GIL released.
+    template <class Store, class Call>
+    std::vector<obbsat::pair_index> query(const py::object& boxes, const py::object& against, const py::object& ids,
+                                          const py::object& against_ids, const py::object& categories,
+                                          const py::object& masks, const py::object& groups,
+                                          const py::object& against_categories, const py::object& against_masks,
+                                          const py::object& against_groups, const Call& call) {
         const bool cross = !against.is_none();
         const scene_side<Store> a = side_of<Store>(boxes, "boxes");
         const scene_side<Store> b = cross ? side_of<Store>(against, "against") : scene_side<Store>{};
@@ -928,19 +966,25 @@ public:
                                   (a_ids.given ? "against_ids" : "ids") +
                                   ": a query across two sets takes ids for both or for neither");
         }
-        return pair_array(without_gil([&] {
+        return without_gil([&] {
             const std::lock_guard<std::mutex> lock(mutex_);
             store_traits<Store>::require_method(options_);
-            const obbsat::box_view va = view_of(a).with_filters(fa);
+            const obbsat::box_view va = with_ids_of(view_of(a).with_filters(fa), a_ids);
             return with_side_names([&] {
-                const std::vector<obbsat::pair_index>& found =
-                    cross ? finder_.find(with_ids_of(va, a_ids), with_ids_of(view_of(b).with_filters(fb), b_ids))
-                          : finder_.find(with_ids_of(va, a_ids));
+                std::vector<obbsat::pair_index> found;
+                if (cross) {
+                    const obbsat::box_view vb = with_ids_of(view_of(b).with_filters(fb), b_ids);
+                    found = call(va, &vb);
+                } else {
+                    found = call(va, nullptr);
+                }
                 last_with_ids_ = a_ids.given;
-                return std::vector<obbsat::pair_index>(found);
+                return found;
             });
-        }));
+        });
     }
+
+public:
 
     obbsat::find_pairs_stats stats() {
         py::gil_scoped_release release;
@@ -1305,6 +1349,18 @@ PYBIND11_MODULE(_core, m) {
              py::arg("against_groups") = py::none(),
              "find_pairs_poses through the finder, rows matched by id when ids (uint64 (N,)) are given; the "
              "pairs are a copy of its buffer.")
+        .def("find_contacts_corners", &scene_finder::find_contacts<obbsat::rect_records>, py::arg("boxes"),
+             py::arg("against"), py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(),
+             py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
+             "find_corners with the contact of each pair (obbsat::pair_finder::find_contacts): (pairs, columns).")
+        .def("find_contacts_poses", &scene_finder::find_contacts<obbsat::pose_records>, py::arg("boxes"),
+             py::arg("against"), py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(),
+             py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
+             "find_poses with the contact of each pair (obbsat::pair_finder::find_contacts): (pairs, columns).")
         .def_property_readonly("stats", &scene_finder::stats, "What the last query did.")
         .def("find_corners64", &scene_finder::find<obbsat::rect_records64>, py::arg("boxes"), py::arg("against"),
              py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(), py::arg("masks") = py::none(), py::arg("groups") = py::none(),

@@ -187,6 +187,46 @@ def test_find_contacts_equals_contacts_on_its_pairs(scene):
     assert len(obbsat.find_contacts(poses, margin=0.05)[0]) > len(exact)
 
 
+def test_pair_finder_frames_with_contacts(scene):
+    poses, _ = scene
+    finder = obbsat.PairFinder(threads=2)
+    rng = np.random.default_rng(11)
+    ids = np.arange(len(poses), dtype=np.uint64) + 500
+    for frame in range(4):
+        moved = poses.copy()
+        moved[:, :2] += (0.01 * frame * rng.standard_normal((len(poses), 2))).astype(np.float32)
+        pairs, c = finder.find_contacts(moved, ids=ids)
+        assert pairs.tolist() == obbsat.find_pairs(moved).tolist()
+        same_contacts(obbsat.contacts(moved, pairs), c)
+        assert finder.find(moved, ids=ids).tolist() == pairs.tolist()
+    a, b = poses[:1000], poses[1000:]
+    pairs, c = finder.find_contacts(a, b)
+    assert pairs.tolist() == obbsat.find_pairs(a, b).tolist()
+    same_contacts(obbsat.contacts_stream(a[pairs[:, 0]], b[pairs[:, 1]]), c)
+
+
+def test_pair_finder_contacts_keep_the_feature_keys_of_a_persisting_contact():
+    finder = obbsat.PairFinder()
+    keys = None
+    for frame in range(6):
+        poses = np.array([[0, 0, 8, 0.5, 1, 0], [-2 + 0.5 * frame, 0.95, 0.5, 0.5, 1, 0]], dtype=np.float32)
+        pairs, c = finder.find_contacts(poses)
+        assert pairs.tolist() == [[0, 1]] and c.counts.tolist() == [2]
+        if keys is not None:
+            assert c.features.tolist() == keys
+        keys = c.features.tolist()
+
+
+def test_pair_finder_contacts_refuse_float64():
+    poses = np.array([square(0, 0), square(1.5, 0)], dtype=np.float64)
+    with pytest.raises(ValueError, match="float32"):
+        obbsat.PairFinder().find_contacts(poses)
+    with pytest.raises(ValueError, match="float32"):
+        obbsat.PairFinder(precision="float64").find_contacts(poses)
+    pairs, _ = obbsat.PairFinder(precision="float32").find_contacts(poses)
+    assert pairs.tolist() == [[0, 1]]
+
+
 # --- Errors ----------------------------------------------------------------------
 
 def test_errors_name_the_argument_the_row_or_the_pair():

@@ -6,17 +6,22 @@
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_contacts.hpp>
+#include <obbsat/find_pairs.hpp>
+#include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
 #include <obbsat/pose_conversion.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/rect_records.hpp>
 
+#include "scene/contact_scenes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <limits>
 #include <vector>
 
@@ -24,6 +29,8 @@ namespace {
 
 using obbsat::contact;
 using obbsat::pair_index;
+using contact_scenes::exact_on;
+using contact_scenes::scene_of;
 
 std::vector<obbsat::rect_pose> small_scene(std::uint64_t seed) {
     obbsat::pose_scene_spec spec;
@@ -79,13 +86,6 @@ void expect_same(const obbsat::scene_contacts& found, const obbsat::scene_contac
     }
 }
 
-obbsat::collide_options exact_on(obbsat::backend use, unsigned threads) {
-    obbsat::collide_options options;
-    options.test = obbsat::method::exact;
-    options.use = use;
-    options.threads = threads;
-    return options;
-}
 
 TEST(FindContacts, PosesMatchEveryPairDecidedAloneWithAndWithoutMargin) {
     const std::vector<obbsat::rect_pose> rows = small_scene(5);
@@ -152,6 +152,141 @@ TEST(FindContacts, RefusesABadMarginAndABadBox) {
         FAIL() << "a negative half extent was accepted";
     } catch (const obbsat::invalid_input& e) {
         EXPECT_NE(std::string(e.what()).find("pose 1"), std::string::npos) << e.what();
+    }
+}
+
+/// The contacts find_contacts must give at margin 0: find_pairs' pairs, each
+/// with contact_pairs' contact on the scalar backend (the reference's bits).
+template <class Store>
+obbsat::scene_contacts contacts_of_found_pairs(const Store& store, const obbsat::collide_options& options) {
+    obbsat::scene_contacts expected;
+    expected.pairs = obbsat::find_pairs(store, options);
+    obbsat::contact_options scalar;
+    scalar.use = obbsat::backend::scalar;
+    expected.contacts = obbsat::contact_pairs(store, expected.pairs, scalar);
+    return expected;
+}
+
+
+// Enough boxes for several threads' shares and several units each, and
+// enough pairs that each unit fills more than one block of contacts.
+constexpr std::size_t many_boxes = 40000;
+
+TEST(FindContacts, EqualsContactPairsOverFindPairsOnEveryBackendThreadCountAndMethod) {
+    const std::vector<obbsat::rect_pose> rows = scene_of(many_boxes, 21);
+    const obbsat::pose_records store(rows);
+    const obbsat::rect_records corners = obbsat::corner_records_of(store);
+    for (const obbsat::method test : {obbsat::method::exact, obbsat::method::local, obbsat::method::conservative}) {
+        obbsat::collide_options options;
+        options.test = test;
+        const obbsat::scene_contacts on_poses = contacts_of_found_pairs(store, options);
+        ASSERT_GT(on_poses.pairs.size(), many_boxes);
+        for (const obbsat::backend use : obbsat::runnable_backends()) {
+            for (const unsigned threads : {1u, 2u, 3u, 0u}) {
+                SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " + obbsat::method_name(test) + ", " +
+                             std::to_string(threads) + " threads");
+                options.use = use;
+                options.threads = threads;
+                expect_same(obbsat::find_contacts(rows, options), on_poses);   // pose rows, read in place
+                expect_same(obbsat::find_contacts(store, options), on_poses);  // a pose store's records
+            }
+        }
+    }
+    obbsat::collide_options options;
+    options.test = obbsat::method::exact;
+    const obbsat::scene_contacts on_corners = contacts_of_found_pairs(corners, options);
+    for (const obbsat::backend use : obbsat::runnable_backends()) {
+        for (const unsigned threads : {1u, 3u}) {
+            SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", corners, " + std::to_string(threads) + " threads");
+            options.use = use;
+            options.threads = threads;
+            expect_same(obbsat::find_contacts(corners, options), on_corners);
+        }
+    }
+}
+
+TEST(FindContacts, WithAMarginTheSameOnEveryBackendAndThreadCount) {
+    // The small scenes above check the pairs against every pair decided
+    // alone; here a larger one checks that every backend and thread count
+    // gives those same pairs, each with contact_pairs' contact at the margin.
+    const std::vector<obbsat::rect_pose> rows = scene_of(many_boxes, 22);
+    const obbsat::pose_records store(rows);
+    const obbsat::rect_records corners = obbsat::corner_records_of(store);
+    constexpr float margin = 0.05f;
+    obbsat::contact_options scalar;
+    scalar.use = obbsat::backend::scalar;
+    scalar.margin = margin;
+    const obbsat::scene_contacts first = obbsat::find_contacts(store, exact_on(obbsat::backend::scalar, 1), margin);
+    const std::vector<pair_index> colliding = obbsat::find_pairs(store, exact_on(obbsat::backend::scalar, 1));
+    ASSERT_GT(first.pairs.size(), colliding.size());
+    const obbsat::scene_contacts expected{first.pairs, obbsat::contact_pairs(store, first.pairs, scalar)};
+    const obbsat::scene_contacts expected_corners{first.pairs, obbsat::contact_pairs(corners, first.pairs, scalar)};
+    for (const obbsat::backend use : obbsat::runnable_backends()) {
+        for (const unsigned threads : {1u, 2u, 3u}) {
+            SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", " + std::to_string(threads) + " threads");
+            expect_same(obbsat::find_contacts(rows, exact_on(use, threads), margin), expected);
+            expect_same(obbsat::find_contacts(store, exact_on(use, threads), margin), expected);
+            expect_same(obbsat::find_contacts(corners, exact_on(use, threads), margin), expected_corners);
+        }
+    }
+}
+
+TEST(FindContacts, LargeAndSmallScenesInTurnReuseTheKeptBlocks) {
+    // A scene large enough for the large blocks, then small ones (small
+    // blocks taken where large ones were kept), then the large one again.
+    const obbsat::pose_records large(scene_of(140000, 23));
+    const obbsat::pose_records small(scene_of(2000, 24));
+    const auto options = exact_on(obbsat::backend::automatic, 2);
+    const obbsat::scene_contacts want_large = contacts_of_found_pairs(large, options);
+    const obbsat::scene_contacts want_small = contacts_of_found_pairs(small, options);
+    for (int round = 0; round < 2; ++round) {
+        expect_same(obbsat::find_contacts(large, options), want_large);
+        expect_same(obbsat::find_contacts(small, options), want_small);
+        expect_same(obbsat::find_contacts(small, options), want_small);
+    }
+}
+
+TEST(FindContacts, CallsFromSeveralThreadsAtOnceEachGetTheirOwn) {
+    // One call holds the kept blocks; the others make their own meanwhile.
+    const obbsat::pose_records first(scene_of(20000, 25));
+    const obbsat::pose_records second(scene_of(30000, 26));
+    const auto options = exact_on(obbsat::backend::automatic, 1);
+    const obbsat::scene_contacts want_first = contacts_of_found_pairs(first, options);
+    const obbsat::scene_contacts want_second = contacts_of_found_pairs(second, options);
+    std::vector<obbsat::scene_contacts> got(8);
+    std::vector<std::thread> callers;
+    for (std::size_t t = 0; t < got.size(); ++t) {
+        callers.emplace_back([&, t] { got[t] = obbsat::find_contacts(t % 2 == 0 ? first : second, options); });
+    }
+    for (std::thread& caller : callers) {
+        caller.join();
+    }
+    for (std::size_t t = 0; t < got.size(); ++t) {
+        SCOPED_TRACE("caller " + std::to_string(t));
+        expect_same(got[t], t % 2 == 0 ? want_first : want_second);
+    }
+}
+
+TEST(FindContacts, RefusesDoubleRowsAndRowsContactsDoNotAccept) {
+    const auto options = exact_on(obbsat::backend::automatic, 1);
+    const std::vector<obbsat::rect_pose64> doubles = {{{0, 0}, {1, 1}, {1, 0}}, {{1, 0}, {1, 1}, {1, 0}}};
+    EXPECT_THROW(obbsat::find_contacts(doubles, options), obbsat::invalid_input);
+    // A rotation of length 1e-30 is a valid pose, but its square is not a normal float.
+    std::vector<obbsat::rect_pose> rows = {{{0, 0}, {1, 1}, {1, 0}}, {{1, 0}, {1, 1}, {1e-30f, 0}}};
+    try {
+        obbsat::find_contacts(rows, options);
+        FAIL() << "a rotation too short for contacts was accepted";
+    } catch (const obbsat::invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("pose 1"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("too short or too long"), std::string::npos) << e.what();
+    }
+    // A row that is no box at all is refused as such, though an earlier one is not accepted.
+    rows.push_back({{2, 0}, {-1, 1}, {1, 0}});
+    try {
+        obbsat::find_contacts(rows, options);
+        FAIL() << "a negative half extent was accepted";
+    } catch (const obbsat::invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("pose 2"), std::string::npos) << e.what();
     }
 }
 

@@ -1,7 +1,15 @@
 // The contacts of every colliding pair of a scene, with no pair list to
-// bring: the scene query (obbsat/find_pairs.hpp) finds the pairs, the contact
-// entry points (obbsat/contact.hpp) compute their contacts, and both come
-// back together, sorted by (i, j).
+// bring: the scene query (obbsat/find_pairs.hpp) finds the pairs, and each
+// pair's contact is computed as the pair is found, on the rows the query has
+// just tested (the contact entry points' kernels, obbsat/contact.hpp, so bit
+// for bit contact_pairs' contacts); both come back together, sorted by
+// (i, j). A frame of a pair_finder with contacts: pair_finder::find_contacts.
+//
+// Memory: the contacts are written into blocks that the library keeps from
+// one call to the next (about 60 bytes per pair of the largest answer so
+// far, for the life of the process), so that a call writes no fresh memory
+// beside its answer; a call made while another thread's call holds them
+// makes blocks of its own, dropped when it returns.
 //
 // Which pairs are reported:
 //   - margin 0: exactly the pairs of find_pairs(boxes, options), each with
@@ -43,5 +51,12 @@ struct scene_contacts {
 /// unsupported_backend for a backend this CPU lacks. Pair filters carried by
 /// `boxes` apply to both kinds of pair.
 scene_contacts find_contacts(box_view boxes, const collide_options& options, float margin = 0.0f);
+
+/// The same into `found`, whose vectors keep their memory from one call to
+/// the next: a caller that finds contacts every step writes no fresh memory
+/// once they have grown (a million boxes' answer is some 110 MB, and fresh
+/// memory costs the OS a page fault and a zeroing per page). `found` is
+/// replaced only once every check has passed.
+void find_contacts(box_view boxes, const collide_options& options, float margin, scene_contacts& found);
 
 }  // namespace obbsat

@@ -213,6 +213,8 @@ class pair_search;
 class pair_events;
 }  // namespace detail
 
+struct scene_contacts;  // obbsat/find_contacts.hpp
+
 /// A persistent query for simulations. Its first call on a scene answers as
 /// find_pairs does; later full queries widen every bounds by a margin and
 /// keep the pairs whose widened bounds overlap, sorted in the caller's indices. A later call with the same number of rectangles checks
@@ -313,6 +315,19 @@ public:
     /// The pairs of find_pairs(a, b, options); valid until the next call.
     const std::vector<pair_index>& find(box_view a, box_view b);
 
+    /// The pairs of find(boxes), this call's frame, with the contact of each
+    /// (obbsat/find_contacts.hpp; margin 0): contacts[k] is contact_pairs'
+    /// on rows pairs[k].a and pairs[k].b of this call (rows of `a` and `b`
+    /// across two sets), so a pair that persists from one frame to the next
+    /// in the same roles keeps its contact points' feature keys while the
+    /// same corners touch the same edges. Float rows only. Throws as find,
+    /// and invalid_input for double rows or a row contacts do not accept
+    /// (obbsat/contact.hpp), before the frame changes anything. Valid until
+    /// the next call; the buffers are kept for the next frame.
+    const scene_contacts& find_contacts(box_view boxes);
+    /// The pairs of find(a, b) with their contacts, as above.
+    const scene_contacts& find_contacts(box_view a, box_view b);
+
     /// What the last call did.
     const find_pairs_stats& stats() const;
 
@@ -330,8 +345,11 @@ public:
     const std::vector<id_pair>& ended_ids() const;
 
 private:
+    const scene_contacts& frame_contacts(const box_view& a, const box_view* b);
+
     std::unique_ptr<detail::pair_search> search_;
     std::unique_ptr<detail::pair_events> events_;  ///< nullptr while events are off
+    std::unique_ptr<scene_contacts> contacts_;     ///< find_contacts' last answer, nullptr before its first call
 };
 
 }  // namespace obbsat

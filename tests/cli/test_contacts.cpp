@@ -7,6 +7,7 @@
 
 #include <obbsat/contact.hpp>
 #include <obbsat/find_contacts.hpp>
+#include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/rect_records.hpp>
@@ -128,6 +129,37 @@ TEST(Contacts, SceneLinesAreFindContactsBitForBit) {
     EXPECT_GT(lines_of(near.out).size(), lines_of(touching.out).size());
 }
 
+TEST(Contacts, MethodChoosesTheScenePairs) {
+    scratch s;
+    const std::vector<rect_pose> rows = scene_rows();
+    write_file(s.file("poses.csv"), pose_file(rows));
+    for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        const std::string name = obbsat::method_name(m);
+        SCOPED_TRACE(name);
+        const auto r = s.run("contacts --poses poses.csv --method " + name);
+        ASSERT_EQ(r.status, 0) << r.err;
+        obbsat::collide_options options;
+        options.test = m;
+        const obbsat::scene_contacts expected = obbsat::find_contacts(rows, options);
+        const std::vector<std::string> lines = lines_of(r.out);
+        ASSERT_EQ(lines.size(), expected.pairs.size());
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+            expect_line(lines[k], expected.pairs[k], expected.contacts[k]);
+        }
+    }
+    // Pair (0, 1) is apart by 2.4e-7, which conservative cannot prove in
+    // float: it reports the pair, exact (the default) does not.
+    write_file(s.file("near.csv"), "0,0,1,1,1,0\n2.0000002,0,1,1,1,0\n0,5,1,1,0.6,0.8\n");
+    const auto by_default = s.run("contacts --poses near.csv");
+    const auto by_exact = s.run("contacts --poses near.csv --method exact");
+    const auto by_conservative = s.run("contacts --poses near.csv --method conservative");
+    ASSERT_EQ(by_conservative.status, 0) << by_conservative.err;
+    EXPECT_EQ(by_default.out, "");
+    EXPECT_EQ(by_exact.out, "");
+    ASSERT_EQ(lines_of(by_conservative.out).size(), 1u);
+    EXPECT_EQ(fields_of(by_conservative.out).at(0), "0");
+}
+
 TEST(Contacts, ListLinesAreThePairsWithPointsInListOrder) {
     scratch s;
     // Overlapping, apart by 0.1, apart by 1.6; the list runs backwards.
@@ -239,6 +271,15 @@ TEST(ContactsErrors, NameTheFileAndLineAndWriteNothing) {
     r = s.run("distance --poses poses.csv");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--pairs"), std::string::npos) << r.err;
+    // A method that does not run on the store, an unknown one, one beside a list.
+    for (const char* method : {"sat4", "no_such_method"}) {
+        r = s.run(std::string("contacts --poses poses.csv --out c.csv --method ") + method);
+        EXPECT_EQ(r.status, 2) << method;
+        EXPECT_NE(r.err.find("--method"), std::string::npos) << r.err;
+    }
+    r = s.run("contacts --poses poses.csv --pairs one.csv --method local --out c.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--method"), std::string::npos) << r.err;
     EXPECT_EQ(s.entries(), before);  // no output file, no temporary left behind
 }
 

@@ -7,6 +7,7 @@
 // standard output empty as well as --out untouched (written through a
 // temporary file renamed at the end).
 #include "cli/box_pair_input.hpp"
+#include "cli/box_pair_options.hpp"
 #include "cli/cli_args.hpp"
 #include "cli/commands.hpp"
 #include "io/csv_input.hpp"
@@ -32,18 +33,28 @@ namespace {
 constexpr std::string_view contact_header = "i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2";
 
 const std::vector<option_spec>& contacts_option_specs() {
-    static const std::vector<option_spec> specs = {
-        {"rects", "FILE", "corners, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line"},
-        {"poses", "FILE", "poses, one 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' per line"},
-        {"pairs", "FILE", "pairs, one 'i,j' per line (default: every colliding pair of the file)"},
-        {"margin", "D", "speculative margin, finite and >= 0: pairs apart by at most D too (default: 0)"},
-        {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
-        {"threads", "N", "cores to split the work over, 0 for all (default: 1)"},
-        {"out", "FILE", "write the contacts here, all or nothing (default: standard output)"},
-        {"header", "", "start the output with the header line 'i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2'"},
-        {"help", "", "show this help"},
-    };
+    static const std::vector<option_spec> specs = box_pair_option_specs(
+        "pairs, one 'i,j' per line (default: every colliding pair of the file)",
+        "write the contacts here, all or nothing (default: standard output)",
+        "start the output with the header line 'i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2'",
+        {
+            {"margin", "D", "speculative margin, finite and >= 0: pairs apart by at most D too (default: 0)"},
+            {"method", "NAME", "which verdict decides the colliding pairs without --pairs (default: exact)"},
+        });
     return specs;
+}
+
+/// The --method value: which verdict decides the colliding pairs of the
+/// scene, exact by default, any method that runs on the store. With --pairs
+/// the list says which pairs, so a method there is refused, not ignored.
+method contacts_method_option(const parsed_options& options, const rectangle_input& input) {
+    if (!options.has("method")) {
+        return method::exact;
+    }
+    if (options.has("pairs")) {
+        throw usage_error("--method chooses the colliding pairs of the file; with --pairs the list does");
+    }
+    return store_method_option(options, input);
 }
 
 /// The --margin value: a decimal float, finite and >= 0.
@@ -149,7 +160,8 @@ std::string contacts_of_files(const rectangle_input& input, const io::input_file
 void print_contacts_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat contacts (--rects FILE | --poses FILE) [--pairs FILE] [--margin D]\n"
-                 "                       [--backend NAME] [--threads N] [--out FILE] [--header]\n"
+                 "                       [--method NAME] [--backend NAME] [--threads N]\n"
+                 "                       [--out FILE] [--header]\n"
                  "\n"
                  "Writes the contact of each colliding pair, one line\n"
                  "  i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2\n"
@@ -160,13 +172,18 @@ void print_contacts_help(std::FILE* out) {
                  "shortest decimal text that reads back as the same float. docs/contacts.md\n"
                  "says how every value is computed; every backend gives the same bits.\n"
                  "\n"
-                 "Without --pairs: every pair i < j of the file that collides (method exact, as\n"
-                 "'obbsat pairs'), sorted by i then j, and with a margin every other pair whose\n"
-                 "contact has points within it. With --pairs: the pairs of the list in its\n"
-                 "order, those whose contact has at least one point (overlapping, touching or,\n"
-                 "with a margin, apart by at most it); the others are left out.\n"
+                 "Without --pairs: every pair i < j of the file that collides by --method (as\n"
+                 "'obbsat pairs'; exact unless told), sorted by i then j, and with a margin\n"
+                 "every other pair whose contact has points within it. With --pairs: the pairs\n"
+                 "of the list in its order, those whose contact has at least one point\n"
+                 "(overlapping, touching or, with a margin, apart by at most it); the others\n"
+                 "are left out, and --method is refused.\n"
                  "\n"
-                 "options:\n");
+                 "methods: on --rects %s; on --poses %s\n"
+                 "\n"
+                 "options:\n",
+                 method_list(methods_on(store_kind::corners)).c_str(),
+                 method_list(methods_on(store_kind::poses)).c_str());
     print_options(out, contacts_option_specs());
     std::fprintf(out,
                  "\n"
@@ -184,37 +201,21 @@ void print_contacts_help(std::FILE* out) {
 
 int run_contacts(const arguments& args) {
     const parsed_options options = parse_options(args, contacts_option_specs());
-    const rectangle_input input = rectangle_option(options);
-    const std::optional<std::string_view> pairs_path = options.value("pairs");
-    if (pairs_path && input.path == "-" && *pairs_path == "-") {
-        throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
-    }
     const float margin = margin_option(options);
-    collide_options run;
-    run.test = method::exact;
-    if (const auto threads = options.value("threads")) {
-        run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
-    }
-    run.use = resolve_backend(backend_option(options));
-
-    const io::input_file rects_file(input.path);
-    std::optional<io::input_file> pairs_file;
-    if (pairs_path) {
-        pairs_file.emplace(std::string(*pairs_path));
-        if (io::same_input(rects_file, *pairs_file)) {
-            throw same_input_error(input.option, input.path, *pairs_path);
-        }
-    }
-    io::output_target target(output_option(options, "out"));
-    io::status_line status("obbsat contacts");
-    const io::input_file* pairs = pairs_file ? &*pairs_file : nullptr;
-    const bool header = options.has("header");
+    box_pair_run run(options, false, "obbsat contacts");
+    collide_options scene;
+    scene.test = contacts_method_option(options, run.input);
+    scene.threads = run.threads;
+    scene.use = run.use;
+    const io::input_file* pairs = run.pairs_file.get();
     const std::string summary =
-        input.kind == store_kind::corners
-            ? contacts_of_files<rect_records>(input, rects_file, pairs, run, margin, header, target, status)
-            : contacts_of_files<pose_records>(input, rects_file, pairs, run, margin, header, target, status);
-    target.commit();
-    status.finish(summary);
+        run.input.kind == store_kind::corners
+            ? contacts_of_files<rect_records>(run.input, run.rects_file, pairs, scene, margin, run.header,
+                                              run.target, run.status)
+            : contacts_of_files<pose_records>(run.input, run.rects_file, pairs, scene, margin, run.header,
+                                              run.target, run.status);
+    run.target.commit();
+    run.status.finish(summary);
     return exit_success;
 }
 

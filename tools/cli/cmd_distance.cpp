@@ -6,6 +6,7 @@
 // before the first is written, so an error leaves standard output empty and
 // --out untouched.
 #include "cli/box_pair_input.hpp"
+#include "cli/box_pair_options.hpp"
 #include "cli/cli_args.hpp"
 #include "cli/commands.hpp"
 #include "io/csv_input.hpp"
@@ -26,16 +27,10 @@ namespace {
 constexpr std::string_view distance_header = "i,j,distance,ax,ay,bx,by";
 
 const std::vector<option_spec>& distance_option_specs() {
-    static const std::vector<option_spec> specs = {
-        {"rects", "FILE", "corners, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line"},
-        {"poses", "FILE", "poses, one 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' per line"},
-        {"pairs", "FILE", "pairs, one 'i,j' of 0-based indices per line (required)"},
-        {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
-        {"threads", "N", "cores to split the work over, 0 for all (default: 1)"},
-        {"out", "FILE", "write the distances here, all or nothing (default: standard output)"},
-        {"header", "", "start the output with the header line 'i,j,distance,ax,ay,bx,by'"},
-        {"help", "", "show this help"},
-    };
+    static const std::vector<option_spec> specs =
+        box_pair_option_specs("pairs, one 'i,j' of 0-based indices per line (required)",
+                              "write the distances here, all or nothing (default: standard output)",
+                              "start the output with the header line 'i,j,distance,ax,ay,bx,by'", {});
     return specs;
 }
 
@@ -115,31 +110,19 @@ void print_distance_help(std::FILE* out) {
 
 int run_distance(const arguments& args) {
     const parsed_options options = parse_options(args, distance_option_specs());
-    const rectangle_input input = rectangle_option(options);
-    const std::string pairs_path(options.required("pairs"));
-    if (input.path == "-" && pairs_path == "-") {
-        throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
-    }
-    distance_options run;
-    if (const auto threads = options.value("threads")) {
-        run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
-    }
-    run.use = resolve_backend(backend_option(options));
-
-    const io::input_file rects_file(input.path);
-    const io::input_file pairs_file(pairs_path);
-    if (io::same_input(rects_file, pairs_file)) {
-        throw same_input_error(input.option, input.path, pairs_path);
-    }
-    io::output_target target(output_option(options, "out"));
-    io::status_line status("obbsat distance");
-    const bool header = options.has("header");
+    box_pair_run run(options, true, "obbsat distance");
+    distance_options computed;
+    computed.threads = run.threads;
+    computed.use = run.use;
+    const io::input_file& pairs = *run.pairs_file;
     const std::string summary =
-        input.kind == store_kind::corners
-            ? distances_of_files<rect_records>(input, rects_file, pairs_file, run, header, target, status)
-            : distances_of_files<pose_records>(input, rects_file, pairs_file, run, header, target, status);
-    target.commit();
-    status.finish(summary);
+        run.input.kind == store_kind::corners
+            ? distances_of_files<rect_records>(run.input, run.rects_file, pairs, computed, run.header, run.target,
+                                               run.status)
+            : distances_of_files<pose_records>(run.input, run.rects_file, pairs, computed, run.header, run.target,
+                                               run.status);
+    run.target.commit();
+    run.status.finish(summary);
     return exit_success;
 }
 

@@ -100,27 +100,59 @@ void require_call(const Store& store, const pair_index* pairs, std::size_t count
     require_indices(store.size(), pairs, count, rows_name(store));
 }
 
-/// out[i] = compute(store[pairs[i].a], store[pairs[i].b]) for i < count, split over threads.
+/// out[i] = compute(a[pairs[i].a], b[pairs[i].b]) for i < count, or
+/// compute(a[i], b[i]) without pairs, split over threads.
 template <class Store, class Out, class Compute>
-void compute_pairs(const Store& store, const pair_index* pairs, std::size_t count, Out* out, unsigned threads,
-                   const Compute& compute) {
+void compute_pairs(const Store& a, const Store& b, const pair_index* pairs, std::size_t count, Out* out,
+                   unsigned threads, const Compute& compute) {
     const std::size_t parts = detail::parts_for(count, threads, min_pairs_per_part);
     detail::run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = detail::share_of(count, part, parts);
         for (std::size_t i = begin; i < end; ++i) {
-            out[i] = compute(store[pairs[i].a], store[pairs[i].b]);
+            out[i] = pairs != nullptr ? compute(a[pairs[i].a], b[pairs[i].b]) : compute(a[i], b[i]);
         }
     });
 }
+
+void require_same_length(std::size_t a, std::size_t b, const char* rows) {
+    if (a != b) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a) + " " + rows + " in A, " +
+                            std::to_string(b) + " " + rows + " in B");
+    }
+}
+
+/// The checks of a stream entry point, before anything is written.
+template <class Store>
+void require_stream(const Store& a, const Store& b, backend use, const char* what) {
+    require_same_length(a.size(), b.size(), rows_name(a));
+    require_scalar_backend(use, what);
+    require_accepted(a);
+    require_accepted(b);
+}
+
+/// The contact of two double boxes at a margin.
+struct contact_at {
+    double margin;
+    template <class Box>
+    contact64 operator()(const Box& a, const Box& b) const {
+        return ref::contact_of(a, b, margin);
+    }
+};
+
+/// The distance of two double boxes.
+struct distance_between {
+    template <class Box>
+    closest_points64 operator()(const Box& a, const Box& b) const {
+        return ref::distance_of(a, b);
+    }
+};
 
 template <class Store>
 backend contacts_of(const Store& store, const pair_index* pairs, std::size_t count, contact64* out,
                     const contact_options64& options) {
     require_margin(options.margin);
     require_call(store, pairs, count, out, options.use, "contacts");
-    const double margin = options.margin;
-    compute_pairs(store, pairs, count, out, options.threads,
-                  [margin](const auto& a, const auto& b) { return ref::contact_of(a, b, margin); });
+    compute_pairs(store, store, pairs, count, out, options.threads, contact_at{options.margin});
     return backend::scalar;
 }
 
@@ -128,8 +160,22 @@ template <class Store>
 backend distances_of(const Store& store, const pair_index* pairs, std::size_t count, closest_points64* out,
                      const distance_options& options) {
     require_call(store, pairs, count, out, options.use, "distances");
-    compute_pairs(store, pairs, count, out, options.threads,
-                  [](const auto& a, const auto& b) { return ref::distance_of(a, b); });
+    compute_pairs(store, store, pairs, count, out, options.threads, distance_between{});
+    return backend::scalar;
+}
+
+template <class Store>
+backend contact_stream_of(const Store& a, const Store& b, contact64* out, const contact_options64& options) {
+    require_margin(options.margin);
+    require_stream(a, b, options.use, "contacts");
+    compute_pairs(a, b, nullptr, a.size(), out, options.threads, contact_at{options.margin});
+    return backend::scalar;
+}
+
+template <class Store>
+backend distance_stream_of(const Store& a, const Store& b, closest_points64* out, const distance_options& options) {
+    require_stream(a, b, options.use, "distances");
+    compute_pairs(a, b, nullptr, a.size(), out, options.threads, distance_between{});
     return backend::scalar;
 }
 
@@ -181,6 +227,26 @@ backend distance_pairs(const rect_records64& rects, const pair_index* pairs, std
 std::vector<closest_points64> distance_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
                                              const distance_options& options) {
     return collected<closest_points64>(rects, pairs, options, distances_of<rect_records64>);
+}
+
+backend contact_stream(const pose_records64& a, const pose_records64& b, contact64* out,
+                       const contact_options64& options) {
+    return contact_stream_of(a, b, out, options);
+}
+
+backend contact_stream(const rect_records64& a, const rect_records64& b, contact64* out,
+                       const contact_options64& options) {
+    return contact_stream_of(a, b, out, options);
+}
+
+backend distance_stream(const pose_records64& a, const pose_records64& b, closest_points64* out,
+                        const distance_options& options) {
+    return distance_stream_of(a, b, out, options);
+}
+
+backend distance_stream(const rect_records64& a, const rect_records64& b, closest_points64* out,
+                        const distance_options& options) {
+    return distance_stream_of(a, b, out, options);
 }
 
 }  // namespace obbsat

@@ -38,6 +38,21 @@ std::unique_ptr<const io::input_file> opened_pairs(const parsed_options& options
     return pairs;
 }
 
+/// The backend a run uses: --backend resolved, or the scalar backend for
+/// doubles, which have no contact lanes (an explicit other one is refused
+/// rather than quietly not used).
+backend backend_for(const parsed_options& options, precision digits) {
+    const backend asked = backend_option(options);
+    if (digits != precision::double_) {
+        return resolve_backend(asked);
+    }
+    if (asked != backend::automatic && asked != backend::scalar) {
+        throw usage_error(std::string("--backend ") + backend_name(asked) +
+                          ": contacts and distances in double (--precision double) run on the scalar backend only");
+    }
+    return backend::scalar;
+}
+
 }  // namespace
 
 std::vector<option_spec> box_pair_option_specs(std::string_view pairs_help, std::string_view out_help,
@@ -51,6 +66,7 @@ std::vector<option_spec> box_pair_option_specs(std::string_view pairs_help, std:
     specs.insert(specs.end(), {
                                   {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
                                   {"threads", "N", "cores to split the work over, 0 for all (default: 1)"},
+                                  precision_option_spec(),
                                   {"out", "FILE", out_help},
                                   {"header", "", header_help},
                                   {"help", "", "show this help"},
@@ -58,10 +74,12 @@ std::vector<option_spec> box_pair_option_specs(std::string_view pairs_help, std:
     return specs;
 }
 
-box_pair_run::box_pair_run(const parsed_options& options, bool pairs_required, const char* command)
-    : input(checked_input(options, pairs_required)),
+box_pair_run::box_pair_run(const parsed_options& given, bool pairs_required, const char* command)
+    : options(given),
+      input(checked_input(options, pairs_required)),
+      digits(precision_option(options)),
       threads(threads_option(options)),
-      use(resolve_backend(backend_option(options))),
+      use(backend_for(options, digits)),
       header(options.has("header")),
       rects_file(input.path),
       pairs_file(opened_pairs(options, input, rects_file)),

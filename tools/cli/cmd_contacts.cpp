@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -57,33 +58,38 @@ method contacts_method_option(const parsed_options& options, const rectangle_inp
     return store_method_option(options, input);
 }
 
-/// The --margin value: a decimal float, finite and >= 0.
-float margin_option(const parsed_options& options) {
+/// The --margin value: a decimal number, finite and >= 0, read as a float
+/// (strtof) or, for the double stores, as a double (strtod).
+template <class Real>
+Real margin_option(const parsed_options& options) {
     const auto text = options.value("margin");
     if (!text) {
-        return 0.0f;
+        return Real(0);
     }
     const std::string value(*text);
     char* end = nullptr;
-    const float margin = std::strtof(value.c_str(), &end);
-    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(margin) || !(margin >= 0.0f)) {
+    const Real margin = std::is_same<Real, float>::value ? static_cast<Real>(std::strtof(value.c_str(), &end))
+                                                         : static_cast<Real>(std::strtod(value.c_str(), &end));
+    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(margin) || !(margin >= Real(0))) {
         throw usage_error("--margin: expected a finite number >= 0, got '" + value + "'");
     }
     return margin;
 }
 
-/// Appends "," and the shortest decimal text that reads back as `value`.
-char* put_float(char* at, char* end, float value) {
+/// Appends "," and the shortest decimal text that reads back as `value` (a float or a double).
+template <class Real>
+char* put_number(char* at, char* end, Real value) {
     *at++ = ',';
     return std::to_chars(at, end, value).ptr;
 }
 
-/// One line per contact, `keep` choosing which, in the order given.
-template <class Keep>
-void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector<contact>& contacts, bool header,
+/// One line per contact (contact or contact64), `keep` choosing which, in the order given.
+template <class Contact, class Keep>
+void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector<Contact>& contacts, bool header,
                          io::output_target& out, const Keep& keep) {
-    // Two indices, eleven floats of at most 15 characters, eleven commas and a line end.
-    constexpr std::size_t longest_line = 2 * 10 + 11 * 15 + 11 + 1;
+    // Two indices, eleven numbers of at most 24 characters (a double's
+    // shortest text at worst), eleven commas and a line end.
+    constexpr std::size_t longest_line = 2 * 10 + 11 * 24 + 11 + 1;
     constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
     std::vector<char> text(buffer_bytes);
     char* const begin = text.data();
@@ -94,7 +100,7 @@ void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector
         *at++ = '\n';
     }
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const contact& c = contacts[k];
+        const Contact& c = contacts[k];
         if (!keep(c)) {
             continue;
         }
@@ -105,16 +111,16 @@ void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector
         at = std::to_chars(at, end, pairs[k].a).ptr;
         *at++ = ',';
         at = std::to_chars(at, end, pairs[k].b).ptr;
-        at = put_float(at, end, c.nx);
-        at = put_float(at, end, c.ny);
-        at = put_float(at, end, c.depth);
+        at = put_number(at, end, c.nx);
+        at = put_number(at, end, c.ny);
+        at = put_number(at, end, c.depth);
         *at++ = ',';
         at = std::to_chars(at, end, c.point_count).ptr;
         for (std::uint32_t p = 0; p < 2; ++p) {
             if (p < c.point_count) {
-                at = put_float(at, end, c.points[p].x);
-                at = put_float(at, end, c.points[p].y);
-                at = put_float(at, end, c.points[p].separation);
+                at = put_number(at, end, c.points[p].x);
+                at = put_number(at, end, c.points[p].y);
+                at = put_number(at, end, c.points[p].separation);
             } else {  // an unused point: its three fields empty
                 *at++ = ',';
                 *at++ = ',';
@@ -126,32 +132,54 @@ void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector
     out.write(begin, static_cast<std::size_t>(at - begin));
 }
 
-/// Reads the rectangles (and pairs), computes the contacts and writes them.
+/// The contact options of a store: float ones for the float stores, double
+/// ones (margin in double) for the double stores.
 template <class Store>
-std::string contacts_of_files(const rectangle_input& input, const io::input_file& rects_file,
-                              const io::input_file* pairs_file, const collide_options& run, float margin,
-                              bool header, io::output_target& out, io::status_line& status) {
+struct contact_options_for {
+    using type = contact_options;
+};
+template <>
+struct contact_options_for<pose_records64> {
+    using type = contact_options64;
+};
+template <>
+struct contact_options_for<rect_records64> {
+    using type = contact_options64;
+};
+
+/// Reads the rectangles and the pair list, computes the contacts of the
+/// pairs and writes those with points: it overlaps, touches, or is apart by
+/// at most the margin.
+template <class Store>
+std::string contacts_of_pair_file(box_pair_run& run, const collide_options& scene) {
+    using options_type = typename contact_options_for<Store>::type;
     Store store;
-    read_box_store(rects_file, store, status);
-    contact_options options;
-    options.use = run.use;
-    options.threads = run.threads;
-    options.margin = margin;
-    if (pairs_file) {
-        const std::vector<pair_index> pairs = read_pair_list(*pairs_file, store.size(), rects_file.name(), status);
-        const std::vector<contact> contacts =
-            naming_record_line(input.path, [&] { return contact_pairs(store, pairs, options); });
-        // A pair of the list is written when its contact has a point: it
-        // overlaps, touches, or is apart by at most the margin.
-        std::size_t written = 0;
-        write_contact_lines(pairs, contacts, header, out, [&](const contact& c) {
-            written += c.point_count > 0;
-            return c.point_count > 0;
-        });
-        return std::to_string(pairs.size()) + " pairs, " + std::to_string(written) + " with contacts";
-    }
-    const scene_contacts found = naming_record_line(input.path, [&] { return find_contacts(store, run, margin); });
-    write_contact_lines(found.pairs, found.contacts, header, out, [](const contact&) { return true; });
+    read_box_store(run.rects_file, store, run.status);
+    options_type options;
+    options.use = scene.use;
+    options.threads = scene.threads;
+    options.margin = margin_option<decltype(options.margin)>(run.options);
+    const std::vector<pair_index> pairs =
+        read_pair_list(*run.pairs_file, store.size(), run.rects_file.name(), run.status);
+    const auto contacts = naming_record_line(run.input.path, [&] { return contact_pairs(store, pairs, options); });
+    std::size_t written = 0;
+    write_contact_lines(pairs, contacts, run.header, run.target, [&](const auto& c) {
+        written += c.point_count > 0;
+        return c.point_count > 0;
+    });
+    return std::to_string(pairs.size()) + " pairs, " + std::to_string(written) + " with contacts";
+}
+
+/// Reads the rectangles and writes every pair the method calls colliding
+/// (and, with a margin, every pair within it) with its contact.
+template <class Store>
+std::string contacts_of_scene(box_pair_run& run, const collide_options& scene) {
+    Store store;
+    read_box_store(run.rects_file, store, run.status);
+    const float margin = margin_option<float>(run.options);
+    const scene_contacts found =
+        naming_record_line(run.input.path, [&] { return find_contacts(store, scene, margin); });
+    write_contact_lines(found.pairs, found.contacts, run.header, run.target, [](const contact&) { return true; });
     return std::to_string(store.size()) + " boxes, " + std::to_string(found.pairs.size()) + " pairs";
 }
 
@@ -161,7 +189,7 @@ void print_contacts_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat contacts (--rects FILE | --poses FILE) [--pairs FILE] [--margin D]\n"
                  "                       [--method NAME] [--backend NAME] [--threads N]\n"
-                 "                       [--out FILE] [--header]\n"
+                 "                       [--precision float|double] [--out FILE] [--header]\n"
                  "\n"
                  "Writes the contact of each colliding pair, one line\n"
                  "  i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2\n"
@@ -178,6 +206,11 @@ void print_contacts_help(std::FILE* out) {
                  "of the list in its order, those whose contact has at least one point\n"
                  "(overlapping, touching or, with a margin, apart by at most it); the others\n"
                  "are left out, and --method is refused.\n"
+                 "\n"
+                 "--precision double (with --pairs only) reads every number, the margin too,\n"
+                 "as a double and computes in double (the same steps; nothing rounded to\n"
+                 "float), printing the shortest text that reads back as the same double; it\n"
+                 "runs on the scalar backend only.\n"
                  "\n"
                  "methods: on --rects %s; on --poses %s\n"
                  "\n"
@@ -196,24 +229,33 @@ void print_contacts_help(std::FILE* out) {
                  "\n"
                  "example:\n"
                  "  obbsat contacts --poses poses.csv --margin 0.01 --out contacts.csv\n"
-                 "  obbsat contacts --rects rects.csv --pairs pairs.csv --header\n");
+                 "  obbsat contacts --rects rects.csv --pairs pairs.csv --header\n"
+                 "  obbsat contacts --poses utm.csv --pairs pairs.csv --precision double\n");
 }
 
 int run_contacts(const arguments& args) {
     const parsed_options options = parse_options(args, contacts_option_specs());
-    const float margin = margin_option(options);
+    if (precision_option(options) == precision::double_ && !options.has("pairs")) {
+        throw usage_error("--precision double needs --pairs: the contacts of every colliding pair of a file "
+                          "are found in float only");
+    }
+    margin_option<double>(options);  // a bad margin is reported before any file is opened
     box_pair_run run(options, false, "obbsat contacts");
     collide_options scene;
     scene.test = contacts_method_option(options, run.input);
     scene.threads = run.threads;
     scene.use = run.use;
-    const io::input_file* pairs = run.pairs_file.get();
-    const std::string summary =
-        run.input.kind == store_kind::corners
-            ? contacts_of_files<rect_records>(run.input, run.rects_file, pairs, scene, margin, run.header,
-                                              run.target, run.status)
-            : contacts_of_files<pose_records>(run.input, run.rects_file, pairs, scene, margin, run.header,
-                                              run.target, run.status);
+    const bool corners = run.input.kind == store_kind::corners;
+    std::string summary;
+    if (!run.pairs_file) {
+        summary = corners ? contacts_of_scene<rect_records>(run, scene) : contacts_of_scene<pose_records>(run, scene);
+    } else if (run.digits == precision::double_) {
+        summary = corners ? contacts_of_pair_file<rect_records64>(run, scene)
+                          : contacts_of_pair_file<pose_records64>(run, scene);
+    } else {
+        summary = corners ? contacts_of_pair_file<rect_records>(run, scene)
+                          : contacts_of_pair_file<pose_records>(run, scene);
+    }
     run.target.commit();
     run.status.finish(summary);
     return exit_success;

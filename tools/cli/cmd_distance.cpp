@@ -34,9 +34,13 @@ const std::vector<option_spec>& distance_option_specs() {
     return specs;
 }
 
-void write_distance_lines(const std::vector<pair_index>& pairs, const std::vector<closest_points>& found,
-                          bool header, io::output_target& out) {
-    constexpr std::size_t longest_line = 2 * 10 + 5 * 15 + 6 + 1;
+/// One line per pair; `Closest` is closest_points or closest_points64.
+template <class Closest>
+void write_distance_lines(const std::vector<pair_index>& pairs, const std::vector<Closest>& found, bool header,
+                          io::output_target& out) {
+    // Two indices, five numbers of at most 24 characters (a double's shortest
+    // text at worst), six commas and a line end.
+    constexpr std::size_t longest_line = 2 * 10 + 5 * 24 + 6 + 1;
     constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
     std::vector<char> text(buffer_bytes);
     char* const begin = text.data();
@@ -54,7 +58,7 @@ void write_distance_lines(const std::vector<pair_index>& pairs, const std::vecto
         at = std::to_chars(at, end, pairs[k].a).ptr;
         *at++ = ',';
         at = std::to_chars(at, end, pairs[k].b).ptr;
-        for (const float value : {found[k].distance, found[k].ax, found[k].ay, found[k].bx, found[k].by}) {
+        for (const auto value : {found[k].distance, found[k].ax, found[k].ay, found[k].bx, found[k].by}) {
             *at++ = ',';
             at = std::to_chars(at, end, value).ptr;
         }
@@ -63,19 +67,16 @@ void write_distance_lines(const std::vector<pair_index>& pairs, const std::vecto
     out.write(begin, static_cast<std::size_t>(at - begin));
 }
 
+/// Reads the rectangles (a float or a double store) and the pairs, computes
+/// and writes every distance.
 template <class Store>
-std::string distances_of_files(const rectangle_input& input, const io::input_file& rects_file,
-                               const io::input_file& pairs_file, const distance_options& options, bool header,
-                               io::output_target& out, io::status_line& status) {
+std::string distances_of_files(box_pair_run& run, const distance_options& options) {
     Store store;
-    read_box_store(rects_file, store, status);
-    const std::vector<pair_index> pairs = read_pair_list(pairs_file, store.size(), rects_file.name(), status);
-    const std::vector<closest_points> found = naming_record_line(input.path, [&] {
-        std::vector<closest_points> computed(pairs.size());
-        distance_pairs(store, pairs.data(), pairs.size(), computed.data(), options);
-        return computed;
-    });
-    write_distance_lines(pairs, found, header, out);
+    read_box_store(run.rects_file, store, run.status);
+    const std::vector<pair_index> pairs =
+        read_pair_list(*run.pairs_file, store.size(), run.rects_file.name(), run.status);
+    const auto found = naming_record_line(run.input.path, [&] { return distance_pairs(store, pairs, options); });
+    write_distance_lines(pairs, found, run.header, run.target);
     return std::to_string(store.size()) + " boxes, " + std::to_string(pairs.size()) + " pairs";
 }
 
@@ -84,7 +85,8 @@ std::string distances_of_files(const rectangle_input& input, const io::input_fil
 void print_distance_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat distance (--rects FILE | --poses FILE) --pairs FILE\n"
-                 "                       [--backend NAME] [--threads N] [--out FILE] [--header]\n"
+                 "                       [--backend NAME] [--threads N] [--precision float|double]\n"
+                 "                       [--out FILE] [--header]\n"
                  "\n"
                  "Writes one line per pair, in pair order:\n"
                  "  i,j,distance,ax,ay,bx,by\n"
@@ -93,6 +95,10 @@ void print_distance_help(std::FILE* out) {
                  "counts) gets 0 for every field: see 'obbsat contacts' for its depth and\n"
                  "points. Numbers are the shortest decimal text that reads back as the same\n"
                  "float; every backend gives the same bits (docs/contacts.md).\n"
+                 "\n"
+                 "--precision double reads every number as a double and computes in double\n"
+                 "(the same steps; nothing rounded to float), printing the shortest text that\n"
+                 "reads back as the same double; it runs on the scalar backend only.\n"
                  "\n"
                  "options:\n");
     print_options(out, distance_option_specs());
@@ -114,13 +120,13 @@ int run_distance(const arguments& args) {
     distance_options computed;
     computed.threads = run.threads;
     computed.use = run.use;
-    const io::input_file& pairs = *run.pairs_file;
+    const bool corners = run.input.kind == store_kind::corners;
     const std::string summary =
-        run.input.kind == store_kind::corners
-            ? distances_of_files<rect_records>(run.input, run.rects_file, pairs, computed, run.header, run.target,
-                                               run.status)
-            : distances_of_files<pose_records>(run.input, run.rects_file, pairs, computed, run.header, run.target,
-                                               run.status);
+        run.digits == precision::double_
+            ? (corners ? distances_of_files<rect_records64>(run, computed)
+                       : distances_of_files<pose_records64>(run, computed))
+            : (corners ? distances_of_files<rect_records>(run, computed)
+                       : distances_of_files<pose_records>(run, computed));
     run.target.commit();
     run.status.finish(summary);
     return exit_success;

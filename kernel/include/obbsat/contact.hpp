@@ -121,6 +121,10 @@ backend distance_stream(const pose_records& a, const pose_records& b, closest_po
 backend distance_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count, closest_points* out,
                        const distance_options& options = {});
 
+/// The distances of distance_pairs over corner records, one per pair.
+std::vector<closest_points> distance_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                           const distance_options& options = {});
+
 /// out[i] = the distance and closest points of the corner quads a[i] and b[i].
 backend distance_stream(const rect_records& a, const rect_records& b, closest_points* out,
                         const distance_options& options = {});
@@ -166,6 +170,15 @@ backend contact_pairs(const rect_records64& rects, const pair_index* pairs, std:
 std::vector<contact64> contact_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
                                      const contact_options64& options = {});
 
+/// out[i] = the contact of a[i] and b[i] in double for i < a.size(); throws
+/// invalid_input when a and b differ in size, and as contact_pairs.
+backend contact_stream(const pose_records64& a, const pose_records64& b, contact64* out,
+                       const contact_options64& options = {});
+
+/// out[i] = the contact of the double corner quads a[i] and b[i] for i < a.size().
+backend contact_stream(const rect_records64& a, const rect_records64& b, contact64* out,
+                       const contact_options64& options = {});
+
 /// out[i] = the distance and closest points of double poses[pairs[i].a] and
 /// poses[pairs[i].b] for i < count, in double; returns backend::scalar. Throws
 /// as contact_pairs over double poses (there is no margin).
@@ -185,5 +198,13 @@ backend distance_pairs(const rect_records64& rects, const pair_index* pairs, std
 /// The distances of distance_pairs over double corners, one per pair.
 std::vector<closest_points64> distance_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
                                              const distance_options& options = {});
+
+/// out[i] = the distance and closest points of double poses a[i] and b[i], in double.
+backend distance_stream(const pose_records64& a, const pose_records64& b, closest_points64* out,
+                        const distance_options& options = {});
+
+/// out[i] = the distance and closest points of double corner quads a[i] and b[i], in double.
+backend distance_stream(const rect_records64& a, const rect_records64& b, closest_points64* out,
+                        const distance_options& options = {});
 
 }  // namespace obbsat

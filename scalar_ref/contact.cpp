@@ -95,7 +95,6 @@ contact_feature feature_of(bool flip, int ref_index, feature_type ref_type, int 
     return flip ? contact_feature{i, inc_type, r, ref_type} : contact_feature{r, ref_type, i, inc_type};
 }
 
-
 template <class T>
 typename shapes<T>::box pose_box(const typename shapes<T>::pose& p, typename shapes<T>::point_type origin) {
     using point_type = typename shapes<T>::point_type;
@@ -142,7 +141,6 @@ bool quad_accepted(const Quad& r) {
     }
     return left == 4 || right == 4;
 }
-
 
 /// What steps 1 to 3 choose: the reference box (B when flip), its face r,
 /// and the best separations of A's and of B's faces.

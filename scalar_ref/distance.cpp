@@ -1,6 +1,8 @@
-#include <obbsat/ref/contact.hpp>
+// The distance reference (obbsat/ref/distance.hpp), each step one template
+// over the scalar type: float for the float boxes, double for the double ones.
+#include "contact_shapes.hpp"
+
 #include <obbsat/ref/distance.hpp>
-#include <obbsat/ref/local.hpp>
 
 #include <cmath>
 
@@ -8,18 +10,20 @@ namespace obbsat::ref {
 
 namespace {
 
-float dot(point p, point q) { return (p.x * q.x) + (p.y * q.y); }
-point minus(point p, point q) { return point{p.x - q.x, p.y - q.y}; }
+using contact_steps::dot;
+using contact_steps::minus;
+using contact_steps::shapes;
 
 /// D1 for corners: no face of either box separates it from the other.
-bool faces_overlap(const contact_box& faces, const contact_box& other) {
+template <class Real, class Box>
+bool faces_overlap(const Box& faces, const Box& other) {
     for (int k = 0; k < 4; ++k) {
-        float least = dot(faces.n[k], minus(other.v[0], faces.v[k]));
+        Real least = dot(faces.n[k], minus(other.v[0], faces.v[k]));
         for (int j = 1; j < 4; ++j) {
-            const float along = dot(faces.n[k], minus(other.v[j], faces.v[k]));
+            const Real along = dot(faces.n[k], minus(other.v[j], faces.v[k]));
             least = along < least ? along : least;
         }
-        if (!(least <= 0.0f)) {
+        if (!(least <= Real(0))) {
             return false;
         }
     }
@@ -27,29 +31,31 @@ bool faces_overlap(const contact_box& faces, const contact_box& other) {
 }
 
 /// The best candidate of step D2 so far.
+template <class Real>
 struct nearest {
-    float d2;
-    point on_a, on_b;
+    Real d2;
+    typename shapes<Real>::point_type on_a, on_b;
 };
 
 /// D2 for the edges of `edges` against the vertices of `vertices`; `edges_are_a`
 /// says which box the edges belong to. Updates `best` (or sets it, when `first`).
-void edge_candidates(const contact_box& edges, const contact_box& vertices, bool edges_are_a, nearest& best,
-                     bool& first) {
+template <class Real, class Box>
+void edge_candidates(const Box& edges, const Box& vertices, bool edges_are_a, nearest<Real>& best, bool& first) {
+    using point_type = typename shapes<Real>::point_type;
     for (int k = 0; k < 4; ++k) {
-        const point start = edges.v[k];
-        const point e = minus(edges.v[(k + 1) & 3], start);
-        const float ee = dot(e, e);
+        const point_type start = edges.v[k];
+        const point_type e = minus(edges.v[(k + 1) & 3], start);
+        const Real ee = dot(e, e);
         for (int j = 0; j < 4; ++j) {
-            const point p = vertices.v[j];
-            float t = ee > 0.0f ? dot(minus(p, start), e) * (1.0f / ee) : 0.0f;
-            t = t > 0.0f ? t : 0.0f;
-            t = t < 1.0f ? t : 1.0f;
-            const point q{start.x + (t * e.x), start.y + (t * e.y)};
-            const point d = minus(p, q);
-            const float d2 = (d.x * d.x) + (d.y * d.y);
+            const point_type p = vertices.v[j];
+            Real t = ee > Real(0) ? dot(minus(p, start), e) * (Real(1) / ee) : Real(0);
+            t = t > Real(0) ? t : Real(0);
+            t = t < Real(1) ? t : Real(1);
+            const point_type q{start.x + (t * e.x), start.y + (t * e.y)};
+            const point_type d = minus(p, q);
+            const Real d2 = (d.x * d.x) + (d.y * d.y);
             if (first || d2 < best.d2) {
-                best = edges_are_a ? nearest{d2, q, p} : nearest{d2, p, q};
+                best = edges_are_a ? nearest<Real>{d2, q, p} : nearest<Real>{d2, p, q};
                 first = false;
             }
         }
@@ -57,32 +63,43 @@ void edge_candidates(const contact_box& edges, const contact_box& vertices, bool
 }
 
 /// D2 and D3 for separated boxes.
-closest_points closest_of(const contact_box& a, const contact_box& b, point origin) {
-    nearest best{};
+template <class Real>
+typename shapes<Real>::closest closest_of(const typename shapes<Real>::box& a, const typename shapes<Real>::box& b,
+                                          typename shapes<Real>::point_type origin) {
+    nearest<Real> best{};
     bool first = true;
-    edge_candidates(a, b, true, best, first);
-    edge_candidates(b, a, false, best, first);
-    return closest_points{std::sqrt(best.d2), origin.x + best.on_a.x, origin.y + best.on_a.y,
-                          origin.x + best.on_b.x, origin.y + best.on_b.y};
+    edge_candidates<Real>(a, b, true, best, first);
+    edge_candidates<Real>(b, a, false, best, first);
+    return typename shapes<Real>::closest{std::sqrt(best.d2), origin.x + best.on_a.x, origin.y + best.on_a.y,
+                                          origin.x + best.on_b.x, origin.y + best.on_b.y};
+}
+
+template <class Real>
+typename shapes<Real>::closest poses_distance(const typename shapes<Real>::pose& a,
+                                              const typename shapes<Real>::pose& b) {
+    if (local(a, b)) {
+        return typename shapes<Real>::closest{};
+    }
+    const auto origin = a.center;
+    return closest_of<Real>(contact_box_of(a, origin), contact_box_of(b, origin), origin);
+}
+
+template <class Real>
+typename shapes<Real>::closest quads_distance(const typename shapes<Real>::quad& a,
+                                              const typename shapes<Real>::quad& b) {
+    const auto origin = a.ul;
+    const auto box_a = contact_box_of(a, origin), box_b = contact_box_of(b, origin);
+    if (faces_overlap<Real>(box_a, box_b) && faces_overlap<Real>(box_b, box_a)) {
+        return typename shapes<Real>::closest{};
+    }
+    return closest_of<Real>(box_a, box_b, origin);
 }
 
 }  // namespace
 
-closest_points distance_of(const rect_pose& a, const rect_pose& b) {
-    if (local(a, b)) {
-        return closest_points{};
-    }
-    const point origin = a.center;
-    return closest_of(contact_box_of(a, origin), contact_box_of(b, origin), origin);
-}
-
-closest_points distance_of(const rect& a, const rect& b) {
-    const point origin = a.ul;
-    const contact_box box_a = contact_box_of(a, origin), box_b = contact_box_of(b, origin);
-    if (faces_overlap(box_a, box_b) && faces_overlap(box_b, box_a)) {
-        return closest_points{};
-    }
-    return closest_of(box_a, box_b, origin);
-}
+closest_points distance_of(const rect_pose& a, const rect_pose& b) { return poses_distance<float>(a, b); }
+closest_points64 distance_of(const rect_pose64& a, const rect_pose64& b) { return poses_distance<double>(a, b); }
+closest_points distance_of(const rect& a, const rect& b) { return quads_distance<float>(a, b); }
+closest_points64 distance_of(const rect64& a, const rect64& b) { return quads_distance<double>(a, b); }
 
 }  // namespace obbsat::ref

@@ -342,6 +342,13 @@ backend distance_pairs(const rect_records& rects, const pair_index* pairs, std::
     return ran;
 }
 
+std::vector<closest_points> distance_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                           const distance_options& options) {
+    std::vector<closest_points> out(pairs.size());
+    distance_pairs(rects, pairs.data(), pairs.size(), out.data(), options);
+    return out;
+}
+
 backend distance_stream(const rect_records& a, const rect_records& b, closest_points* out,
                         const distance_options& options) {
     require_same_length(a.size(), b.size(), "rectangles");

@@ -973,7 +973,8 @@ def bounds(boxes, *, precision=None):
 
 class Contacts:
     """The contacts of K pairs (A, B), one row per pair, as new numpy arrays
-    (``obbsat/contact_manifold.hpp`` holds the meaning of every value):
+    (``obbsat/contact_manifold.hpp`` holds the meaning of every value); the
+    float32 columns below are float64 when the boxes were float64:
 
     - ``normals``: float32 (K, 2), the unit normal from A to B;
     - ``depths``: float32 (K,), the penetration along it (> 0 overlapping,
@@ -1007,8 +1008,9 @@ class Contacts:
 class Distances:
     """The distances of K pairs (A, B) and a closest point of each, new numpy
     arrays: ``distance`` float32 (K,), ``a`` float32 (K, 2) a point of A at
-    that distance from B, ``b`` float32 (K, 2) a point of B. A pair that
-    collides (touching included) has every value +0."""
+    that distance from B, ``b`` float32 (K, 2) a point of B (float64 all three
+    when the boxes were float64). A pair that collides (touching included) has
+    every value +0."""
 
     __slots__ = ("distance", "a", "b")
 
@@ -1031,34 +1033,39 @@ def _margin(margin):
 
 
 def _float32_only(call, precision, **arrays):
-    """Contacts and distances are computed in float32 only: float64 data is
-    refused unless ``precision="float32"`` asks for it to be rounded."""
+    """find_contacts is computed in float32 only: float64 data is refused
+    unless ``precision="float32"`` asks for it to be rounded."""
     if precision not in (None, "float32"):
-        raise ValueError(f"{call}: contacts and distances are computed in float32 only; "
+        raise ValueError(f"{call}: the scene's contacts are computed in float32 only; "
                          f"precision={precision!r} is not available")
     if precision is None:
         for what, array in arrays.items():
             if _holds_float64(array):
-                raise ValueError(f"{call}: {what} holds float64 data, and contacts and distances are computed in "
+                raise ValueError(f"{call}: {what} holds float64 data, and the scene's contacts are computed in "
                                  "float32 only: pass precision=\"float32\" to round it explicitly")
 
 
-def _boxes(boxes, call, precision=None):
-    """The boxes of a pair-list call: a store as it is, an array as :func:`_form` gives it, in float32."""
-    _float32_only(call, precision, boxes=boxes)
+def _boxes(boxes, precision=None):
+    """The boxes of a pair-list call: a store as it is, an array as :func:`_form`
+    gives it (float64 data stays float64 and is computed in double, unless
+    ``precision`` says otherwise)."""
     if isinstance(boxes, (RectRecords, PoseRecords)):
+        _refuse_float64_store(boxes, precision)
         return boxes
-    return _form(boxes, "boxes", "float32")[1]
+    return _form(boxes, "boxes", precision)[1]
 
 
 def _stream_pair(a, b, call, precision=None):
-    """Both batches of a stream call, of one form and equal length, in float32."""
+    """Both batches of a stream call, of one form and equal length, in one
+    precision: float64 when ``precision`` says so or, when it is None, when
+    either batch holds float64 data (the other is widened, exactly)."""
     for what, batch in (("a", a), ("b", b)):
         _refuse_store(batch, call, what,
                       "an array of corners, (N, 8) or (N, 4, 2), or of poses, (N, 6), not a store")
-    _float32_only(call, precision, a=a, b=b)
-    form_a, a = _form(a, "a", "float32")
-    form_b, b = _form(b, "b", "float32")
+    if precision is None:
+        precision = "float64" if _holds_float64(a) or _holds_float64(b) else "float32"
+    form_a, a = _form(a, "a", precision)
+    form_b, b = _form(b, "b", precision)
     if form_a != form_b:
         raise ValueError(f"a holds {form_a} (shape {a.shape}), b holds {form_b} (shape {b.shape}): "
                          "a stream compares one form")
@@ -1075,9 +1082,12 @@ def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1, precision=N
     ``boxes`` and ``pairs`` are as in :func:`collide` (poses (N, 6), corners
     (N, 8) or (N, 4, 2), or a :func:`records` store); corners must be strictly
     convex quads (``docs/contacts.md``). ``margin`` (finite, >= 0): pairs
-    apart by at most this much get points too. Contacts are computed in
-    float32: float64 boxes raise ValueError unless ``precision="float32"``
-    asks for them to be rounded. The GIL is released.
+    apart by at most this much get points too. Float64 boxes are computed in
+    double (``obbsat/ref/contact.hpp`` states how), never rounded, and give
+    float64 columns; ``precision="float32"`` rounds them to float32 instead,
+    ``precision="float64"`` widens float32 data. Double contacts run on the
+    scalar backend only: another explicit backend raises ValueError. The GIL
+    is released.
 
     Returns a :class:`Contacts`, one row per pair. Raises ``IndexError`` for an
     index out of range (naming the pair), ``ValueError`` for a bad box (naming
@@ -1092,9 +1102,10 @@ def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1, precision=N
     _refuse_store(pairs, "contacts", "pairs", _PAIRS_EXPECTED)
     threads = _threads(threads)
     margin = _margin(margin)
-    boxes = _boxes(boxes, "contacts", precision)
+    boxes = _boxes(boxes, _precision(precision))
     pairs = _pairs(pairs, len(boxes))
-    return Contacts(_core.contacts_of_pairs(boxes, pairs, margin, _backend(backend), threads))
+    call = _core.contacts_of_pairs64 if _is64(boxes) else _core.contacts_of_pairs
+    return Contacts(call(boxes, pairs, margin, _backend(backend), threads))
 
 
 def contacts_stream(a, b, *, margin=0.0, backend="auto", threads=1, precision=None):
@@ -1109,8 +1120,9 @@ def contacts_stream(a, b, *, margin=0.0, backend="auto", threads=1, precision=No
     """
     threads = _threads(threads)
     margin = _margin(margin)
-    a, b = _stream_pair(a, b, "contacts_stream", precision)
-    return Contacts(_core.contacts_of_stream(a, b, margin, _backend(backend), threads))
+    a, b = _stream_pair(a, b, "contacts_stream", _precision(precision))
+    call = _core.contacts_of_stream64 if _is64(a) else _core.contacts_of_stream
+    return Contacts(call(a, b, margin, _backend(backend), threads))
 
 
 def distances(boxes, pairs, *, backend="auto", threads=1, precision=None):
@@ -1126,9 +1138,10 @@ def distances(boxes, pairs, *, backend="auto", threads=1, precision=None):
     """
     _refuse_store(pairs, "distances", "pairs", _PAIRS_EXPECTED)
     threads = _threads(threads)
-    boxes = _boxes(boxes, "distances", precision)
+    boxes = _boxes(boxes, _precision(precision))
     pairs = _pairs(pairs, len(boxes))
-    return Distances(_core.distances_of_pairs(boxes, pairs, _backend(backend), threads))
+    call = _core.distances_of_pairs64 if _is64(boxes) else _core.distances_of_pairs
+    return Distances(call(boxes, pairs, _backend(backend), threads))
 
 
 def distances_stream(a, b, *, backend="auto", threads=1, precision=None):
@@ -1141,8 +1154,9 @@ def distances_stream(a, b, *, backend="auto", threads=1, precision=None):
     array([0., 3.], dtype=float32)
     """
     threads = _threads(threads)
-    a, b = _stream_pair(a, b, "distances_stream", precision)
-    return Distances(_core.distances_of_stream(a, b, _backend(backend), threads))
+    a, b = _stream_pair(a, b, "distances_stream", _precision(precision))
+    call = _core.distances_of_stream64 if _is64(a) else _core.distances_of_stream
+    return Distances(call(a, b, _backend(backend), threads))
 
 
 def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=1, precision=None):

@@ -16,6 +16,8 @@
 //              (type 0 a corner, 1 an edge; see obbsat/contact_manifold.hpp);
 //              unused points are all zero.
 //   distances: distance float32 (K,), a float32 (K, 2), b float32 (K, 2).
+// The *64 calls take float64 rows (copied once into pose_records64 or
+// rect_records64), compute in double and give the same columns in float64.
 //
 // Errors as in module.cpp: obbsat::invalid_input becomes IndexError when it
 // names a pair and ValueError otherwise; unsupported_backend stays itself
@@ -29,9 +31,11 @@
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -86,29 +90,41 @@ obbsat::distance_options distance_options_of(const std::string& backend, long lo
     return options;
 }
 
-bool holds_c_float32(const py::array& a) {
-    return py::isinstance<py::array_t<float>>(a) && (a.flags() & py::array::c_style) != 0;
+template <class Real>
+bool holds_c(const py::array& a) {
+    return py::isinstance<py::array_t<Real>>(a) && (a.flags() & py::array::c_style) != 0;
+}
+
+/// The name of a row type's float type, for errors.
+template <class Real>
+const char* dtype_name() {
+    return sizeof(Real) == 8 ? "float64" : "float32";
 }
 
 bool is_corner_array(const py::array& a) {
     return (a.ndim() == 2 && a.shape(1) == 8) || (a.ndim() == 3 && a.shape(1) == 4 && a.shape(2) == 2);
 }
 
-/// The corners of `a`, read in place.
-std::pair<const obbsat::rect*, std::size_t> corners_in_place(const py::array& a, const char* what) {
-    if (!is_corner_array(a) || !holds_c_float32(a)) {
-        throw py::type_error(std::string(what) +
-                             ": expected a C-contiguous float32 array of shape (N, 8) or (N, 4, 2)");
+/// The corners of `a` (rect, or rect64 for float64), read in place.
+template <class Rect = obbsat::rect>
+std::pair<const Rect*, std::size_t> corners_in_place(const py::array& a, const char* what) {
+    using real = decltype(Rect{}.ul.x);
+    if (!is_corner_array(a) || !holds_c<real>(a)) {
+        throw py::type_error(std::string(what) + ": expected a C-contiguous " + dtype_name<real>() +
+                             " array of shape (N, 8) or (N, 4, 2)");
     }
-    return {static_cast<const obbsat::rect*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+    return {static_cast<const Rect*>(a.data()), static_cast<std::size_t>(a.shape(0))};
 }
 
-/// The poses of `a`, read in place.
-std::pair<const obbsat::rect_pose*, std::size_t> poses_in_place(const py::array& a, const char* what) {
-    if (a.ndim() != 2 || a.shape(1) != 6 || !holds_c_float32(a)) {
-        throw py::type_error(std::string(what) + ": expected a C-contiguous float32 array of shape (N, 6)");
+/// The poses of `a` (rect_pose, or rect_pose64 for float64), read in place.
+template <class Pose = obbsat::rect_pose>
+std::pair<const Pose*, std::size_t> poses_in_place(const py::array& a, const char* what) {
+    using real = decltype(Pose{}.center.x);
+    if (a.ndim() != 2 || a.shape(1) != 6 || !holds_c<real>(a)) {
+        throw py::type_error(std::string(what) + ": expected a C-contiguous " + dtype_name<real>() +
+                             " array of shape (N, 6)");
     }
-    return {static_cast<const obbsat::rect_pose*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+    return {static_cast<const Pose*>(a.data()), static_cast<std::size_t>(a.shape(0))};
 }
 
 /// The pairs of `a`, read in place.
@@ -147,9 +163,12 @@ void without_gil(const Call& call) {
     }
 }
 
-/// The columns of K contacts, as numpy arrays allocated with the GIL held and
-/// filled (scatter) without it.
+/// The columns of K contacts (obbsat::contact, or contact64 in float64), as
+/// numpy arrays allocated with the GIL held and filled (scatter) without it.
+template <class Contact>
 class contact_columns {
+    using real = decltype(Contact{}.nx);
+
 public:
     explicit contact_columns(std::size_t count)
         : count_(count),
@@ -161,21 +180,21 @@ public:
           features_(shape({count, 2})) {}
 
     /// Copies `contacts` (count of them) into the columns; needs no GIL.
-    void fill(const obbsat::contact* contacts) {
-        float* normals = normals_.mutable_data();
-        float* depths = depths_.mutable_data();
+    void fill(const Contact* contacts) {
+        real* normals = normals_.mutable_data();
+        real* depths = depths_.mutable_data();
         std::uint8_t* counts = counts_.mutable_data();
-        float* points = points_.mutable_data();
-        float* separations = separations_.mutable_data();
+        real* points = points_.mutable_data();
+        real* separations = separations_.mutable_data();
         std::uint32_t* features = features_.mutable_data();
         for (std::size_t k = 0; k < count_; ++k) {
-            const obbsat::contact& c = contacts[k];
+            const Contact& c = contacts[k];
             normals[2 * k] = c.nx;
             normals[2 * k + 1] = c.ny;
             depths[k] = c.depth;
             counts[k] = static_cast<std::uint8_t>(c.point_count);
             for (std::size_t p = 0; p < 2; ++p) {
-                const obbsat::contact_point& point = c.points[p];
+                const auto& point = c.points[p];
                 points[4 * k + 2 * p] = point.x;
                 points[4 * k + 2 * p + 1] = point.y;
                 separations[2 * k + p] = point.separation;
@@ -211,16 +230,19 @@ private:
     }
 
     std::size_t count_;
-    py::array_t<float> normals_;
-    py::array_t<float> depths_;
+    py::array_t<real> normals_;
+    py::array_t<real> depths_;
     py::array_t<std::uint8_t> counts_;
-    py::array_t<float> points_;
-    py::array_t<float> separations_;
+    py::array_t<real> points_;
+    py::array_t<real> separations_;
     py::array_t<std::uint32_t> features_;
 };
 
-/// The columns of K distances.
+/// The columns of K distances (closest_points, or closest_points64 in float64).
+template <class Closest>
 class distance_columns {
+    using real = decltype(Closest{}.distance);
+
 public:
     explicit distance_columns(std::size_t count)
         : count_(count),
@@ -228,10 +250,10 @@ public:
           a_({static_cast<py::ssize_t>(count), py::ssize_t{2}}),
           b_({static_cast<py::ssize_t>(count), py::ssize_t{2}}) {}
 
-    void fill(const obbsat::closest_points* found) {
-        float* distance = distance_.mutable_data();
-        float* a = a_.mutable_data();
-        float* b = b_.mutable_data();
+    void fill(const Closest* found) {
+        real* distance = distance_.mutable_data();
+        real* a = a_.mutable_data();
+        real* b = b_.mutable_data();
         for (std::size_t k = 0; k < count_; ++k) {
             distance[k] = found[k].distance;
             a[2 * k] = found[k].ax;
@@ -251,15 +273,15 @@ public:
 
 private:
     std::size_t count_;
-    py::array_t<float> distance_;
-    py::array_t<float> a_;
-    py::array_t<float> b_;
+    py::array_t<real> distance_;
+    py::array_t<real> a_;
+    py::array_t<real> b_;
 };
 
 /// Runs `compute(out)` (filling `count` results) without the GIL and returns the columns.
-template <class Columns, class Result, class Compute>
+template <template <class> class Columns, class Result, class Compute>
 py::dict columns_of(std::size_t count, const Compute& compute) {
-    Columns columns(count);
+    Columns<Result> columns(count);
     without_gil([&] {
         std::vector<Result> results(count);
         compute(results.data());
@@ -389,6 +411,92 @@ py::dict distances_of_stream(const py::array& a, const py::array& b, const std::
         });
 }
 
+obbsat::contact_options64 contact_options64_of(double margin, const std::string& backend, long long threads) {
+    obbsat::contact_options64 options;
+    options.use = backend_named(backend);
+    options.threads = threads_of(threads);
+    options.margin = margin;  // in double, as the boxes: never rounded to float32
+    return options;
+}
+
+/// The double store of float64 rows, copied and checked without the GIL; an
+/// error names the row and field as the float calls do, prefixed by `what`
+/// for a stream batch (nothing for the boxes of a pair list).
+template <class Store, class Row>
+std::optional<Store> double_store_of(const std::pair<const Row*, std::size_t>& rows, const char* what) {
+    std::optional<Store> store;
+    without_gil([&] {
+        if (what == nullptr) {
+            store.emplace(rows.first, rows.second);
+        } else {
+            store.emplace(store_copy<Store>(rows.first, rows.second, what));
+        }
+    });
+    return store;
+}
+
+/// Runs `run(store)` on the double store of float64 boxes (N, 8), (N, 4, 2) or (N, 6).
+template <class Run>
+py::dict on_double_store(const py::array& boxes, const char* what, const Run& run) {
+    if (is_corner_array(boxes)) {
+        return run(*double_store_of<obbsat::rect_records64>(corners_in_place<obbsat::rect64>(boxes, what), nullptr));
+    }
+    return run(*double_store_of<obbsat::pose_records64>(poses_in_place<obbsat::rect_pose64>(boxes, what), nullptr));
+}
+
+/// Runs `run(store_a, store_b)` on the double stores of two float64 batches of one form.
+template <class Run>
+py::dict on_double_stores(const py::array& a, const py::array& b, const Run& run) {
+    if (is_corner_array(a)) {
+        return run(*double_store_of<obbsat::rect_records64>(corners_in_place<obbsat::rect64>(a, "a"), "a"),
+                   *double_store_of<obbsat::rect_records64>(corners_in_place<obbsat::rect64>(b, "b"), "b"));
+    }
+    return run(*double_store_of<obbsat::pose_records64>(poses_in_place<obbsat::rect_pose64>(a, "a"), "a"),
+               *double_store_of<obbsat::pose_records64>(poses_in_place<obbsat::rect_pose64>(b, "b"), "b"));
+}
+
+/// Contacts of a pair list over float64 boxes, in double (obbsat/contact.hpp's *64 calls).
+py::dict contacts_of_pairs64(const py::array& boxes, const py::array& pairs, double margin,
+                             const std::string& backend, long long threads) {
+    const obbsat::contact_options64 options = contact_options64_of(margin, backend, threads);
+    const auto [list, count] = pairs_in_place(pairs);
+    return on_double_store(boxes, "boxes", [&, list = list, count = count](const auto& store) {
+        return columns_of<contact_columns, obbsat::contact64>(
+            count, [&](auto* out) { obbsat::contact_pairs(store, list, count, out, options); });
+    });
+}
+
+/// Contacts of a[k] and b[k] over float64 batches of one form, in double.
+py::dict contacts_of_stream64(const py::array& a, const py::array& b, double margin, const std::string& backend,
+                              long long threads) {
+    const obbsat::contact_options64 options = contact_options64_of(margin, backend, threads);
+    return on_double_stores(a, b, [&](const auto& store_a, const auto& store_b) {
+        return columns_of<contact_columns, obbsat::contact64>(
+            store_a.size(), [&](auto* out) { obbsat::contact_stream(store_a, store_b, out, options); });
+    });
+}
+
+/// Distances of a pair list over float64 boxes, in double.
+py::dict distances_of_pairs64(const py::array& boxes, const py::array& pairs, const std::string& backend,
+                              long long threads) {
+    const obbsat::distance_options options = distance_options_of(backend, threads);
+    const auto [list, count] = pairs_in_place(pairs);
+    return on_double_store(boxes, "boxes", [&, list = list, count = count](const auto& store) {
+        return columns_of<distance_columns, obbsat::closest_points64>(
+            count, [&](auto* out) { obbsat::distance_pairs(store, list, count, out, options); });
+    });
+}
+
+/// Distances of a[k] and b[k] over float64 batches of one form, in double.
+py::dict distances_of_stream64(const py::array& a, const py::array& b, const std::string& backend,
+                               long long threads) {
+    const obbsat::distance_options options = distance_options_of(backend, threads);
+    return on_double_stores(a, b, [&](const auto& store_a, const auto& store_b) {
+        return columns_of<distance_columns, obbsat::closest_points64>(
+            store_a.size(), [&](auto* out) { obbsat::distance_stream(store_a, store_b, out, options); });
+    });
+}
+
 /// The rows of an array, or a store, as the scene query's view.
 obbsat::box_view view_of(const py::object& boxes) {
     if (py::isinstance<obbsat::pose_records>(boxes)) {
@@ -433,7 +541,7 @@ py::tuple find_contacts_of(const py::object& boxes, const std::string& method, d
 }  // namespace
 
 py::dict contact_dict(const obbsat::contact* contacts, std::size_t count) {
-    contact_columns columns(count);
+    contact_columns<obbsat::contact> columns(count);
     {
         py::gil_scoped_release release;
         columns.fill(contacts);
@@ -451,6 +559,15 @@ void register_contacts(py::module_& m) {
           py::arg("threads"), "Distances and closest points of a pair list; a dict of columns.");
     m.def("distances_of_stream", &distances_of_stream, py::arg("a"), py::arg("b"), py::arg("backend"),
           py::arg("threads"), "Distances and closest points of a[k] and b[k]; a dict of columns.");
+    m.def("contacts_of_pairs64", &contacts_of_pairs64, py::arg("boxes"), py::arg("pairs"), py::arg("margin"),
+          py::arg("backend"), py::arg("threads"),
+          "Contacts of a pair list over float64 poses or corners, computed in double; a dict of float64 columns.");
+    m.def("contacts_of_stream64", &contacts_of_stream64, py::arg("a"), py::arg("b"), py::arg("margin"),
+          py::arg("backend"), py::arg("threads"), "Contacts of a[k] and b[k] over float64 rows, in double.");
+    m.def("distances_of_pairs64", &distances_of_pairs64, py::arg("boxes"), py::arg("pairs"), py::arg("backend"),
+          py::arg("threads"), "Distances of a pair list over float64 poses or corners, in double.");
+    m.def("distances_of_stream64", &distances_of_stream64, py::arg("a"), py::arg("b"), py::arg("backend"),
+          py::arg("threads"), "Distances of a[k] and b[k] over float64 rows, in double.");
     m.def("find_contacts", &find_contacts_of, py::arg("boxes"), py::arg("method"), py::arg("margin"),
           py::arg("backend"), py::arg("threads"),
           "Every colliding pair of a scene (or within the margin) with its contact: (pairs, columns).");

@@ -291,17 +291,94 @@ def test_python_runs_while_contacts_are_computed():
     assert steps > 1000 * took * 100
 
 
-def test_float64_boxes_are_refused_unless_rounding_is_asked_for():
+def test_float64_boxes_are_computed_in_double_unless_rounding_is_asked_for():
     poses = np.array([square(0, 0), square(1.5, 0)], dtype=np.float64)
-    for call in (lambda **k: obbsat.contacts(poses, [[0, 1]], **k),
-                 lambda **k: obbsat.contacts_stream(poses[:1], poses[1:], **k),
-                 lambda **k: obbsat.distances(poses, [[0, 1]], **k),
-                 lambda **k: obbsat.distances_stream(poses[:1], poses[1:], **k),
-                 lambda **k: obbsat.find_contacts(poses, **k)):
-        with pytest.raises(ValueError, match="float64"):
-            call()
-        with pytest.raises(ValueError, match="float32 only"):
-            call(precision="float64")
-        call(precision="float32")
+    calls = {"depths": (lambda **k: obbsat.contacts(poses, [[0, 1]], **k),
+                        lambda **k: obbsat.contacts_stream(poses[:1], poses[1:], **k)),
+             "distance": (lambda **k: obbsat.distances(poses, [[0, 1]], **k),
+                          lambda **k: obbsat.distances_stream(poses[:1], poses[1:], **k))}
+    for column, pair in calls.items():
+        for call in pair:
+            assert getattr(call(), column).dtype == np.float64
+            assert getattr(call(precision="float64"), column).dtype == np.float64
+            assert getattr(call(precision="float32"), column).dtype == np.float32
     rounded = obbsat.contacts(poses, [[0, 1]], precision="float32")
     same_contacts(rounded, obbsat.contacts(poses.astype(np.float32), [[0, 1]]))
+    # The scene query is float only: float64 is refused unless rounding is asked for.
+    with pytest.raises(ValueError, match="float64"):
+        obbsat.find_contacts(poses)
+    with pytest.raises(ValueError, match="float32 only"):
+        obbsat.find_contacts(poses, precision="float64")
+    obbsat.find_contacts(poses, precision="float32")
+    # A float32 store cannot give float64 rows.
+    with pytest.raises(ValueError, match="float64"):
+        obbsat.contacts(obbsat.records(poses.astype(np.float32)), [[0, 1]], precision="float64")
+
+
+def utm_scene():
+    """Poses at UTM-like coordinates (eastings near 5e5, northings near 5e6, in
+    metres) whose float32 rounding (0.03 to 0.5 m) would move them by more
+    than their gaps: pairs a few centimetres apart or overlapping."""
+    rng = np.random.default_rng(11)
+    count = 400
+    centers = np.column_stack([rng.uniform(500000, 500200, count), rng.uniform(5000000, 5000200, count)])
+    angles = rng.uniform(0, np.pi, count)
+    poses = np.column_stack([centers, rng.uniform(0.5, 4, (count, 2)), np.cos(angles), np.sin(angles)])
+    pairs = obbsat.find_pairs(poses.astype(np.float64), method="conservative")
+    near = rng.integers(0, count, size=(600, 2)).astype(np.uint32)
+    return poses, np.concatenate([pairs, near]).astype(np.uint32)
+
+
+def test_float64_contacts_equal_the_programs_double_values_bit_for_bit():
+    poses, pairs = utm_scene()
+    c = obbsat.contacts(poses, pairs, margin=0.05)
+    assert c.depths.dtype == np.float64 and c.points.dtype == np.float64
+    with tempfile.TemporaryDirectory() as folder:
+        pose_path, pair_path = write_inputs(folder, poses, pairs)
+        lines = run_cli(["contacts", "--poses", pose_path, "--pairs", pair_path, "--margin", "0.05",
+                         "--precision", "double"])
+        distance_lines = run_cli(["distance", "--poses", pose_path, "--pairs", pair_path, "--precision", "double"])
+    kept = np.flatnonzero(c.counts > 0)
+    assert len(lines) == len(kept) > 50
+    for line, k in zip(lines, kept):
+        f = line.split(",")
+        assert [int(f[0]), int(f[1])] == pairs[k].tolist()
+        assert [float(v) for v in f[2:5]] == [*c.normals[k], c.depths[k]]
+        assert int(f[5]) == c.counts[k]
+        for p in range(c.counts[k]):
+            assert [float(v) for v in f[6 + 3 * p:9 + 3 * p]] == [*c.points[k, p], c.separations[k, p]]
+    d = obbsat.distances(poses, pairs)
+    got = np.array([[float(v) for v in line.split(",")[2:]] for line in distance_lines])
+    assert (got == np.column_stack([d.distance, d.a, d.b])).all()
+    # Rounded to float32, the same pairs lose centimetres: the double path is not float32 in disguise.
+    rounded = obbsat.contacts(poses, pairs, margin=0.05, precision="float32")
+    assert (rounded.depths.astype(np.float64) != c.depths).any()
+
+
+def test_float64_contacts_are_the_same_on_every_thread_count_and_stream():
+    poses, pairs = utm_scene()
+    first = obbsat.contacts(poses, pairs, margin=0.05)
+    for threads in (0, 3):
+        same_contacts(obbsat.contacts(poses, pairs, margin=0.05, threads=threads, backend="scalar"), first)
+    same_contacts(obbsat.contacts_stream(poses[pairs[:, 0]], poses[pairs[:, 1]], margin=0.05), first)
+    d = obbsat.distances(poses, pairs)
+    s = obbsat.distances_stream(poses[pairs[:, 0]], poses[pairs[:, 1]], threads=2)
+    assert d.distance.tobytes() == s.distance.tobytes() and d.a.tobytes() == s.a.tobytes()
+    # Corners in double too: the corners of a float64 pose, the same pairs.
+    corners = np.array([[0, 1, 2, 1, 2, 0, 0, 0], [1, 2, 3, 2, 3, 0.5, 1, 0.5]], dtype=np.float64) + 5e5
+    cc = obbsat.contacts(corners, [[0, 1]])
+    assert cc.depths.dtype == np.float64 and cc.counts.tolist() == [2] and cc.depths.tolist() == [0.5]
+
+
+def test_float64_errors_name_the_row_and_refuse_simd_backends():
+    poses = np.array([square(0, 0), square(1.5, 0), [0, 0, 1, 1, 0, 0]], dtype=np.float64)
+    with pytest.raises(ValueError, match="pose 2"):
+        obbsat.contacts(poses, [[0, 1]])
+    with pytest.raises(IndexError, match="pair 1"):
+        obbsat.contacts(poses[:2], [[0, 1], [0, 5]])
+    with pytest.raises(ValueError, match="margin"):
+        obbsat.contacts(poses[:2], [[0, 1]], margin=-1.0)
+    for backend in obbsat.backends():
+        if backend != "scalar":
+            with pytest.raises(ValueError, match="scalar backend"):
+                obbsat.distances(poses[:2], [[0, 1]], backend=backend)

@@ -7,12 +7,16 @@
 
 #include <obbsat/contact.hpp>
 #include <obbsat/find_contacts.hpp>
+#include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/pose_scene.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -128,6 +132,37 @@ TEST(Contacts, SceneLinesAreFindContactsBitForBit) {
     EXPECT_GT(lines_of(near.out).size(), lines_of(touching.out).size());
 }
 
+TEST(Contacts, MethodChoosesTheScenePairs) {
+    scratch s;
+    const std::vector<rect_pose> rows = scene_rows();
+    write_file(s.file("poses.csv"), pose_file(rows));
+    for (const obbsat::method m : obbsat::methods_on(obbsat::store_kind::poses)) {
+        const std::string name = obbsat::method_name(m);
+        SCOPED_TRACE(name);
+        const auto r = s.run("contacts --poses poses.csv --method " + name);
+        ASSERT_EQ(r.status, 0) << r.err;
+        obbsat::collide_options options;
+        options.test = m;
+        const obbsat::scene_contacts expected = obbsat::find_contacts(rows, options);
+        const std::vector<std::string> lines = lines_of(r.out);
+        ASSERT_EQ(lines.size(), expected.pairs.size());
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+            expect_line(lines[k], expected.pairs[k], expected.contacts[k]);
+        }
+    }
+    // Pair (0, 1) is apart by 2.4e-7, which conservative cannot prove in
+    // float: it reports the pair, exact (the default) does not.
+    write_file(s.file("near.csv"), "0,0,1,1,1,0\n2.0000002,0,1,1,1,0\n0,5,1,1,0.6,0.8\n");
+    const auto by_default = s.run("contacts --poses near.csv");
+    const auto by_exact = s.run("contacts --poses near.csv --method exact");
+    const auto by_conservative = s.run("contacts --poses near.csv --method conservative");
+    ASSERT_EQ(by_conservative.status, 0) << by_conservative.err;
+    EXPECT_EQ(by_default.out, "");
+    EXPECT_EQ(by_exact.out, "");
+    ASSERT_EQ(lines_of(by_conservative.out).size(), 1u);
+    EXPECT_EQ(fields_of(by_conservative.out).at(0), "0");
+}
+
 TEST(Contacts, ListLinesAreThePairsWithPointsInListOrder) {
     scratch s;
     // Overlapping, apart by 0.1, apart by 1.6; the list runs backwards.
@@ -205,6 +240,151 @@ TEST(Distance, LinesAreDistancePairsBitForBit) {
     EXPECT_LT(colliding, pairs.size());
 }
 
+/// UTM-like double poses (eastings near 5e5, northings near 5e6): float32
+/// would round them by up to half a metre, more than their sizes' digits.
+std::vector<obbsat::rect_pose64> utm_rows() {
+    std::vector<obbsat::rect_pose64> rows;
+    for (std::uint32_t k = 0; k < 60; ++k) {
+        const double angle = 0.1 * k;
+        rows.push_back({{500000.125 + 1.37 * k, 5000000.375 + 0.61 * (k % 7)},
+                        {0.8 + 0.01 * k, 0.5},
+                        {std::cos(angle), std::sin(angle)}});
+    }
+    return rows;
+}
+
+std::string pose64_file(const std::vector<obbsat::rect_pose64>& rows) {
+    std::string text;
+    char line[256];
+    for (const obbsat::rect_pose64& p : rows) {
+        std::snprintf(line, sizeof line, "%a,%a,%a,%a,%a,%a\n", p.center.x, p.center.y, p.half_extents.x,
+                      p.half_extents.y, p.rotation.x, p.rotation.y);
+        text += line;
+    }
+    return text;
+}
+
+/// The double a field holds, exactly as read back.
+double double_of(const std::string& field) {
+    char* end = nullptr;
+    const double value = std::strtod(field.c_str(), &end);
+    EXPECT_EQ(end, field.c_str() + field.size()) << "not a number: '" << field << "'";
+    return value;
+}
+
+TEST(ContactsDouble, PairLinesAreTheDoubleContactsBitForBit) {
+    scratch s;
+    const std::vector<obbsat::rect_pose64> rows = utm_rows();
+    write_file(s.file("poses.csv"), pose64_file(rows));
+    std::string pair_text;
+    std::vector<pair_index> pairs;
+    for (std::uint32_t k = 0; k + 1 < rows.size(); ++k) {
+        pairs.push_back({k, k + 1});
+        pair_text += std::to_string(k) + "," + std::to_string(k + 1) + "\n";
+    }
+    write_file(s.file("pairs.csv"), pair_text);
+    const auto r = s.run("contacts --poses poses.csv --pairs pairs.csv --margin 0.1 --precision double --threads 2");
+    ASSERT_EQ(r.status, 0) << r.err;
+    obbsat::contact_options64 options;
+    options.margin = 0.1;
+    const std::vector<obbsat::contact64> expected =
+        obbsat::contact_pairs(obbsat::pose_records64(rows), pairs, options);
+    const std::vector<std::string> lines = lines_of(r.out);
+    std::size_t k = 0;
+    for (const std::string& line : lines) {
+        while (k < pairs.size() && expected[k].point_count == 0) {
+            ++k;
+        }
+        ASSERT_LT(k, pairs.size()) << line;
+        const obbsat::contact64& c = expected[k];
+        const std::vector<std::string> f = fields_of(line);
+        ASSERT_EQ(f.size(), 12u) << line;
+        EXPECT_EQ(f[0] + "," + f[1], std::to_string(pairs[k].a) + "," + std::to_string(pairs[k].b));
+        EXPECT_EQ(double_of(f[2]), c.nx) << line;
+        EXPECT_EQ(double_of(f[3]), c.ny) << line;
+        EXPECT_EQ(double_of(f[4]), c.depth) << line;
+        EXPECT_EQ(f[5], std::to_string(c.point_count)) << line;
+        for (std::uint32_t p = 0; p < c.point_count; ++p) {
+            EXPECT_EQ(double_of(f[6 + 3 * p]), c.points[p].x) << line;
+            EXPECT_EQ(double_of(f[7 + 3 * p]), c.points[p].y) << line;
+            EXPECT_EQ(double_of(f[8 + 3 * p]), c.points[p].separation) << line;
+        }
+        ++k;
+    }
+    EXPECT_GT(lines.size(), 10u);
+    // In float the same file gives other numbers: the double path reads and computes in double.
+    const auto in_float = s.run("contacts --poses poses.csv --pairs pairs.csv --margin 0.1");
+    EXPECT_NE(in_float.out, r.out);
+}
+
+TEST(ContactsDouble, CornerAndDistanceLinesAreTheDoubleValuesBitForBit) {
+    scratch s;
+    const obbsat::rect64 rects[] = {{{500000, 5000001}, {500002, 5000001}, {500002, 5000000}, {500000, 5000000}},
+                                    {{500001, 5000002}, {500003, 5000002}, {500003, 5000000.5},
+                                     {500001, 5000000.5}},
+                                    {{500006.1, 5000001}, {500007, 5000001}, {500007, 5000000.3},
+                                     {500006.1, 5000000.3}}};
+    std::string text;
+    char line[400];
+    for (const obbsat::rect64& q : rects) {
+        std::snprintf(line, sizeof line, "%a,%a,%a,%a,%a,%a,%a,%a\n", q.ul.x, q.ul.y, q.ur.x, q.ur.y, q.lr.x,
+                      q.lr.y, q.ll.x, q.ll.y);
+        text += line;
+    }
+    write_file(s.file("rects.csv"), text);
+    write_file(s.file("pairs.csv"), "0,1\n0,2\n");
+    const obbsat::rect_records64 store(rects, 3);
+    const std::vector<pair_index> pairs = {{0, 1}, {0, 2}};
+
+    const auto c = s.run("contacts --rects rects.csv --pairs pairs.csv --precision double");
+    ASSERT_EQ(c.status, 0) << c.err;
+    const obbsat::contact64 expected = obbsat::contact_pairs(store, pairs)[0];
+    const std::vector<std::string> lines = lines_of(c.out);
+    ASSERT_EQ(lines.size(), 1u);
+    const std::vector<std::string> f = fields_of(lines[0]);
+    EXPECT_EQ(double_of(f[4]), expected.depth);
+    EXPECT_EQ(double_of(f[6]), expected.points[0].x);
+
+    const auto d = s.run("distance --rects rects.csv --pairs pairs.csv --precision double");
+    ASSERT_EQ(d.status, 0) << d.err;
+    const std::vector<obbsat::closest_points64> distances = obbsat::distance_pairs(store, pairs);
+    const std::vector<std::string> distance_lines = lines_of(d.out);
+    ASSERT_EQ(distance_lines.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+        const std::vector<std::string> g = fields_of(distance_lines[k]);
+        ASSERT_EQ(g.size(), 7u);
+        const obbsat::closest_points64& e = distances[k];
+        const double values[] = {e.distance, e.ax, e.ay, e.bx, e.by};
+        for (std::size_t v = 0; v < 5; ++v) {
+            EXPECT_EQ(double_of(g[2 + v]), values[v]) << distance_lines[k];
+        }
+    }
+    EXPECT_GT(distances[1].distance, 4.0);
+}
+
+TEST(ContactsDouble, UsageErrors) {
+    scratch s;
+    write_file(s.file("poses.csv"), "0,0,1,1,1,0\n1.5,0,1,1,1,0\n");
+    write_file(s.file("pairs.csv"), "0,1\n");
+    auto r = s.run("contacts --poses poses.csv --precision double");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--pairs"), std::string::npos) << r.err;
+    for (const char* backend : {"sse2", "avx2", "avx512"}) {
+        r = s.run(std::string("distance --poses poses.csv --pairs pairs.csv --precision double --backend ") +
+                  backend);
+        EXPECT_EQ(r.status, 2) << backend;
+        EXPECT_NE(r.err.find("scalar backend"), std::string::npos) << r.err;
+    }
+    r = s.run("contacts --poses poses.csv --pairs pairs.csv --precision quad");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--precision"), std::string::npos) << r.err;
+    write_file(s.file("bad.csv"), "0,0,1,1,1,0\n1.5,0,1,1,0,0\n");
+    r = s.run("contacts --poses bad.csv --pairs pairs.csv --precision double");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("bad.csv:2:"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
+}
+
 TEST(ContactsErrors, NameTheFileAndLineAndWriteNothing) {
     scratch s;
     write_file(s.file("poses.csv"), "0,0,1,1,1,0\n1.5,0,1,1,1,0\n");
@@ -239,6 +419,15 @@ TEST(ContactsErrors, NameTheFileAndLineAndWriteNothing) {
     r = s.run("distance --poses poses.csv");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--pairs"), std::string::npos) << r.err;
+    // A method that does not run on the store, an unknown one, one beside a list.
+    for (const char* method : {"sat4", "no_such_method"}) {
+        r = s.run(std::string("contacts --poses poses.csv --out c.csv --method ") + method);
+        EXPECT_EQ(r.status, 2) << method;
+        EXPECT_NE(r.err.find("--method"), std::string::npos) << r.err;
+    }
+    r = s.run("contacts --poses poses.csv --pairs one.csv --method local --out c.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--method"), std::string::npos) << r.err;
     EXPECT_EQ(s.entries(), before);  // no output file, no temporary left behind
 }
 

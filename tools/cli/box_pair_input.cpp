@@ -58,6 +58,16 @@ void read_box_store(const io::input_file& file, rect_records& out, io::status_li
     out = io::read_rect_records(lines, UINT32_MAX, reading(status, file, "rectangles"));
 }
 
+void read_box_store(const io::input_file& file, rect_records64& out, io::status_line& status) {
+    io::line_reader lines(file.get(), file.name());
+    out = io::read_rect_records64(lines, UINT32_MAX, reading(status, file, "rectangles"));
+}
+
+void read_box_store(const io::input_file& file, pose_records64& out, io::status_line& status) {
+    io::line_reader lines(file.get(), file.name());
+    out = io::read_pose_records64(lines, UINT32_MAX, reading(status, file, "poses"));
+}
+
 void read_box_store(const io::input_file& file, pose_records& out, io::status_line& status) {
     io::line_reader lines(file.get(), file.name());
     out = io::read_pose_records(lines, UINT32_MAX, reading(status, file, "poses"));

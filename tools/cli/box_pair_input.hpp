@@ -8,7 +8,9 @@
 #include "io/status_line.hpp"
 
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 
 #include <obbsat/error.hpp>
 
@@ -23,6 +25,10 @@ namespace obbsat::cli {
 void read_box_store(const io::input_file& file, rect_records& out, io::status_line& status);
 /// Every record of `file` (poses).
 void read_box_store(const io::input_file& file, pose_records& out, io::status_line& status);
+/// Every record of `file` (corners), each number read as a double.
+void read_box_store(const io::input_file& file, rect_records64& out, io::status_line& status);
+/// Every record of `file` (poses), each number read as a double.
+void read_box_store(const io::input_file& file, pose_records64& out, io::status_line& status);
 
 /// Every pair of `pairs_file`, each index checked below `rect_count` (errors
 /// name `rect_file`).

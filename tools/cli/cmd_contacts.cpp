@@ -7,6 +7,7 @@
 // standard output empty as well as --out untouched (written through a
 // temporary file renamed at the end).
 #include "cli/box_pair_input.hpp"
+#include "cli/box_pair_options.hpp"
 #include "cli/cli_args.hpp"
 #include "cli/commands.hpp"
 #include "io/csv_input.hpp"
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -32,47 +34,62 @@ namespace {
 constexpr std::string_view contact_header = "i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2";
 
 const std::vector<option_spec>& contacts_option_specs() {
-    static const std::vector<option_spec> specs = {
-        {"rects", "FILE", "corners, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line"},
-        {"poses", "FILE", "poses, one 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' per line"},
-        {"pairs", "FILE", "pairs, one 'i,j' per line (default: every colliding pair of the file)"},
-        {"margin", "D", "speculative margin, finite and >= 0: pairs apart by at most D too (default: 0)"},
-        {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
-        {"threads", "N", "cores to split the work over, 0 for all (default: 1)"},
-        {"out", "FILE", "write the contacts here, all or nothing (default: standard output)"},
-        {"header", "", "start the output with the header line 'i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2'"},
-        {"help", "", "show this help"},
-    };
+    static const std::vector<option_spec> specs = box_pair_option_specs(
+        "pairs, one 'i,j' per line (default: every colliding pair of the file)",
+        "write the contacts here, all or nothing (default: standard output)",
+        "start the output with the header line 'i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2'",
+        {
+            {"margin", "D", "speculative margin, finite and >= 0: pairs apart by at most D too (default: 0)"},
+            {"method", "NAME", "which verdict decides the colliding pairs without --pairs (default: exact)"},
+        });
     return specs;
 }
 
-/// The --margin value: a decimal float, finite and >= 0.
-float margin_option(const parsed_options& options) {
+/// The --method value: which verdict decides the colliding pairs of the
+/// scene, exact by default, any method that runs on the store. With --pairs
+/// the list says which pairs, so a method there is refused, not ignored.
+method contacts_method_option(const parsed_options& options, const rectangle_input& input) {
+    if (!options.has("method")) {
+        return method::exact;
+    }
+    if (options.has("pairs")) {
+        throw usage_error("--method chooses the colliding pairs of the file; with --pairs the list does");
+    }
+    return store_method_option(options, input);
+}
+
+/// The --margin value: a decimal number, finite and >= 0, read as a float
+/// (strtof) or, for the double stores, as a double (strtod).
+template <class Real>
+Real margin_option(const parsed_options& options) {
     const auto text = options.value("margin");
     if (!text) {
-        return 0.0f;
+        return Real(0);
     }
     const std::string value(*text);
     char* end = nullptr;
-    const float margin = std::strtof(value.c_str(), &end);
-    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(margin) || !(margin >= 0.0f)) {
+    const Real margin = std::is_same<Real, float>::value ? static_cast<Real>(std::strtof(value.c_str(), &end))
+                                                         : static_cast<Real>(std::strtod(value.c_str(), &end));
+    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(margin) || !(margin >= Real(0))) {
         throw usage_error("--margin: expected a finite number >= 0, got '" + value + "'");
     }
     return margin;
 }
 
-/// Appends "," and the shortest decimal text that reads back as `value`.
-char* put_float(char* at, char* end, float value) {
+/// Appends "," and the shortest decimal text that reads back as `value` (a float or a double).
+template <class Real>
+char* put_number(char* at, char* end, Real value) {
     *at++ = ',';
     return std::to_chars(at, end, value).ptr;
 }
 
-/// One line per contact, `keep` choosing which, in the order given.
-template <class Keep>
-void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector<contact>& contacts, bool header,
+/// One line per contact (contact or contact64), `keep` choosing which, in the order given.
+template <class Contact, class Keep>
+void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector<Contact>& contacts, bool header,
                          io::output_target& out, const Keep& keep) {
-    // Two indices, eleven floats of at most 15 characters, eleven commas and a line end.
-    constexpr std::size_t longest_line = 2 * 10 + 11 * 15 + 11 + 1;
+    // Two indices, eleven numbers of at most 24 characters (a double's
+    // shortest text at worst), eleven commas and a line end.
+    constexpr std::size_t longest_line = 2 * 10 + 11 * 24 + 11 + 1;
     constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
     std::vector<char> text(buffer_bytes);
     char* const begin = text.data();
@@ -83,7 +100,7 @@ void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector
         *at++ = '\n';
     }
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const contact& c = contacts[k];
+        const Contact& c = contacts[k];
         if (!keep(c)) {
             continue;
         }
@@ -94,16 +111,16 @@ void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector
         at = std::to_chars(at, end, pairs[k].a).ptr;
         *at++ = ',';
         at = std::to_chars(at, end, pairs[k].b).ptr;
-        at = put_float(at, end, c.nx);
-        at = put_float(at, end, c.ny);
-        at = put_float(at, end, c.depth);
+        at = put_number(at, end, c.nx);
+        at = put_number(at, end, c.ny);
+        at = put_number(at, end, c.depth);
         *at++ = ',';
         at = std::to_chars(at, end, c.point_count).ptr;
         for (std::uint32_t p = 0; p < 2; ++p) {
             if (p < c.point_count) {
-                at = put_float(at, end, c.points[p].x);
-                at = put_float(at, end, c.points[p].y);
-                at = put_float(at, end, c.points[p].separation);
+                at = put_number(at, end, c.points[p].x);
+                at = put_number(at, end, c.points[p].y);
+                at = put_number(at, end, c.points[p].separation);
             } else {  // an unused point: its three fields empty
                 *at++ = ',';
                 *at++ = ',';
@@ -115,32 +132,54 @@ void write_contact_lines(const std::vector<pair_index>& pairs, const std::vector
     out.write(begin, static_cast<std::size_t>(at - begin));
 }
 
-/// Reads the rectangles (and pairs), computes the contacts and writes them.
+/// The contact options of a store: float ones for the float stores, double
+/// ones (margin in double) for the double stores.
 template <class Store>
-std::string contacts_of_files(const rectangle_input& input, const io::input_file& rects_file,
-                              const io::input_file* pairs_file, const collide_options& run, float margin,
-                              bool header, io::output_target& out, io::status_line& status) {
+struct contact_options_for {
+    using type = contact_options;
+};
+template <>
+struct contact_options_for<pose_records64> {
+    using type = contact_options64;
+};
+template <>
+struct contact_options_for<rect_records64> {
+    using type = contact_options64;
+};
+
+/// Reads the rectangles and the pair list, computes the contacts of the
+/// pairs and writes those with points: it overlaps, touches, or is apart by
+/// at most the margin.
+template <class Store>
+std::string contacts_of_pair_file(box_pair_run& run, const collide_options& scene) {
+    using options_type = typename contact_options_for<Store>::type;
     Store store;
-    read_box_store(rects_file, store, status);
-    contact_options options;
-    options.use = run.use;
-    options.threads = run.threads;
-    options.margin = margin;
-    if (pairs_file) {
-        const std::vector<pair_index> pairs = read_pair_list(*pairs_file, store.size(), rects_file.name(), status);
-        const std::vector<contact> contacts =
-            naming_record_line(input.path, [&] { return contact_pairs(store, pairs, options); });
-        // A pair of the list is written when its contact has a point: it
-        // overlaps, touches, or is apart by at most the margin.
-        std::size_t written = 0;
-        write_contact_lines(pairs, contacts, header, out, [&](const contact& c) {
-            written += c.point_count > 0;
-            return c.point_count > 0;
-        });
-        return std::to_string(pairs.size()) + " pairs, " + std::to_string(written) + " with contacts";
-    }
-    const scene_contacts found = naming_record_line(input.path, [&] { return find_contacts(store, run, margin); });
-    write_contact_lines(found.pairs, found.contacts, header, out, [](const contact&) { return true; });
+    read_box_store(run.rects_file, store, run.status);
+    options_type options;
+    options.use = scene.use;
+    options.threads = scene.threads;
+    options.margin = margin_option<decltype(options.margin)>(run.options);
+    const std::vector<pair_index> pairs =
+        read_pair_list(*run.pairs_file, store.size(), run.rects_file.name(), run.status);
+    const auto contacts = naming_record_line(run.input.path, [&] { return contact_pairs(store, pairs, options); });
+    std::size_t written = 0;
+    write_contact_lines(pairs, contacts, run.header, run.target, [&](const auto& c) {
+        written += c.point_count > 0;
+        return c.point_count > 0;
+    });
+    return std::to_string(pairs.size()) + " pairs, " + std::to_string(written) + " with contacts";
+}
+
+/// Reads the rectangles and writes every pair the method calls colliding
+/// (and, with a margin, every pair within it) with its contact.
+template <class Store>
+std::string contacts_of_scene(box_pair_run& run, const collide_options& scene) {
+    Store store;
+    read_box_store(run.rects_file, store, run.status);
+    const float margin = margin_option<float>(run.options);
+    const scene_contacts found =
+        naming_record_line(run.input.path, [&] { return find_contacts(store, scene, margin); });
+    write_contact_lines(found.pairs, found.contacts, run.header, run.target, [](const contact&) { return true; });
     return std::to_string(store.size()) + " boxes, " + std::to_string(found.pairs.size()) + " pairs";
 }
 
@@ -149,7 +188,8 @@ std::string contacts_of_files(const rectangle_input& input, const io::input_file
 void print_contacts_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat contacts (--rects FILE | --poses FILE) [--pairs FILE] [--margin D]\n"
-                 "                       [--backend NAME] [--threads N] [--out FILE] [--header]\n"
+                 "                       [--method NAME] [--backend NAME] [--threads N]\n"
+                 "                       [--precision float|double] [--out FILE] [--header]\n"
                  "\n"
                  "Writes the contact of each colliding pair, one line\n"
                  "  i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2\n"
@@ -160,13 +200,23 @@ void print_contacts_help(std::FILE* out) {
                  "shortest decimal text that reads back as the same float. docs/contacts.md\n"
                  "says how every value is computed; every backend gives the same bits.\n"
                  "\n"
-                 "Without --pairs: every pair i < j of the file that collides (method exact, as\n"
-                 "'obbsat pairs'), sorted by i then j, and with a margin every other pair whose\n"
-                 "contact has points within it. With --pairs: the pairs of the list in its\n"
-                 "order, those whose contact has at least one point (overlapping, touching or,\n"
-                 "with a margin, apart by at most it); the others are left out.\n"
+                 "Without --pairs: every pair i < j of the file that collides by --method (as\n"
+                 "'obbsat pairs'; exact unless told), sorted by i then j, and with a margin\n"
+                 "every other pair whose contact has points within it. With --pairs: the pairs\n"
+                 "of the list in its order, those whose contact has at least one point\n"
+                 "(overlapping, touching or, with a margin, apart by at most it); the others\n"
+                 "are left out, and --method is refused.\n"
                  "\n"
-                 "options:\n");
+                 "--precision double (with --pairs only) reads every number, the margin too,\n"
+                 "as a double and computes in double (the same steps; nothing rounded to\n"
+                 "float), printing the shortest text that reads back as the same double; it\n"
+                 "runs on the scalar backend only.\n"
+                 "\n"
+                 "methods: on --rects %s; on --poses %s\n"
+                 "\n"
+                 "options:\n",
+                 method_list(methods_on(store_kind::corners)).c_str(),
+                 method_list(methods_on(store_kind::poses)).c_str());
     print_options(out, contacts_option_specs());
     std::fprintf(out,
                  "\n"
@@ -179,42 +229,35 @@ void print_contacts_help(std::FILE* out) {
                  "\n"
                  "example:\n"
                  "  obbsat contacts --poses poses.csv --margin 0.01 --out contacts.csv\n"
-                 "  obbsat contacts --rects rects.csv --pairs pairs.csv --header\n");
+                 "  obbsat contacts --rects rects.csv --pairs pairs.csv --header\n"
+                 "  obbsat contacts --poses utm.csv --pairs pairs.csv --precision double\n");
 }
 
 int run_contacts(const arguments& args) {
     const parsed_options options = parse_options(args, contacts_option_specs());
-    const rectangle_input input = rectangle_option(options);
-    const std::optional<std::string_view> pairs_path = options.value("pairs");
-    if (pairs_path && input.path == "-" && *pairs_path == "-") {
-        throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
+    if (precision_option(options) == precision::double_ && !options.has("pairs")) {
+        throw usage_error("--precision double needs --pairs: the contacts of every colliding pair of a file "
+                          "are found in float only");
     }
-    const float margin = margin_option(options);
-    collide_options run;
-    run.test = method::exact;
-    if (const auto threads = options.value("threads")) {
-        run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
+    margin_option<double>(options);  // a bad margin is reported before any file is opened
+    box_pair_run run(options, false, "obbsat contacts");
+    collide_options scene;
+    scene.test = contacts_method_option(options, run.input);
+    scene.threads = run.threads;
+    scene.use = run.use;
+    const bool corners = run.input.kind == store_kind::corners;
+    std::string summary;
+    if (!run.pairs_file) {
+        summary = corners ? contacts_of_scene<rect_records>(run, scene) : contacts_of_scene<pose_records>(run, scene);
+    } else if (run.digits == precision::double_) {
+        summary = corners ? contacts_of_pair_file<rect_records64>(run, scene)
+                          : contacts_of_pair_file<pose_records64>(run, scene);
+    } else {
+        summary = corners ? contacts_of_pair_file<rect_records>(run, scene)
+                          : contacts_of_pair_file<pose_records>(run, scene);
     }
-    run.use = resolve_backend(backend_option(options));
-
-    const io::input_file rects_file(input.path);
-    std::optional<io::input_file> pairs_file;
-    if (pairs_path) {
-        pairs_file.emplace(std::string(*pairs_path));
-        if (io::same_input(rects_file, *pairs_file)) {
-            throw same_input_error(input.option, input.path, *pairs_path);
-        }
-    }
-    io::output_target target(output_option(options, "out"));
-    io::status_line status("obbsat contacts");
-    const io::input_file* pairs = pairs_file ? &*pairs_file : nullptr;
-    const bool header = options.has("header");
-    const std::string summary =
-        input.kind == store_kind::corners
-            ? contacts_of_files<rect_records>(input, rects_file, pairs, run, margin, header, target, status)
-            : contacts_of_files<pose_records>(input, rects_file, pairs, run, margin, header, target, status);
-    target.commit();
-    status.finish(summary);
+    run.target.commit();
+    run.status.finish(summary);
     return exit_success;
 }
 

@@ -6,6 +6,7 @@
 // before the first is written, so an error leaves standard output empty and
 // --out untouched.
 #include "cli/box_pair_input.hpp"
+#include "cli/box_pair_options.hpp"
 #include "cli/cli_args.hpp"
 #include "cli/commands.hpp"
 #include "io/csv_input.hpp"
@@ -26,22 +27,20 @@ namespace {
 constexpr std::string_view distance_header = "i,j,distance,ax,ay,bx,by";
 
 const std::vector<option_spec>& distance_option_specs() {
-    static const std::vector<option_spec> specs = {
-        {"rects", "FILE", "corners, one 'ulx,uly,urx,ury,lrx,lry,llx,lly' per line"},
-        {"poses", "FILE", "poses, one 'cx,cy,hx,hy,c,s' or 'cx,cy,hx,hy,angle' per line"},
-        {"pairs", "FILE", "pairs, one 'i,j' of 0-based indices per line (required)"},
-        {"backend", "NAME", "auto, scalar, sse2, avx2 or avx512 (default: auto)"},
-        {"threads", "N", "cores to split the work over, 0 for all (default: 1)"},
-        {"out", "FILE", "write the distances here, all or nothing (default: standard output)"},
-        {"header", "", "start the output with the header line 'i,j,distance,ax,ay,bx,by'"},
-        {"help", "", "show this help"},
-    };
+    static const std::vector<option_spec> specs =
+        box_pair_option_specs("pairs, one 'i,j' of 0-based indices per line (required)",
+                              "write the distances here, all or nothing (default: standard output)",
+                              "start the output with the header line 'i,j,distance,ax,ay,bx,by'", {});
     return specs;
 }
 
-void write_distance_lines(const std::vector<pair_index>& pairs, const std::vector<closest_points>& found,
-                          bool header, io::output_target& out) {
-    constexpr std::size_t longest_line = 2 * 10 + 5 * 15 + 6 + 1;
+/// One line per pair; `Closest` is closest_points or closest_points64.
+template <class Closest>
+void write_distance_lines(const std::vector<pair_index>& pairs, const std::vector<Closest>& found, bool header,
+                          io::output_target& out) {
+    // Two indices, five numbers of at most 24 characters (a double's shortest
+    // text at worst), six commas and a line end.
+    constexpr std::size_t longest_line = 2 * 10 + 5 * 24 + 6 + 1;
     constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
     std::vector<char> text(buffer_bytes);
     char* const begin = text.data();
@@ -59,7 +58,7 @@ void write_distance_lines(const std::vector<pair_index>& pairs, const std::vecto
         at = std::to_chars(at, end, pairs[k].a).ptr;
         *at++ = ',';
         at = std::to_chars(at, end, pairs[k].b).ptr;
-        for (const float value : {found[k].distance, found[k].ax, found[k].ay, found[k].bx, found[k].by}) {
+        for (const auto value : {found[k].distance, found[k].ax, found[k].ay, found[k].bx, found[k].by}) {
             *at++ = ',';
             at = std::to_chars(at, end, value).ptr;
         }
@@ -68,19 +67,16 @@ void write_distance_lines(const std::vector<pair_index>& pairs, const std::vecto
     out.write(begin, static_cast<std::size_t>(at - begin));
 }
 
+/// Reads the rectangles (a float or a double store) and the pairs, computes
+/// and writes every distance.
 template <class Store>
-std::string distances_of_files(const rectangle_input& input, const io::input_file& rects_file,
-                               const io::input_file& pairs_file, const distance_options& options, bool header,
-                               io::output_target& out, io::status_line& status) {
+std::string distances_of_files(box_pair_run& run, const distance_options& options) {
     Store store;
-    read_box_store(rects_file, store, status);
-    const std::vector<pair_index> pairs = read_pair_list(pairs_file, store.size(), rects_file.name(), status);
-    const std::vector<closest_points> found = naming_record_line(input.path, [&] {
-        std::vector<closest_points> computed(pairs.size());
-        distance_pairs(store, pairs.data(), pairs.size(), computed.data(), options);
-        return computed;
-    });
-    write_distance_lines(pairs, found, header, out);
+    read_box_store(run.rects_file, store, run.status);
+    const std::vector<pair_index> pairs =
+        read_pair_list(*run.pairs_file, store.size(), run.rects_file.name(), run.status);
+    const auto found = naming_record_line(run.input.path, [&] { return distance_pairs(store, pairs, options); });
+    write_distance_lines(pairs, found, run.header, run.target);
     return std::to_string(store.size()) + " boxes, " + std::to_string(pairs.size()) + " pairs";
 }
 
@@ -89,7 +85,8 @@ std::string distances_of_files(const rectangle_input& input, const io::input_fil
 void print_distance_help(std::FILE* out) {
     std::fprintf(out,
                  "usage: obbsat distance (--rects FILE | --poses FILE) --pairs FILE\n"
-                 "                       [--backend NAME] [--threads N] [--out FILE] [--header]\n"
+                 "                       [--backend NAME] [--threads N] [--precision float|double]\n"
+                 "                       [--out FILE] [--header]\n"
                  "\n"
                  "Writes one line per pair, in pair order:\n"
                  "  i,j,distance,ax,ay,bx,by\n"
@@ -98,6 +95,10 @@ void print_distance_help(std::FILE* out) {
                  "counts) gets 0 for every field: see 'obbsat contacts' for its depth and\n"
                  "points. Numbers are the shortest decimal text that reads back as the same\n"
                  "float; every backend gives the same bits (docs/contacts.md).\n"
+                 "\n"
+                 "--precision double reads every number as a double and computes in double\n"
+                 "(the same steps; nothing rounded to float), printing the shortest text that\n"
+                 "reads back as the same double; it runs on the scalar backend only.\n"
                  "\n"
                  "options:\n");
     print_options(out, distance_option_specs());
@@ -115,31 +116,19 @@ void print_distance_help(std::FILE* out) {
 
 int run_distance(const arguments& args) {
     const parsed_options options = parse_options(args, distance_option_specs());
-    const rectangle_input input = rectangle_option(options);
-    const std::string pairs_path(options.required("pairs"));
-    if (input.path == "-" && pairs_path == "-") {
-        throw usage_error("--" + input.option + " and --pairs cannot both read standard input ('-')");
-    }
-    distance_options run;
-    if (const auto threads = options.value("threads")) {
-        run.threads = static_cast<unsigned>(parse_number_option("threads", *threads, 0, 1024));
-    }
-    run.use = resolve_backend(backend_option(options));
-
-    const io::input_file rects_file(input.path);
-    const io::input_file pairs_file(pairs_path);
-    if (io::same_input(rects_file, pairs_file)) {
-        throw same_input_error(input.option, input.path, pairs_path);
-    }
-    io::output_target target(output_option(options, "out"));
-    io::status_line status("obbsat distance");
-    const bool header = options.has("header");
+    box_pair_run run(options, true, "obbsat distance");
+    distance_options computed;
+    computed.threads = run.threads;
+    computed.use = run.use;
+    const bool corners = run.input.kind == store_kind::corners;
     const std::string summary =
-        input.kind == store_kind::corners
-            ? distances_of_files<rect_records>(input, rects_file, pairs_file, run, header, target, status)
-            : distances_of_files<pose_records>(input, rects_file, pairs_file, run, header, target, status);
-    target.commit();
-    status.finish(summary);
+        run.digits == precision::double_
+            ? (corners ? distances_of_files<rect_records64>(run, computed)
+                       : distances_of_files<pose_records64>(run, computed))
+            : (corners ? distances_of_files<rect_records>(run, computed)
+                       : distances_of_files<pose_records>(run, computed));
+    run.target.commit();
+    run.status.finish(summary);
     return exit_success;
 }
 

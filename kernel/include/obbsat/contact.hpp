@@ -27,9 +27,11 @@
 #include <obbsat/closest_points.hpp>
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 
 #include <cstddef>
 #include <vector>
@@ -119,8 +121,90 @@ backend distance_stream(const pose_records& a, const pose_records& b, closest_po
 backend distance_pairs(const rect_records& rects, const pair_index* pairs, std::size_t count, closest_points* out,
                        const distance_options& options = {});
 
+/// The distances of distance_pairs over corner records, one per pair.
+std::vector<closest_points> distance_pairs(const rect_records& rects, const std::vector<pair_index>& pairs,
+                                           const distance_options& options = {});
+
 /// out[i] = the distance and closest points of the corner quads a[i] and b[i].
 backend distance_stream(const rect_records& a, const rect_records& b, closest_points* out,
+                        const distance_options& options = {});
+
+// Contacts and distances of double boxes (pose_records64, rect_records64):
+// the same steps computed in double (obbsat/ref/contact.hpp and distance.hpp
+// state it), every double of the input taken as it is, nothing rounded to
+// float32. The same rules and checks as the float entry points, read in
+// double: a pose's c·c + s·s must be a normal double, a quad strictly convex
+// in double, the margin finite and >= 0.
+//
+// Double contacts and distances have no SIMD lanes yet: they run on the scalar
+// backend (split over options.threads cores; the results never depend on the
+// thread count), and return backend::scalar. backend::automatic and
+// backend::scalar are accepted; any other backend is refused with
+// invalid_input, before anything is written.
+
+struct contact_options64 {
+    backend use = backend::automatic;  ///< automatic or scalar (see above)
+    unsigned threads = 1;              ///< cores to split one batch over; 0 means all
+    /// Speculative margin (finite, >= 0), as contact_options.margin, in double.
+    double margin = 0.0;
+};
+
+/// out[i] = the contact of poses[pairs[i].a] and poses[pairs[i].b] in double
+/// for i < count; returns backend::scalar. Throws invalid_input for a bad
+/// margin, a SIMD backend, a pose whose rotation is too short or too long, the
+/// first pair with an index >= poses.size(), or an output that overlaps the pairs.
+backend contact_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count, contact64* out,
+                      const contact_options64& options = {});
+
+/// The contacts of contact_pairs over double poses, one per pair.
+std::vector<contact64> contact_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
+                                     const contact_options64& options = {});
+
+/// out[i] = the contact of the double corner quads rects[pairs[i].a] and
+/// rects[pairs[i].b] for i < count; throws as contact_pairs over double poses,
+/// with the first quad that is not strictly convex in place of a bad pose.
+backend contact_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count, contact64* out,
+                      const contact_options64& options = {});
+
+/// The contacts of contact_pairs over double corners, one per pair.
+std::vector<contact64> contact_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
+                                     const contact_options64& options = {});
+
+/// out[i] = the contact of a[i] and b[i] in double for i < a.size(); throws
+/// invalid_input when a and b differ in size, and as contact_pairs.
+backend contact_stream(const pose_records64& a, const pose_records64& b, contact64* out,
+                       const contact_options64& options = {});
+
+/// out[i] = the contact of the double corner quads a[i] and b[i] for i < a.size().
+backend contact_stream(const rect_records64& a, const rect_records64& b, contact64* out,
+                       const contact_options64& options = {});
+
+/// out[i] = the distance and closest points of double poses[pairs[i].a] and
+/// poses[pairs[i].b] for i < count, in double; returns backend::scalar. Throws
+/// as contact_pairs over double poses (there is no margin).
+backend distance_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
+                       closest_points64* out, const distance_options& options = {});
+
+/// The distances of distance_pairs over double poses, one per pair.
+std::vector<closest_points64> distance_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
+                                             const distance_options& options = {});
+
+/// out[i] = the distance and closest points of the double corner quads
+/// rects[pairs[i].a] and rects[pairs[i].b], in double; throws as contact_pairs
+/// over double corners.
+backend distance_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,
+                       closest_points64* out, const distance_options& options = {});
+
+/// The distances of distance_pairs over double corners, one per pair.
+std::vector<closest_points64> distance_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
+                                             const distance_options& options = {});
+
+/// out[i] = the distance and closest points of double poses a[i] and b[i], in double.
+backend distance_stream(const pose_records64& a, const pose_records64& b, closest_points64* out,
+                        const distance_options& options = {});
+
+/// out[i] = the distance and closest points of double corner quads a[i] and b[i], in double.
+backend distance_stream(const rect_records64& a, const rect_records64& b, closest_points64* out,
                         const distance_options& options = {});
 
 }  // namespace obbsat

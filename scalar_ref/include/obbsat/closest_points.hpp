@@ -14,6 +14,14 @@ struct closest_points {
     float bx, by;    ///< a point of B at that distance from A
 };
 
+/// The distance of two double boxes and a closest point on each: the fields
+/// of closest_points, computed in double as obbsat/ref/distance.hpp states.
+struct closest_points64 {
+    double distance;  ///< Euclidean distance between the closed boxes, > 0 for separated pairs
+    double ax, ay;    ///< a point of A at that distance from B
+    double bx, by;    ///< a point of B at that distance from A
+};
+
 static_assert(sizeof(closest_points) == 20, "closest points are five floats");
 
 }  // namespace obbsat

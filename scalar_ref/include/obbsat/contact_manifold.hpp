@@ -1,6 +1,7 @@
 // What a contact between two colliding rectangles is: the plain data that the
 // contact reference (obbsat/ref/contact.hpp) and the batch entry points
-// (obbsat/contact.hpp) fill, one `contact` per pair.
+// (obbsat/contact.hpp) fill, one `contact` per pair (`contact64` on double
+// boxes).
 //
 // Every float is computed as obbsat/ref/contact.hpp states, so every backend
 // gives the same bits.
@@ -44,6 +45,25 @@ struct contact {
     float depth;
     std::uint32_t point_count;  ///< 0, 1 or 2: 0 when the pair is apart by more than the margin
     contact_point points[2];    ///< points[0, point_count) are meaningful
+};
+
+/// One point of a contact manifold of two double boxes (as contact_point, in double).
+struct contact_point64 {
+    double x;  ///< position, on B's boundary when A holds the reference face, else on A's
+    double y;
+    double separation;  ///< signed distance along the normal from the reference face; < 0 when penetrating
+    contact_feature feature;
+};
+
+/// The contact of a pair (A, B) of double boxes (obbsat/pose_records64.hpp,
+/// rect_records64.hpp): the fields of `contact`, computed in double as
+/// obbsat/ref/contact.hpp states; all zero bits in unused points.
+struct contact64 {
+    double nx;  ///< unit normal pointing from A to B
+    double ny;
+    double depth;  ///< penetration along the normal: > 0 overlapping, 0 touching, < 0 apart
+    std::uint32_t point_count;  ///< 0, 1 or 2: 0 when the pair is apart by more than the margin
+    contact_point64 points[2];  ///< points[0, point_count) are meaningful
 };
 
 static_assert(sizeof(contact_feature) == 4, "a feature key is four bytes");

@@ -91,11 +91,22 @@
 // kept), the normal its axis, and the points those of Box2D's manifold. In
 // float32 every value is within a few ulps of the pair's scale (its distance
 // from the origin o plus its sizes) of that.
+//
+// Double boxes (rect_pose64, rect64; the overloads taking them below): the
+// same steps in the same order, every product, sum, quotient and square root
+// one IEEE binary64 operation (the square roots and divisions of steps 1, 6
+// and P1 in double too), the constants 2^−10 and 0 the same, and "a normal
+// float" read as "a normal double" (about 1e-154 to 1e154 long for a
+// rotation, c·c + s·s at least 2^−1022). P2 uses obbsat/ref/local64.hpp's
+// offsets and reaches. Every value is then within a few double ulps of the
+// pair's scale; nothing is computed in float32 and nothing rounded to it.
 #pragma once
 
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 
 namespace obbsat::ref {
 
@@ -133,5 +144,34 @@ contact contact_of(const rect_pose& a, const rect_pose& b, float margin = 0.0f);
 
 /// The contact of corner quads a and b (corners_accepted both), as specified above.
 contact contact_of(const rect& a, const rect& b, float margin = 0.0f);
+
+/// A double box as the contact steps see it (as contact_box, in double).
+struct contact_box64 {
+    point64 v[4];
+    point64 n[4];
+};
+
+/// The box of double pose `p` relative to `origin` (the pose rule in double).
+contact_box64 contact_box_of(const rect_pose64& p, point64 origin);
+
+/// The box of the double corners `r` relative to `origin`; `r` is strictly
+/// convex (corners_accepted).
+contact_box64 contact_box_of(const rect64& r, point64 origin);
+
+/// corners_accepted in double: the four turns all > 0 or all < 0, every
+/// edge's dot(e, e) a normal finite double.
+bool corners_accepted(const rect64& r);
+
+/// pose_accepted in double: c·c + s·s a normal finite double.
+bool pose_accepted(const rect_pose64& p);
+
+/// Steps 1 to 8 in double for boxes a and b relative to `origin`.
+contact64 contact_of_boxes(const contact_box64& a, const contact_box64& b, point64 origin, double margin);
+
+/// The contact of double poses a and b (pose_accepted both), in double.
+contact64 contact_of(const rect_pose64& a, const rect_pose64& b, double margin = 0.0);
+
+/// The contact of double corner quads a and b (corners_accepted both), in double.
+contact64 contact_of(const rect64& a, const rect64& b, double margin = 0.0);
 
 }  // namespace obbsat::ref

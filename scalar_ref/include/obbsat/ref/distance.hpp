@@ -26,11 +26,19 @@
 // the boundary of the other, so with exact arithmetic this is the distance of
 // the closed boxes and a pair of points attaining it; in float32 every value is
 // within a few ulps of the pair's scale (its distance from o plus its sizes).
+//
+// Double boxes (the rect_pose64 and rect64 overloads): the same steps in the
+// same order, every operation one IEEE binary64 operation (the division of D2
+// and the square root of D3 in double too), D1 for poses by
+// obbsat/ref/local64.hpp's verdict; the values then within a few double ulps
+// of the pair's scale, nothing rounded to float32.
 #pragma once
 
 #include <obbsat/closest_points.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 
 namespace obbsat::ref {
 
@@ -39,5 +47,11 @@ closest_points distance_of(const rect_pose& a, const rect_pose& b);
 
 /// The distance of corner quads a and b and a closest point on each (ref::corners_accepted both).
 closest_points distance_of(const rect& a, const rect& b);
+
+/// The distance of double poses a and b and a closest point on each, in double.
+closest_points64 distance_of(const rect_pose64& a, const rect_pose64& b);
+
+/// The distance of double corner quads a and b and a closest point on each, in double.
+closest_points64 distance_of(const rect64& a, const rect64& b);
 
 }  // namespace obbsat::ref

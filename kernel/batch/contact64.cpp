@@ -1,0 +1,252 @@
+// The contact and distance entry points over the double stores
+// (obbsat/contact.hpp, the *64 overloads): check everything first, then run
+// the double references (obbsat/ref/contact.hpp, distance.hpp) on the scalar
+// backend, the pairs split over threads.
+#include "support/work_shares.hpp"
+
+#include <obbsat/contact.hpp>
+#include <obbsat/error.hpp>
+#include <obbsat/ref/contact.hpp>
+#include <obbsat/ref/distance.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace obbsat {
+
+namespace {
+
+// A double contact costs a few tens of nanoseconds: below this many pairs per
+// part, waking another core costs more than it saves.
+constexpr std::size_t min_pairs_per_part = 2048;
+
+/// A double as the messages show it, read back to the same value.
+std::string shown(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+void require_margin(double margin) {
+    if (!std::isfinite(margin) || !(margin >= 0.0)) {
+        throw invalid_input("contact margin is " + shown(margin) + ": it must be finite and >= 0");
+    }
+}
+
+/// Double contacts have no lanes: automatic and scalar run the reference, an
+/// explicit SIMD backend is refused rather than silently not used.
+void require_scalar_backend(backend use, const char* what) {
+    if (use != backend::automatic && use != backend::scalar) {
+        throw invalid_input(std::string("backend ") + backend_name(use) + " has no kernels for double " + what +
+                            ": they run on the scalar backend (pass backend::automatic or backend::scalar)");
+    }
+}
+
+/// Throws invalid_input when the output (`out_bytes` long) shares memory with the pairs.
+void require_out_apart(const void* out, std::size_t out_bytes, const pair_index* pairs, std::size_t count,
+                       const char* what) {
+    const auto o = reinterpret_cast<std::uintptr_t>(out);
+    const auto p = reinterpret_cast<std::uintptr_t>(pairs);
+    if (count != 0 && o < p + count * sizeof(pair_index) && p < o + out_bytes) {
+        throw invalid_input(std::string(what) + " and pairs share memory: the output must not overlap pairs");
+    }
+}
+
+void require_indices(std::size_t rows, const pair_index* pairs, std::size_t count, const char* rows_name) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool a_bad = pairs[i].a >= rows;
+        if (a_bad || pairs[i].b >= rows) {
+            throw invalid_input("pair " + std::to_string(i) + ": index " +
+                                std::to_string(a_bad ? pairs[i].a : pairs[i].b) + " is out of range (" +
+                                std::to_string(rows) + " " + rows_name + ")");
+        }
+    }
+}
+
+void require_accepted(const pose_records64& poses) {
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        const rect_pose64 p = poses[i];
+        if (!ref::pose_accepted(p)) {
+            throw invalid_input("pose " + std::to_string(i) + ": rotation (" + shown(p.rotation.x) + ", " +
+                                shown(p.rotation.y) +
+                                ") is too short or too long for contacts (c*c + s*s must be a normal double)");
+        }
+    }
+}
+
+void require_accepted(const rect_records64& rects) {
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        if (!ref::corners_accepted(rects[i])) {
+            throw invalid_input("rectangle " + std::to_string(i) +
+                                ": corners are not a strictly convex quadrilateral (self-intersecting, degenerate "
+                                "or with a reflex corner), which contacts do not accept");
+        }
+    }
+}
+
+const char* rows_name(const pose_records64&) { return "poses"; }
+const char* rows_name(const rect_records64&) { return "rectangles"; }
+
+/// The checks of every double entry point, in order, before anything is
+/// written: the output apart from the pairs, the backend, every box, every index.
+template <class Store, class Out>
+void require_call(const Store& store, const pair_index* pairs, std::size_t count, const Out* out, backend use,
+                  const char* what) {
+    require_out_apart(out, count * sizeof(Out), pairs, count, what);
+    require_scalar_backend(use, what);
+    require_accepted(store);
+    require_indices(store.size(), pairs, count, rows_name(store));
+}
+
+/// out[i] = compute(a[pairs[i].a], b[pairs[i].b]) for i < count, or
+/// compute(a[i], b[i]) without pairs, split over threads.
+template <class Store, class Out, class Compute>
+void compute_pairs(const Store& a, const Store& b, const pair_index* pairs, std::size_t count, Out* out,
+                   unsigned threads, const Compute& compute) {
+    const std::size_t parts = detail::parts_for(count, threads, min_pairs_per_part);
+    detail::run_parts(parts, [&](std::size_t part) {
+        const auto [begin, end] = detail::share_of(count, part, parts);
+        for (std::size_t i = begin; i < end; ++i) {
+            out[i] = pairs != nullptr ? compute(a[pairs[i].a], b[pairs[i].b]) : compute(a[i], b[i]);
+        }
+    });
+}
+
+void require_same_length(std::size_t a, std::size_t b, const char* rows) {
+    if (a != b) {
+        throw invalid_input("stream batches differ in length: " + std::to_string(a) + " " + rows + " in A, " +
+                            std::to_string(b) + " " + rows + " in B");
+    }
+}
+
+/// The checks of a stream entry point, before anything is written.
+template <class Store>
+void require_stream(const Store& a, const Store& b, backend use, const char* what) {
+    require_same_length(a.size(), b.size(), rows_name(a));
+    require_scalar_backend(use, what);
+    require_accepted(a);
+    require_accepted(b);
+}
+
+/// The contact of two double boxes at a margin.
+struct contact_at {
+    double margin;
+    template <class Box>
+    contact64 operator()(const Box& a, const Box& b) const {
+        return ref::contact_of(a, b, margin);
+    }
+};
+
+/// The distance of two double boxes.
+struct distance_between {
+    template <class Box>
+    closest_points64 operator()(const Box& a, const Box& b) const {
+        return ref::distance_of(a, b);
+    }
+};
+
+template <class Store>
+backend contacts_of(const Store& store, const pair_index* pairs, std::size_t count, contact64* out,
+                    const contact_options64& options) {
+    require_margin(options.margin);
+    require_call(store, pairs, count, out, options.use, "contacts");
+    compute_pairs(store, store, pairs, count, out, options.threads, contact_at{options.margin});
+    return backend::scalar;
+}
+
+template <class Store>
+backend distances_of(const Store& store, const pair_index* pairs, std::size_t count, closest_points64* out,
+                     const distance_options& options) {
+    require_call(store, pairs, count, out, options.use, "distances");
+    compute_pairs(store, store, pairs, count, out, options.threads, distance_between{});
+    return backend::scalar;
+}
+
+template <class Store>
+backend contact_stream_of(const Store& a, const Store& b, contact64* out, const contact_options64& options) {
+    require_margin(options.margin);
+    require_stream(a, b, options.use, "contacts");
+    compute_pairs(a, b, nullptr, a.size(), out, options.threads, contact_at{options.margin});
+    return backend::scalar;
+}
+
+template <class Store>
+backend distance_stream_of(const Store& a, const Store& b, closest_points64* out, const distance_options& options) {
+    require_stream(a, b, options.use, "distances");
+    compute_pairs(a, b, nullptr, a.size(), out, options.threads, distance_between{});
+    return backend::scalar;
+}
+
+template <class Out, class Store, class Options, class Run>
+std::vector<Out> collected(const Store& store, const std::vector<pair_index>& pairs, const Options& options,
+                           const Run& run) {
+    std::vector<Out> out(pairs.size());
+    run(store, pairs.data(), pairs.size(), out.data(), options);
+    return out;
+}
+
+}  // namespace
+
+backend contact_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count, contact64* out,
+                      const contact_options64& options) {
+    return contacts_of(poses, pairs, count, out, options);
+}
+
+std::vector<contact64> contact_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
+                                     const contact_options64& options) {
+    return collected<contact64>(poses, pairs, options, contacts_of<pose_records64>);
+}
+
+backend contact_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count, contact64* out,
+                      const contact_options64& options) {
+    return contacts_of(rects, pairs, count, out, options);
+}
+
+std::vector<contact64> contact_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
+                                     const contact_options64& options) {
+    return collected<contact64>(rects, pairs, options, contacts_of<rect_records64>);
+}
+
+backend distance_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
+                       closest_points64* out, const distance_options& options) {
+    return distances_of(poses, pairs, count, out, options);
+}
+
+std::vector<closest_points64> distance_pairs(const pose_records64& poses, const std::vector<pair_index>& pairs,
+                                             const distance_options& options) {
+    return collected<closest_points64>(poses, pairs, options, distances_of<pose_records64>);
+}
+
+backend distance_pairs(const rect_records64& rects, const pair_index* pairs, std::size_t count,
+                       closest_points64* out, const distance_options& options) {
+    return distances_of(rects, pairs, count, out, options);
+}
+
+std::vector<closest_points64> distance_pairs(const rect_records64& rects, const std::vector<pair_index>& pairs,
+                                             const distance_options& options) {
+    return collected<closest_points64>(rects, pairs, options, distances_of<rect_records64>);
+}
+
+backend contact_stream(const pose_records64& a, const pose_records64& b, contact64* out,
+                       const contact_options64& options) {
+    return contact_stream_of(a, b, out, options);
+}
+
+backend contact_stream(const rect_records64& a, const rect_records64& b, contact64* out,
+                       const contact_options64& options) {
+    return contact_stream_of(a, b, out, options);
+}
+
+backend distance_stream(const pose_records64& a, const pose_records64& b, closest_points64* out,
+                        const distance_options& options) {
+    return distance_stream_of(a, b, out, options);
+}
+
+backend distance_stream(const rect_records64& a, const rect_records64& b, closest_points64* out,
+                        const distance_options& options) {
+    return distance_stream_of(a, b, out, options);
+}
+
+}  // namespace obbsat

@@ -1049,9 +1049,12 @@ def _boxes(boxes, precision=None):
     """The boxes of a pair-list call: a store as it is, an array as :func:`_form`
     gives it (float64 data stays float64 and is computed in double, unless
     ``precision`` says otherwise)."""
-    if isinstance(boxes, (RectRecords, PoseRecords)):
-        _refuse_float64_store(boxes, precision)
+    if isinstance(boxes, _FLOAT_STORES):
+        _store_form(boxes, precision)
         return boxes
+    if isinstance(boxes, _DOUBLE_STORES):
+        # The double rows as they are stored: computed in double, never rounded.
+        return _np.ascontiguousarray(boxes.poses if _store_form(boxes, precision) == "poses" else boxes.corners)
     return _form(boxes, "boxes", precision)[1]
 
 

@@ -205,15 +205,19 @@ def test_methods_without_a_double_form_are_refused_on_double_stores(scene):
         obbsat.PairFinder(method="sat4").find(pose_store)
 
 
-def test_contacts_and_distances_refuse_a_double_store(scene):
-    """Contacts and distances are computed in float32 only: a double store is
-    refused with a ValueError, never rounded."""
-    _, _, pose_store, rect_store, pairs = scene
-    for store in (pose_store, rect_store):
-        for call in (lambda: obbsat.contacts(store, pairs), lambda: obbsat.distances(store, pairs),
-                     lambda: obbsat.find_contacts(store)):
-            with pytest.raises(ValueError, match=r"float64"):
-                call()
+def test_contacts_and_distances_over_a_double_store_are_the_float64_arrays(scene):
+    """Contacts and distances over a double store are computed in double, bit
+    for bit those of its float64 rows; asking for float32 is refused, never
+    rounded; the scene's contacts are float32 only and refuse it."""
+    poses, rects, pose_store, rect_store, pairs = scene
+    for rows, store in ((poses, pose_store), (rects, rect_store)):
+        for call in (obbsat.contacts, obbsat.distances):
+            got, want = call(store, pairs), call(rows, pairs)
+            for field in type(want).__slots__:
+                a, b = getattr(got, field), getattr(want, field)
+                assert a.dtype == b.dtype and a.tobytes() == b.tobytes(), field
+        with pytest.raises(ValueError, match=r"float64"):
+            obbsat.find_contacts(store)
         for call in (lambda: obbsat.contacts(store, pairs, precision="float32"),
                      lambda: obbsat.distances(store, pairs, precision="float32"),
                      lambda: obbsat.find_contacts(store, precision="float32")):

@@ -31,11 +31,19 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
         kept_.now.resize(n_);
     }
     const bounds_fn bounds = kernels_for(ran_).bounds;
+    // A double query that keeps nothing and computes no contacts reads no
+    // float row in its order: the sweep takes the bounds bound_doubles made,
+    // straight from its rows, and the double method the double records.
+    const bool bounds_only = doubles_ && !kept_.keep && contacts_ == nullptr;
     const std::size_t units = units_for(n_, parts, min_boxes_per_unit);  // taken as they come
     run_units(units, parts, [&](std::size_t unit) {
         const auto [begin, end] = share_of(n_, unit, units);
         constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
+        if (bounds_only) {
+            copy_double_records(input, begin, end);
+            return;
+        }
         for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
@@ -82,6 +90,40 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
             }
         }
     });
+}
+
+void pair_search::copy_double_records(const query_input& input, std::size_t begin, std::size_t end) {
+    // The float rows of a double query are the corner rows of its bounds
+    // (bound_doubles: UL, UR, LR, LL of lo_x, lo_y, hi_x, hi_y), so their
+    // bounds are read off the row, the same floats the bounds kernel gives.
+    constexpr std::size_t ahead = random_rows_ahead;
+    const std::uint32_t* const order = order_.data();
+    for (std::size_t k = begin; k < end; ++k) {
+        if (k + ahead < end) {
+            fetch_into_l2(record_at(input, order[k + ahead]));
+            fetch_into_l2(double_row_at(input, order[k + ahead]));
+        }
+        const std::uint32_t id = order[k];
+        copy_double_row(input, id, records64_[k].v);
+        side_[k] = id >= a_count_ && !self_ ? 1 : 0;
+        const float* row = record_at(input, id);
+        const float lo_x = row[0];
+        const float hi_y = row[1];
+        const float hi_x = row[2];
+        const float lo_y = row[5];
+        in_lo_x_[k] = lo_x;
+        in_lo_y_[k] = lo_y;
+        in_hi_x_[k] = hi_x;
+        in_hi_y_[k] = hi_y;
+        q_lo_[k] = grid_.q_of(lo_x);
+        q_hi_[k] = grid_.q_of(hi_x);
+        strip_hi_[k] = grid_.strip_of(hi_y);
+    }
+    if (filtered_) {
+        for (std::size_t k = begin; k < end; ++k) {
+            filters_[k] = filter_of(input, order[k]);
+        }
+    }
 }
 
 }  // namespace obbsat::detail

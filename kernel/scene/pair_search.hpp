@@ -195,8 +195,8 @@ private:
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
     /// copy_records of rows [begin, end) of the order for a double query that
-    /// keeps nothing and computes no contacts: the double records, and the
-    /// bounds read off bound_doubles' corner rows; records_ is left as the sort left it.
+    /// keeps nothing and computes no contacts: the double records, and their
+    /// bounds computed again from them; records_ is left as the sort left it.
     void copy_double_records(const query_input& input, std::size_t begin, std::size_t end);
 
     // Step 3, visits (visits.cpp).

@@ -2,6 +2,7 @@
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
+#include "scene/outward_bounds.hpp"
 #include "scene/search_common.hpp"
 #include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
@@ -32,8 +33,8 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     }
     const bounds_fn bounds = kernels_for(ran_).bounds;
     // A double query that keeps nothing and computes no contacts reads no
-    // float row in its order: the sweep takes the bounds bound_doubles made,
-    // straight from its rows, and the double method the double records.
+    // float row in its order: the sweep takes the bounds bound_doubles made
+    // and the double method the double records.
     const bool bounds_only = doubles_ && !kept_.keep && contacts_ == nullptr;
     const std::size_t units = units_for(n_, parts, min_boxes_per_unit);  // taken as they come
     run_units(units, parts, [&](std::size_t unit) {
@@ -93,35 +94,49 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
 }
 
 void pair_search::copy_double_records(const query_input& input, std::size_t begin, std::size_t end) {
-    // The float rows of a double query are the corner rows of its bounds
-    // (bound_doubles: UL, UR, LR, LL of lo_x, lo_y, hi_x, hi_y), so their
-    // bounds are read off the row, the same floats the bounds kernel gives.
+    // The bounds in the query's order are those bound_doubles made, computed
+    // again (outward_bounds.hpp, the same floats) from the double records
+    // just copied, which are in the cache: cheaper than reading each row's
+    // float bounds from wherever the caller's order put it.
     constexpr std::size_t ahead = random_rows_ahead;
     const std::uint32_t* const order = order_.data();
-    for (std::size_t k = begin; k < end; ++k) {
-        if (k + ahead < end) {
-            fetch_into_l2(record_at(input, order[k + ahead]));
-            fetch_into_l2(double_row_at(input, order[k + ahead]));
+    double_bounds_run staged;
+    float_bounds_run rounded;
+    for (std::size_t run_begin = begin; run_begin < end; run_begin += double_bounds_run::size) {
+        const std::size_t run_end = std::min(end, run_begin + double_bounds_run::size);
+        const std::size_t count = run_end - run_begin;
+        for (std::size_t k = run_begin; k < run_end; ++k) {
+            if (k + ahead < end) {
+                // A 48-byte row may span two cache lines: both are fetched.
+                const double* next = double_row_at(input, order[k + ahead]);
+                fetch_into_l2(next);
+                fetch_into_l2(next + 5);
+            }
+            const std::uint32_t id = order[k];
+            copy_double_row(input, id, records64_[k].v);
+            side_[k] = id >= a_count_ && !self_ ? 1 : 0;
         }
-        const std::uint32_t id = order[k];
-        copy_double_row(input, id, records64_[k].v);
-        side_[k] = id >= a_count_ && !self_ ? 1 : 0;
-        const float* row = record_at(input, id);
-        const float lo_x = row[0];
-        const float hi_y = row[1];
-        const float hi_x = row[2];
-        const float lo_y = row[5];
-        in_lo_x_[k] = lo_x;
-        in_lo_y_[k] = lo_y;
-        in_hi_x_[k] = hi_x;
-        in_hi_y_[k] = hi_y;
-        q_lo_[k] = grid_.q_of(lo_x);
-        q_hi_[k] = grid_.q_of(hi_x);
-        strip_hi_[k] = grid_.strip_of(hi_y);
-    }
-    if (filtered_) {
-        for (std::size_t k = begin; k < end; ++k) {
-            filters_[k] = filter_of(input, order[k]);
+        const double* rows = records64_[run_begin].v;
+        if (double_kind_ == store_kind::poses) {
+            stage_pose_bounds(rows, 8, count, staged);
+        } else {
+            stage_corner_bounds(rows, 8, count, staged);
+        }
+        round_bounds_outward(staged, count, rounded);
+        for (std::size_t k = run_begin; k < run_end; ++k) {
+            const std::size_t r = k - run_begin;
+            in_lo_x_[k] = rounded.lo_x[r];
+            in_lo_y_[k] = rounded.lo_y[r];
+            in_hi_x_[k] = rounded.hi_x[r];
+            in_hi_y_[k] = rounded.hi_y[r];
+            q_lo_[k] = grid_.q_of(rounded.lo_x[r]);
+            q_hi_[k] = grid_.q_of(rounded.hi_x[r]);
+            strip_hi_[k] = grid_.strip_of(rounded.hi_y[r]);
+        }
+        if (filtered_) {
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                filters_[k] = filter_of(input, order[k]);
+            }
         }
     }
 }

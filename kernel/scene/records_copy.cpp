@@ -13,7 +13,13 @@
 namespace obbsat::detail {
 
 void pair_search::copy_records(const query_input& input, std::size_t parts) {
-    records_.resize(n_);
+    // A double query that keeps nothing and computes no contacts reads no
+    // float row in its order: the sweep takes the bounds bound_doubles made
+    // and the double method the double records.
+    const bool bounds_only = double_records_only();
+    if (!bounds_only) {
+        records_.resize(n_);
+    }
     if (doubles_) {
         records64_.resize(n_);
     }
@@ -32,10 +38,6 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
         kept_.now.resize(n_);
     }
     const bounds_fn bounds = kernels_for(ran_).bounds;
-    // A double query that keeps nothing and computes no contacts reads no
-    // float row in its order: the sweep takes the bounds bound_doubles made
-    // and the double method the double records.
-    const bool bounds_only = doubles_ && !kept_.keep && contacts_ == nullptr;
     const std::size_t units = units_for(n_, parts, min_boxes_per_unit);  // taken as they come
     run_units(units, parts, [&](std::size_t unit) {
         const auto [begin, end] = share_of(n_, unit, units);
@@ -113,6 +115,7 @@ void pair_search::copy_double_records(const query_input& input, std::size_t begi
                 fetch_into_l2(next + 5);
             }
             const std::uint32_t id = order[k];
+            ::new (static_cast<void*>(&records64_[k])) record64;  // its memory may have held the sort's words
             copy_double_row(input, id, records64_[k].v);
             side_[k] = id >= a_count_ && !self_ ? 1 : 0;
         }

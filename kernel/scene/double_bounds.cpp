@@ -100,8 +100,9 @@ query_input pair_search::bound_doubles(const query_input& input) {
     const bool poses = input.double_kind == store_kind::poses;
     run_units(units, parts, [&](std::size_t unit) {
         const auto [begin, end] = share_of(n, unit, units);
+        static_assert(double_bounds_run::size <= bounds_run::size, "a run of bounds holds a run of rows");
         double_bounds_run staged;
-        float_bounds_run rounded;
+        bounds_run rounded;
         for (std::size_t run_begin = begin, run_end = begin; run_begin < end; run_begin = run_end) {
             // A run stays within one set, whose rows are evenly spaced.
             const std::size_t set_end = run_begin < input.a_count ? std::min(end, input.a_count) : end;
@@ -121,7 +122,7 @@ query_input pair_search::bound_doubles(const query_input& input) {
             } else {
                 stage_corner_bounds(rows, stride, count, staged);
             }
-            round_bounds_outward(staged, count, rounded);
+            round_bounds_outward(staged, count, rounded.lo_x, rounded.lo_y, rounded.hi_x, rounded.hi_y);
             for (std::size_t r = 0; r < count; ++r) {
                 // UL, UR, LR, LL of the bounds: a corner row whose bounds are these exactly.
                 float* row = double_bounds_[run_begin + r].v;

@@ -81,19 +81,13 @@ void round_outward(const double* in, std::size_t count, float* out) {
     }
 }
 
-/// The float bounds of a run (stage 2 of each of its `count` double bounds).
-struct float_bounds_run {
-    alignas(64) float lo_x[double_bounds_run::size];
-    alignas(64) float lo_y[double_bounds_run::size];
-    alignas(64) float hi_x[double_bounds_run::size];
-    alignas(64) float hi_y[double_bounds_run::size];
-};
-
-inline void round_bounds_outward(const double_bounds_run& in, std::size_t count, float_bounds_run& out) {
-    round_outward<false>(in.lo_x, count, out.lo_x);
-    round_outward<false>(in.lo_y, count, out.lo_y);
-    round_outward<true>(in.hi_x, count, out.hi_x);
-    round_outward<true>(in.hi_y, count, out.hi_y);
+/// Stage 2 of a run's `count` double bounds, into four arrays of floats.
+inline void round_bounds_outward(const double_bounds_run& in, std::size_t count, float* lo_x, float* lo_y,
+                                 float* hi_x, float* hi_y) {
+    round_outward<false>(in.lo_x, count, lo_x);
+    round_outward<false>(in.lo_y, count, lo_y);
+    round_outward<true>(in.hi_x, count, hi_x);
+    round_outward<true>(in.hi_y, count, hi_y);
 }
 
 }  // namespace obbsat::detail

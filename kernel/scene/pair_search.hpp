@@ -194,6 +194,9 @@ private:
     void order_boxes(const query_input& input, std::size_t parts);
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
+    /// The bounds of entries [run_begin, run_end) of the query's order, `b` from
+    /// its entry 0, as the sweep reads them: in_lo_x_ .. in_hi_y_, q_lo_, q_hi_, strip_hi_.
+    void store_sweep_bounds(const bounds_run& b, std::size_t run_begin, std::size_t run_end);
     /// A double query that keeps nothing and computes no contacts: nothing
     /// after the order reads a float row (records_, or bound_doubles' rows);
     /// the sort works in records64_'s memory and copy_double_records fills it.

@@ -12,6 +12,19 @@
 
 namespace obbsat::detail {
 
+void pair_search::store_sweep_bounds(const bounds_run& b, std::size_t run_begin, std::size_t run_end) {
+    for (std::size_t k = run_begin; k < run_end; ++k) {
+        const std::size_t r = k - run_begin;
+        in_lo_x_[k] = b.lo_x[r];
+        in_lo_y_[k] = b.lo_y[r];
+        in_hi_x_[k] = b.hi_x[r];
+        in_hi_y_[k] = b.hi_y[r];
+        q_lo_[k] = grid_.q_of(b.lo_x[r]);
+        q_hi_[k] = grid_.q_of(b.hi_x[r]);
+        strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
+    }
+}
+
 void pair_search::copy_records(const query_input& input, std::size_t parts) {
     // A double query that keeps nothing and computes no contacts reads no
     // float row in its order: the sweep takes the bounds bound_doubles made
@@ -81,16 +94,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                 }
                 widen(b, run_end - run_begin);
             }
-            for (std::size_t k = run_begin; k < run_end; ++k) {
-                const std::size_t r = k - run_begin;
-                in_lo_x_[k] = b.lo_x[r];
-                in_lo_y_[k] = b.lo_y[r];
-                in_hi_x_[k] = b.hi_x[r];
-                in_hi_y_[k] = b.hi_y[r];
-                q_lo_[k] = grid_.q_of(b.lo_x[r]);
-                q_hi_[k] = grid_.q_of(b.hi_x[r]);
-                strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
-            }
+            store_sweep_bounds(b, run_begin, run_end);
         }
     });
 }
@@ -102,8 +106,9 @@ void pair_search::copy_double_records(const query_input& input, std::size_t begi
     // float bounds from wherever the caller's order put it.
     constexpr std::size_t ahead = random_rows_ahead;
     const std::uint32_t* const order = order_.data();
+    static_assert(double_bounds_run::size <= bounds_run::size, "a run of bounds holds a run of rows");
     double_bounds_run staged;
-    float_bounds_run rounded;
+    bounds_run rounded;
     for (std::size_t run_begin = begin; run_begin < end; run_begin += double_bounds_run::size) {
         const std::size_t run_end = std::min(end, run_begin + double_bounds_run::size);
         const std::size_t count = run_end - run_begin;
@@ -125,17 +130,8 @@ void pair_search::copy_double_records(const query_input& input, std::size_t begi
         } else {
             stage_corner_bounds(rows, 8, count, staged);
         }
-        round_bounds_outward(staged, count, rounded);
-        for (std::size_t k = run_begin; k < run_end; ++k) {
-            const std::size_t r = k - run_begin;
-            in_lo_x_[k] = rounded.lo_x[r];
-            in_lo_y_[k] = rounded.lo_y[r];
-            in_hi_x_[k] = rounded.hi_x[r];
-            in_hi_y_[k] = rounded.hi_y[r];
-            q_lo_[k] = grid_.q_of(rounded.lo_x[r]);
-            q_hi_[k] = grid_.q_of(rounded.hi_x[r]);
-            strip_hi_[k] = grid_.strip_of(rounded.hi_y[r]);
-        }
+        round_bounds_outward(staged, count, rounded.lo_x, rounded.lo_y, rounded.hi_x, rounded.hi_y);
+        store_sweep_bounds(rounded, run_begin, run_end);
         if (filtered_) {
             for (std::size_t k = run_begin; k < run_end; ++k) {
                 filters_[k] = filter_of(input, order[k]);

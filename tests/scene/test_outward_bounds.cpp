@@ -19,7 +19,18 @@
 namespace {
 
 using obbsat::detail::double_bounds_run;
-using obbsat::detail::float_bounds_run;
+
+/// Stage 2 of a run, into arrays of its own.
+struct float_bounds_run {
+    float lo_x[double_bounds_run::size];
+    float lo_y[double_bounds_run::size];
+    float hi_x[double_bounds_run::size];
+    float hi_y[double_bounds_run::size];
+};
+
+void round_run(const double_bounds_run& staged, std::size_t count, float_bounds_run& out) {
+    obbsat::detail::round_bounds_outward(staged, count, out.lo_x, out.lo_y, out.hi_x, out.hi_y);
+}
 
 std::uint32_t bits_of(float f) {
     std::uint32_t b;
@@ -100,7 +111,7 @@ TEST(outward_bounds, pose_rows_give_the_reference_bounds) {
         double_bounds_run staged;
         float_bounds_run got;
         obbsat::detail::stage_pose_bounds(&poses[begin].center.x, 6, count, staged);
-        obbsat::detail::round_bounds_outward(staged, count, got);
+        round_run(staged, count, got);
         for (std::size_t r = 0; r < count; ++r) {
             expect_same_bounds(obbsat::ref::bounds_of(poses[begin + r]), got, r);
         }
@@ -118,7 +129,7 @@ TEST(outward_bounds, corner_rows_give_the_reference_bounds) {
     float_bounds_run got;
     const std::size_t count = std::min(rects.size(), double_bounds_run::size);
     obbsat::detail::stage_corner_bounds(&rects[0].ul.x, 8, count, staged);
-    obbsat::detail::round_bounds_outward(staged, count, got);
+    round_run(staged, count, got);
     for (std::size_t r = 0; r < count; ++r) {
         expect_same_bounds(obbsat::ref::bounds_of(rects[r]), got, r);
     }

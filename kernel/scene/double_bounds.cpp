@@ -10,6 +10,7 @@
 // and the sweep hands the pair to the double method (test_pairs).
 #include "scene/pair_search.hpp"
 
+#include "scene/outward_bounds.hpp"
 #include "scene/search_common.hpp"
 #include "support/work_shares.hpp"
 
@@ -99,19 +100,35 @@ query_input pair_search::bound_doubles(const query_input& input) {
     const bool poses = input.double_kind == store_kind::poses;
     run_units(units, parts, [&](std::size_t unit) {
         const auto [begin, end] = share_of(n, unit, units);
-        for (std::size_t id = begin; id < end; ++id) {
-            const double* v = double_row_at(input, id);
-            if (!(id < input.a_count ? input.a64_checked : input.b64_checked) && !valid_double_row(input.double_kind, v)) {
-                first_bad[unit] = std::min(first_bad[unit], id);
-                continue;
+        static_assert(double_bounds_run::size <= bounds_run::size, "a run of bounds holds a run of rows");
+        double_bounds_run staged;
+        bounds_run rounded;
+        for (std::size_t run_begin = begin, run_end = begin; run_begin < end; run_begin = run_end) {
+            // A run stays within one set, whose rows are evenly spaced.
+            const std::size_t set_end = run_begin < input.a_count ? std::min(end, input.a_count) : end;
+            run_end = std::min(set_end, run_begin + double_bounds_run::size);
+            const std::size_t count = run_end - run_begin;
+            const bool checked = run_begin < input.a_count ? input.a64_checked : input.b64_checked;
+            for (std::size_t id = run_begin; id < run_end && !checked; ++id) {
+                if (!valid_double_row(input.double_kind, double_row_at(input, id))) {
+                    first_bad[unit] = std::min(first_bad[unit], id);
+                }
             }
-            const ref::box_bounds b =
-                poses ? ref::bounds_of(rect_pose64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}})
-                      : ref::bounds_of(rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
-            // UL, UR, LR, LL of the bounds: a corner row whose bounds are b exactly.
-            float* row = double_bounds_[id].v;
-            row[0] = b.lo_x, row[1] = b.hi_y, row[2] = b.hi_x, row[3] = b.hi_y;
-            row[4] = b.hi_x, row[5] = b.lo_y, row[6] = b.lo_x, row[7] = b.lo_y;
+            // A row refused above gets bounds too (NaN in, NaN out): the query throws before reading them.
+            const double* rows = double_row_at(input, run_begin);
+            const std::size_t stride = run_begin < input.a_count ? input.a64_stride : input.b64_stride;
+            if (poses) {
+                stage_pose_bounds(rows, stride, count, staged);
+            } else {
+                stage_corner_bounds(rows, stride, count, staged);
+            }
+            round_bounds_outward(staged, count, rounded.lo_x, rounded.lo_y, rounded.hi_x, rounded.hi_y);
+            for (std::size_t r = 0; r < count; ++r) {
+                // UL, UR, LR, LL of the bounds: a corner row whose bounds are these exactly.
+                float* row = double_bounds_[run_begin + r].v;
+                row[0] = rounded.lo_x[r], row[1] = rounded.hi_y[r], row[2] = rounded.hi_x[r], row[3] = rounded.hi_y[r];
+                row[4] = rounded.hi_x[r], row[5] = rounded.lo_y[r], row[6] = rounded.lo_x[r], row[7] = rounded.lo_y[r];
+            }
         }
     });
     for (const std::size_t bad : first_bad) {

@@ -49,9 +49,17 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
         // maps and clears 16 bytes a box fewer of fresh pages. The words live
         // in that memory until the sort is done; copy_records puts records back.
         // (records_ is aligned to a cache line by its allocator.)
+        // A double query that reads no float record (double_records_only) sorts in its double records' memory.
         static_assert(sizeof(record) >= 2 * sizeof(std::uint64_t), "a record holds two words of the sort");
-        records_.resize(n_);
-        std::uint64_t* const words = reinterpret_cast<std::uint64_t*>(records_.data());
+        static_assert(sizeof(record64) >= 2 * sizeof(std::uint64_t), "a record64 holds two words of the sort");
+        std::uint64_t* words = nullptr;
+        if (double_records_only()) {
+            records64_.resize(n_);
+            words = reinterpret_cast<std::uint64_t*>(records64_.data());
+        } else {
+            records_.resize(n_);
+            words = reinterpret_cast<std::uint64_t*>(records_.data());
+        }
         for (std::size_t w = 0; w < 2 * n_; ++w) {
             ::new (static_cast<void*>(words + w)) std::uint64_t;  // no code: words begin to live here
         }

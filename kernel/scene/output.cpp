@@ -50,6 +50,7 @@ const std::vector<pair_index>& pair_search::answer_plainly(const query_input& in
 }
 
 std::vector<pair_index> pair_search::collect_once(const query_input& input) {
+    one_shot_ = true;
     run(input, pair_chunk_sink{});
     // The scene's working memory goes before the sorted copy of the pairs is
     // made: the peak is the larger of the two, not their sum.

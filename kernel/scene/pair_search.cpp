@@ -76,6 +76,11 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     }
     measure_extent(input, parts, repair);
     order_boxes(input, parts);
+    if (one_shot_ && double_records_only()) {
+        // The float rows of `input` are read no more (copy_double_records
+        // reads the double rows): their memory goes before the records' comes.
+        decltype(double_bounds_)().swap(double_bounds_);
+    }
     const double bounds_and_order = seconds_since(start);
     stats_.bounds_seconds += bounds_and_order;
     if (time_order) {

@@ -194,6 +194,17 @@ private:
     void order_boxes(const query_input& input, std::size_t parts);
     bool repair_order(std::size_t parts);
     void copy_records(const query_input& input, std::size_t parts);
+    /// The bounds of entries [run_begin, run_end) of the query's order, `b` from
+    /// its entry 0, as the sweep reads them: in_lo_x_ .. in_hi_y_, q_lo_, q_hi_, strip_hi_.
+    void store_sweep_bounds(const bounds_run& b, std::size_t run_begin, std::size_t run_end);
+    /// A double query that keeps nothing and computes no contacts: nothing
+    /// after the order reads a float row (records_, or bound_doubles' rows);
+    /// the sort works in records64_'s memory and copy_double_records fills it.
+    bool double_records_only() const { return doubles_ && !kept_.keep && contacts_ == nullptr; }
+    /// copy_records of rows [begin, end) of the order for a double query that
+    /// keeps nothing and computes no contacts: the double records, and their
+    /// bounds computed again from them.
+    void copy_double_records(const query_input& input, std::size_t begin, std::size_t end);
 
     // Step 3, visits (visits.cpp).
     void collect_visits(std::size_t parts);
@@ -310,6 +321,9 @@ private:
     scratch_records<record64> records64_;
     scratch_records<record> double_bounds_;
     double double_bounds_seconds_ = 0;  ///< bound_doubles' time, counted in stats_.bounds_seconds
+    /// collect_once: nothing of this query serves a next one, so a double
+    /// query's float rows (double_bounds_) go once the order is made.
+    bool one_shot_ = false;
     scratch_vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
     scratch_vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
     scratch_vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store

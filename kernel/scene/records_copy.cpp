@@ -2,6 +2,7 @@
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
+#include "scene/outward_bounds.hpp"
 #include "scene/search_common.hpp"
 #include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
@@ -11,8 +12,27 @@
 
 namespace obbsat::detail {
 
+void pair_search::store_sweep_bounds(const bounds_run& b, std::size_t run_begin, std::size_t run_end) {
+    for (std::size_t k = run_begin; k < run_end; ++k) {
+        const std::size_t r = k - run_begin;
+        in_lo_x_[k] = b.lo_x[r];
+        in_lo_y_[k] = b.lo_y[r];
+        in_hi_x_[k] = b.hi_x[r];
+        in_hi_y_[k] = b.hi_y[r];
+        q_lo_[k] = grid_.q_of(b.lo_x[r]);
+        q_hi_[k] = grid_.q_of(b.hi_x[r]);
+        strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
+    }
+}
+
 void pair_search::copy_records(const query_input& input, std::size_t parts) {
-    records_.resize(n_);
+    // A double query that keeps nothing and computes no contacts reads no
+    // float row in its order: the sweep takes the bounds bound_doubles made
+    // and the double method the double records.
+    const bool bounds_only = double_records_only();
+    if (!bounds_only) {
+        records_.resize(n_);
+    }
     if (doubles_) {
         records64_.resize(n_);
     }
@@ -36,6 +56,10 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
         const auto [begin, end] = share_of(n_, unit, units);
         constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
+        if (bounds_only) {
+            copy_double_records(input, begin, end);
+            return;
+        }
         for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             for (std::size_t k = run_begin; k < run_end; ++k) {
@@ -70,18 +94,50 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
                 }
                 widen(b, run_end - run_begin);
             }
-            for (std::size_t k = run_begin; k < run_end; ++k) {
-                const std::size_t r = k - run_begin;
-                in_lo_x_[k] = b.lo_x[r];
-                in_lo_y_[k] = b.lo_y[r];
-                in_hi_x_[k] = b.hi_x[r];
-                in_hi_y_[k] = b.hi_y[r];
-                q_lo_[k] = grid_.q_of(b.lo_x[r]);
-                q_hi_[k] = grid_.q_of(b.hi_x[r]);
-                strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
-            }
+            store_sweep_bounds(b, run_begin, run_end);
         }
     });
+}
+
+void pair_search::copy_double_records(const query_input& input, std::size_t begin, std::size_t end) {
+    // The bounds in the query's order are those bound_doubles made, computed
+    // again (outward_bounds.hpp, the same floats) from the double records
+    // just copied, which are in the cache: cheaper than reading each row's
+    // float bounds from wherever the caller's order put it.
+    constexpr std::size_t ahead = random_rows_ahead;
+    const std::uint32_t* const order = order_.data();
+    static_assert(double_bounds_run::size <= bounds_run::size, "a run of bounds holds a run of rows");
+    double_bounds_run staged;
+    bounds_run rounded;
+    for (std::size_t run_begin = begin; run_begin < end; run_begin += double_bounds_run::size) {
+        const std::size_t run_end = std::min(end, run_begin + double_bounds_run::size);
+        const std::size_t count = run_end - run_begin;
+        for (std::size_t k = run_begin; k < run_end; ++k) {
+            if (k + ahead < end) {
+                // A 48-byte row may span two cache lines: both are fetched.
+                const double* next = double_row_at(input, order[k + ahead]);
+                fetch_into_l2(next);
+                fetch_into_l2(next + 5);
+            }
+            const std::uint32_t id = order[k];
+            ::new (static_cast<void*>(&records64_[k])) record64;  // its memory may have held the sort's words
+            copy_double_row(input, id, records64_[k].v);
+            side_[k] = id >= a_count_ && !self_ ? 1 : 0;
+        }
+        const double* rows = records64_[run_begin].v;
+        if (double_kind_ == store_kind::poses) {
+            stage_pose_bounds(rows, 8, count, staged);
+        } else {
+            stage_corner_bounds(rows, 8, count, staged);
+        }
+        round_bounds_outward(staged, count, rounded.lo_x, rounded.lo_y, rounded.hi_x, rounded.hi_y);
+        store_sweep_bounds(rounded, run_begin, run_end);
+        if (filtered_) {
+            for (std::size_t k = run_begin; k < run_end; ++k) {
+                filters_[k] = filter_of(input, order[k]);
+            }
+        }
+    }
 }
 
 }  // namespace obbsat::detail

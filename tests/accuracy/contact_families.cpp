@@ -75,6 +75,21 @@ public:
                       uniform(0.0, 2 * pi)};
     }
 
+    /// B on A's axes (up to quarter turns) with equal overlaps along A.x and
+    /// A.y, its center then moved by up to 4 ulps: which of A's faces is the
+    /// reference is a tie that the last bits of the center decide.
+    placed axes_tie(const placed& a) {
+        const double hx = uniform(0.25, 2.0), hy = uniform(0.25, 2.0);
+        const int turns = integer(0, 3);
+        const double reach_x = turns % 2 == 0 ? hx : hy, reach_y = turns % 2 == 0 ? hy : hx;
+        const double overlap = uniform(0.0, 0.2) * (a.hx < a.hy ? a.hx : a.hy);
+        const double u = (chance(0.5) ? 1 : -1) * (a.hx + reach_x - overlap);
+        const double v = (chance(0.5) ? 1 : -1) * (a.hy + reach_y - overlap);
+        const double c = std::cos(a.angle), s = std::sin(a.angle);
+        const double nudge = integer(-4, 4) * 0x1p-52;
+        return placed{(a.cx + u * c - v * s) * (1 + nudge), a.cy + u * s + v * c, hx, hy, a.angle + turns * (pi / 2)};
+    }
+
     /// One of the four placements above, at random.
     placed mixed(const placed& a) {
         switch (integer(0, 3)) {
@@ -140,6 +155,7 @@ const char* contact_family_name(contact_family family) {
     case contact_family::corner_into_face: return "corner_into_face";
     case contact_family::corner_corner: return "corner_corner";
     case contact_family::deep_inside: return "deep_inside";
+    case contact_family::axes_tie: return "axes_tie";
     case contact_family::exact_touching: return "exact_touching";
     case contact_family::zero_extents: return "zero_extents";
     case contact_family::tiny: return "tiny_1e-6";
@@ -172,6 +188,7 @@ std::vector<Pair> make_pairs(contact_family family, std::size_t count, std::uint
         case contact_family::corner_into_face: b = random.corner_into_face(a); break;
         case contact_family::corner_corner: b = random.corner_corner(a); break;
         case contact_family::deep_inside: b = random.deep_inside(a); break;
+        case contact_family::axes_tie: b = random.axes_tie(a); break;
         case contact_family::exact_touching:
             out.push_back(held_as(exactly_touching(random), static_cast<const Pair*>(nullptr)));
             continue;

@@ -34,6 +34,7 @@ enum class contact_family {
     random,            ///< random poses near each other that collide
     far_utm,           ///< the mixed placements moved to 1e5 to 1e7 from the origin (UTM-like; double only)
     far_1e15,          ///< the mixed placements moved to 1e9 to 1e15 from the origin (double only)
+    axes_tie,          ///< B on A's axes overlapping equally along both, moved by a few ulps (double only)
 };
 
 inline constexpr contact_family all_contact_families[] = {
@@ -43,9 +44,10 @@ inline constexpr contact_family all_contact_families[] = {
     contact_family::far_1e7,       contact_family::random};
 
 /// The families measured in double: the float ones but the two fixed
-/// distances, which the two far ranges replace.
+/// distances, which the two far ranges replace, and a tie of A's faces.
 inline constexpr contact_family all_contact_families64[] = {
-    contact_family::face_parallel, contact_family::corner_into_face, contact_family::corner_corner,
+    contact_family::face_parallel, contact_family::axes_tie,         contact_family::corner_into_face,
+    contact_family::corner_corner,
     contact_family::deep_inside,   contact_family::exact_touching,   contact_family::zero_extents,
     contact_family::tiny,          contact_family::huge,             contact_family::far_utm,
     contact_family::far_1e15,      contact_family::random};

@@ -23,14 +23,9 @@ template <class P>
 auto dot(P p, P q) {
     return (p.x * q.x) + (p.y * q.y);
 }
-template <class T>
-T min_of(T u, T v) {
-    return u < v ? u : v;
-}
-template <class T>
-T max_of(T u, T v) {
-    return u > v ? u : v;
-}
+// min and max as the reference folds them (the second value on a tie).
+template <class T> T min_of(T u, T v) { return u < v ? u : v; }
+template <class T> T max_of(T u, T v) { return u > v ? u : v; }
 
 struct rounded_choice {
     face_choice face;

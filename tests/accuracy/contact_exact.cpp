@@ -8,11 +8,15 @@ namespace {
 // header promises (mpf_class's default would be 64).
 [[maybe_unused]] const bool default_bits_set = (mpf_set_default_prec(contact_exact_bits), true);
 
-mpq_class exact(float v) { return mpq_class(static_cast<double>(v)); }
+/// Every float and every double is a dyadic rational, held here exactly.
+mpq_class exact(double v) { return mpq_class(v); }
 mpq_class dot(const exact_point& p, const exact_point& q) { return p.x * q.x + p.y * q.y; }
 mpq_class cross(const exact_point& p, const exact_point& q) { return p.x * q.y - p.y * q.x; }
 exact_point minus(const exact_point& p, const exact_point& q) { return exact_point{p.x - q.x, p.y - q.y}; }
-exact_point exact_of(point p) { return exact_point{exact(p.x), exact(p.y)}; }
+template <class Point>
+exact_point exact_of(Point p) {
+    return exact_point{exact(p.x), exact(p.y)};
+}
 
 mpf_class mpf(const mpq_class& q) { return mpf_class(q, contact_exact_bits); }
 mpf_class root(const mpq_class& q) { return sqrt(mpf(q)); }
@@ -83,7 +87,12 @@ contact_feature feature_of(bool flip, int ref_index, feature_type ref_type, int 
 
 mpf_class value_of(const scaled_value& s) { return mpf(s.x) / root(s.n2); }
 
-exact_box exact_box_of(const rect_pose& p) {
+namespace {
+
+// The float and double inputs take the same steps: only the type of the
+// values read differs, and each is read exactly.
+template <class Pose>
+exact_box box_of_pose(const Pose& p) {
     const mpq_class cx = exact(p.center.x), cy = exact(p.center.y);
     const mpq_class c = exact(p.rotation.x), s = exact(p.rotation.y);
     const mpq_class ux = exact(p.half_extents.x) * c, uy = exact(p.half_extents.x) * s;
@@ -103,8 +112,9 @@ exact_box exact_box_of(const rect_pose& p) {
     return box;
 }
 
-bool exact_box_of(const rect& r, exact_box& out) {
-    const point corners[4] = {r.ul, r.ur, r.lr, r.ll};
+template <class Quad>
+bool box_of_quad(const Quad& r, exact_box& out) {
+    const decltype(r.ul) corners[4] = {r.ul, r.ur, r.lr, r.ll};
     exact_point e[4];
     for (int k = 0; k < 4; ++k) {
         out.v[k] = exact_of(corners[k]);
@@ -129,7 +139,8 @@ bool exact_box_of(const rect& r, exact_box& out) {
     return true;
 }
 
-exact_choice exact_choice_of(const rect_pose& a, const rect_pose& b) {
+template <class Pose>
+exact_choice choice_of_poses(const Pose& a, const Pose& b) {
     // P2: local's offsets and reaches (obbsat/ref/local.hpp), exact.
     const mpq_class dx = exact(b.center.x) - exact(a.center.x), dy = exact(b.center.y) - exact(a.center.y);
     const mpq_class ca = exact(a.rotation.x), sa = exact(a.rotation.y);
@@ -165,6 +176,15 @@ exact_choice exact_choice_of(const rect_pose& a, const rect_pose& b) {
     return out;
 }
 
+}  // namespace
+
+exact_box exact_box_of(const rect_pose& p) { return box_of_pose(p); }
+exact_box exact_box_of(const rect_pose64& p) { return box_of_pose(p); }
+bool exact_box_of(const rect& r, exact_box& out) { return box_of_quad(r, out); }
+bool exact_box_of(const rect64& r, exact_box& out) { return box_of_quad(r, out); }
+exact_choice exact_choice_of(const rect_pose& a, const rect_pose& b) { return choice_of_poses(a, b); }
+exact_choice exact_choice_of(const rect_pose64& a, const rect_pose64& b) { return choice_of_poses(a, b); }
+
 exact_choice exact_choice_of(const exact_box& a, const exact_box& b) {
     exact_choice out;
     const int ia = best_face(a, b, out.sa.x);
@@ -179,7 +199,7 @@ exact_choice exact_choice_of(const exact_box& a, const exact_box& b) {
 }
 
 exact_contact exact_contact_of(const exact_box& a, const exact_box& b, const exact_choice& choice,
-                               const face_choice& face, float margin, int incident) {
+                               const face_choice& face, double margin, int incident) {
     const bool flip = face.flip;
     const int r = face.r;
     const exact_box& ref = flip ? b : a;

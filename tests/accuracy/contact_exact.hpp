@@ -1,7 +1,8 @@
 // The contact of two boxes (obbsat/ref/contact.hpp) computed without rounding:
-// the same steps as the float32 reference (the same reference-face rule with
-// its tolerance, the same incident edge, the same clipping, the same tie
-// breaks), on the exact rationals the float inputs stand for. Every
+// the same steps as the float32 and double references (the same reference-face
+// rule with its tolerance, the same incident edge, the same clipping, the same
+// tie breaks), on the exact rationals the float or double inputs stand for
+// (every float and every double is one, so one set of steps serves both). Every
 // separation, overlap, clipped point and comparison is an exact GMP rational
 // (mpq_class); the one square root per face normal is taken only where a
 // value must be given out (the unit normal, the depth, the separations), as
@@ -11,13 +12,15 @@
 // (sB > sA + tol, a sum of two such roots) is decided in mpf, where a tie
 // is a coincidence of irrationals that no family here builds.
 //
-// This is test code: it checks the float reference, it is not a part of the
+// This is test code: it checks the float and double references, it is not a part of the
 // library.
 #pragma once
 
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 #include <obbsat/rect_pose.hpp>
+#include <obbsat/rect_pose64.hpp>
 
 #include <gmpxx.h>
 
@@ -84,14 +87,17 @@ struct exact_contact {
 
 /// The box of pose `p` (the reference's pose rule, without rounding).
 exact_box exact_box_of(const rect_pose& p);
+exact_box exact_box_of(const rect_pose64& p);
 
 /// The box of corner quad `r`, with outward normals from its exact edges;
 /// false when its four exact turns are not all of one sign (a quad the float
 /// test accepts may not be strictly convex in exact arithmetic).
 bool exact_box_of(const rect& r, exact_box& out);
+bool exact_box_of(const rect64& r, exact_box& out);
 
 /// Steps P1 to P3 on poses, exact.
 exact_choice exact_choice_of(const rect_pose& a, const rect_pose& b);
+exact_choice exact_choice_of(const rect_pose64& a, const rect_pose64& b);
 
 /// Steps 1 to 3 on boxes of corner quads, exact.
 exact_choice exact_choice_of(const exact_box& a, const exact_box& b);
@@ -102,7 +108,7 @@ exact_choice exact_choice_of(const exact_box& a, const exact_box& b);
 /// incident face is step 5's, or `incident` when it is 0 to 3 (to follow
 /// the float reference through an exact tie of two incident faces).
 exact_contact exact_contact_of(const exact_box& a, const exact_box& b, const exact_choice& choice,
-                               const face_choice& face, float margin = 0.0f, int incident = -1);
+                               const face_choice& face, double margin = 0.0, int incident = -1);
 
 /// x / √n2 in mpf.
 mpf_class value_of(const scaled_value& s);

@@ -1,6 +1,7 @@
 #include "contact_families.hpp"
 
 #include <obbsat/ref/local.hpp>
+#include <obbsat/ref/local64.hpp>
 
 #include <cmath>
 
@@ -17,7 +18,8 @@ struct placed {
 
 class placer {
 public:
-    explicit placer(std::uint64_t seed) : random_(seed) {}
+    /// Parallel faces tilt by 10^e rad for e from `least_tilt_exponent` to -3.
+    placer(std::uint64_t seed, double least_tilt_exponent) : random_(seed), least_tilt_(least_tilt_exponent) {}
 
     double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random_); }
     int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(random_); }
@@ -42,7 +44,7 @@ public:
     }
 
     placed face_parallel(const placed& a) {
-        const double tilt = chance(0.2) ? 0.0 : (chance(0.5) ? -1 : 1) * std::pow(10.0, uniform(-7.0, -3.0));
+        const double tilt = chance(0.2) ? 0.0 : (chance(0.5) ? -1 : 1) * std::pow(10.0, uniform(least_tilt_, -3.0));
         const double angle = a.angle + integer(0, 3) * (pi / 2) + tilt;
         return against_face(a, uniform(0.25, 2.0), uniform(0.25, 2.0), angle, uniform(0.0, 0.2) * a.hx);
     }
@@ -73,6 +75,21 @@ public:
                       uniform(0.0, 2 * pi)};
     }
 
+    /// B on A's axes (up to quarter turns) with equal overlaps along A.x and
+    /// A.y, its center then moved by up to 4 ulps: which of A's faces is the
+    /// reference is a tie that the last bits of the center decide.
+    placed axes_tie(const placed& a) {
+        const double hx = uniform(0.25, 2.0), hy = uniform(0.25, 2.0);
+        const int turns = integer(0, 3);
+        const double reach_x = turns % 2 == 0 ? hx : hy, reach_y = turns % 2 == 0 ? hy : hx;
+        const double overlap = uniform(0.0, 0.2) * (a.hx < a.hy ? a.hx : a.hy);
+        const double u = (chance(0.5) ? 1 : -1) * (a.hx + reach_x - overlap);
+        const double v = (chance(0.5) ? 1 : -1) * (a.hy + reach_y - overlap);
+        const double c = std::cos(a.angle), s = std::sin(a.angle);
+        const double nudge = integer(-4, 4) * 0x1p-52;
+        return placed{(a.cx + u * c - v * s) * (1 + nudge), a.cy + u * s + v * c, hx, hy, a.angle + turns * (pi / 2)};
+    }
+
     /// One of the four placements above, at random.
     placed mixed(const placed& a) {
         switch (integer(0, 3)) {
@@ -85,13 +102,26 @@ public:
 
 private:
     std::mt19937_64 random_;
+    double least_tilt_;
 };
 
-rect_pose rounded(const placed& p, double scale, double shift_x, double shift_y) {
-    return rect_pose{{static_cast<float>(shift_x + p.cx * scale), static_cast<float>(shift_y + p.cy * scale)},
-                     {static_cast<float>(p.hx * scale), static_cast<float>(p.hy * scale)},
-                     {static_cast<float>(std::cos(p.angle)), static_cast<float>(std::sin(p.angle))}};
+/// The pose of a placement, scaled and moved in double, then held as Pose:
+/// rounded to float for rect_pose, kept as it is for rect_pose64.
+template <class Pose>
+Pose rounded(const placed& p, double scale, double shift_x, double shift_y) {
+    using value = decltype(Pose{}.center.x);
+    return Pose{{static_cast<value>(shift_x + p.cx * scale), static_cast<value>(shift_y + p.cy * scale)},
+                {static_cast<value>(p.hx * scale), static_cast<value>(p.hy * scale)},
+                {static_cast<value>(std::cos(p.angle)), static_cast<value>(std::sin(p.angle))}};
 }
+
+rect_pose64 widened(const rect_pose& p) {
+    return rect_pose64{{p.center.x, p.center.y}, {p.half_extents.x, p.half_extents.y}, {p.rotation.x, p.rotation.y}};
+}
+
+/// A float pair as Pair: itself, or widened exactly to double.
+pose_pair held_as(const pose_pair& p, const pose_pair*) { return p; }
+pose_pair64 held_as(const pose_pair& p, const pose_pair64*) { return pose_pair64{widened(p.a), widened(p.b)}; }
 
 /// Integer rotations, sizes and centers: every separation is exact in float.
 pose_pair exactly_touching(placer& random) {
@@ -125,6 +155,7 @@ const char* contact_family_name(contact_family family) {
     case contact_family::corner_into_face: return "corner_into_face";
     case contact_family::corner_corner: return "corner_corner";
     case contact_family::deep_inside: return "deep_inside";
+    case contact_family::axes_tie: return "axes_tie";
     case contact_family::exact_touching: return "exact_touching";
     case contact_family::zero_extents: return "zero_extents";
     case contact_family::tiny: return "tiny_1e-6";
@@ -132,13 +163,21 @@ const char* contact_family_name(contact_family family) {
     case contact_family::far_1e6: return "far_1e6";
     case contact_family::far_1e7: return "far_1e7";
     case contact_family::random: return "random";
+    case contact_family::far_utm: return "far_1e5_1e7";
+    case contact_family::far_1e15: return "far_1e9_1e15";
     }
     return "?";
 }
 
-std::vector<pose_pair> make_contact_pairs(contact_family family, std::size_t count, std::uint64_t seed) {
-    placer random(seed * 1000003u + static_cast<std::uint64_t>(family));
-    std::vector<pose_pair> out;
+namespace {
+
+/// The pairs of `family` as Pair (pose_pair or pose_pair64).
+template <class Pair>
+std::vector<Pair> make_pairs(contact_family family, std::size_t count, std::uint64_t seed,
+                             double least_tilt_exponent) {
+    using pose = decltype(Pair{}.a);
+    placer random(seed * 1000003u + static_cast<std::uint64_t>(family), least_tilt_exponent);
+    std::vector<Pair> out;
     out.reserve(count);
     while (out.size() < count) {
         const placed a = random.box_at_origin();
@@ -149,7 +188,10 @@ std::vector<pose_pair> make_contact_pairs(contact_family family, std::size_t cou
         case contact_family::corner_into_face: b = random.corner_into_face(a); break;
         case contact_family::corner_corner: b = random.corner_corner(a); break;
         case contact_family::deep_inside: b = random.deep_inside(a); break;
-        case contact_family::exact_touching: out.push_back(exactly_touching(random)); continue;
+        case contact_family::axes_tie: b = random.axes_tie(a); break;
+        case contact_family::exact_touching:
+            out.push_back(held_as(exactly_touching(random), static_cast<const Pair*>(nullptr)));
+            continue;
         case contact_family::zero_extents: {
             placed flat = a;
             const int which = random.integer(0, 2);  // A's x, A's y, or both of A's
@@ -157,9 +199,9 @@ std::vector<pose_pair> make_contact_pairs(contact_family family, std::size_t cou
             flat.hy = which == 0 ? a.hy : 0.0;
             b = random.mixed(a);
             if (random.chance(0.5)) {
-                out.push_back(pose_pair{rounded(flat, 1, 0, 0), rounded(b, 1, 0, 0)});
+                out.push_back(Pair{rounded<pose>(flat, 1, 0, 0), rounded<pose>(b, 1, 0, 0)});
             } else {
-                out.push_back(pose_pair{rounded(b, 1, 0, 0), rounded(flat, 1, 0, 0)});
+                out.push_back(Pair{rounded<pose>(b, 1, 0, 0), rounded<pose>(flat, 1, 0, 0)});
             }
             continue;
         }
@@ -173,29 +215,62 @@ std::vector<pose_pair> make_contact_pairs(contact_family family, std::size_t cou
             shift_y = random.uniform(0.5, 1.0) * far * (random.chance(0.5) ? 1 : -1);
             break;
         }
+        case contact_family::far_utm:
+        case contact_family::far_1e15: {
+            // Each coordinate's magnitude log-uniform over the range.
+            b = random.mixed(a);
+            const double lo = family == contact_family::far_utm ? 5.0 : 9.0;
+            const double hi = family == contact_family::far_utm ? 7.0 : 15.0;
+            shift_x = std::pow(10.0, random.uniform(lo, hi)) * (random.chance(0.5) ? 1 : -1);
+            shift_y = std::pow(10.0, random.uniform(lo, hi)) * (random.chance(0.5) ? 1 : -1);
+            break;
+        }
         case contact_family::random: {
             placed p = random.box_at_origin(), q = random.box_at_origin();
             q.cx = random.uniform(-3.0, 3.0);
             q.cy = random.uniform(-3.0, 3.0);
-            const pose_pair pair{rounded(p, 1, 0, 0), rounded(q, 1, 0, 0)};
+            const Pair pair{rounded<pose>(p, 1, 0, 0), rounded<pose>(q, 1, 0, 0)};
             if (obbsat::ref::local(pair.a, pair.b)) {
                 out.push_back(pair);
             }
             continue;
         }
         }
-        out.push_back(pose_pair{rounded(a, scale, shift_x, shift_y), rounded(b, scale, shift_x, shift_y)});
+        out.push_back(Pair{rounded<pose>(a, scale, shift_x, shift_y), rounded<pose>(b, scale, shift_x, shift_y)});
     }
     return out;
 }
 
-rect corners_of(const rect_pose& p) {
+}  // namespace
+
+std::vector<pose_pair> make_contact_pairs(contact_family family, std::size_t count, std::uint64_t seed) {
+    return make_pairs<pose_pair>(family, count, seed, -7.0);
+}
+
+// Parallel faces tilt down to 1e-16 rad, below an ulp of the angle itself:
+// the two faces are parallel, or one ulp of a rotation component apart, where
+// a tie of A's and B's separations decides the reference face.
+std::vector<pose_pair64> make_contact_pairs64(contact_family family, std::size_t count, std::uint64_t seed) {
+    return make_pairs<pose_pair64>(family, count, seed, -16.0);
+}
+
+namespace {
+
+/// The corners of `p` computed in double, held as Quad (rounded to float for rect).
+template <class Quad, class Pose>
+Quad quad_of(const Pose& p) {
+    using value = decltype(Quad{}.ul.x);
     const double cx = p.center.x, cy = p.center.y, c = p.rotation.x, s = p.rotation.y;
     const double ux = p.half_extents.x * c, uy = p.half_extents.x * s;
     const double wx = p.half_extents.y * s, wy = p.half_extents.y * c;
-    auto at = [](double x, double y) { return point{static_cast<float>(x), static_cast<float>(y)}; };
-    return rect{at(cx - ux - wx, cy - uy + wy), at(cx + ux - wx, cy + uy + wy), at(cx + ux + wx, cy + uy - wy),
+    auto at = [](double x, double y) { return decltype(Quad{}.ul){static_cast<value>(x), static_cast<value>(y)}; };
+    return Quad{at(cx - ux - wx, cy - uy + wy), at(cx + ux - wx, cy + uy + wy), at(cx + ux + wx, cy + uy - wy),
                 at(cx - ux + wx, cy - uy - wy)};
 }
+
+}  // namespace
+
+rect corners_of(const rect_pose& p) { return quad_of<rect>(p); }
+rect64 corners_of(const rect_pose64& p) { return quad_of<rect64>(p); }
 
 }  // namespace obbsat::accuracy

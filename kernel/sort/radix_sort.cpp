@@ -14,6 +14,12 @@ namespace {
 constexpr unsigned digit_bits = 8;
 constexpr std::size_t digit_values = std::size_t{1} << digit_bits;
 
+// Keys below which a second thread costs more than it saves, and the fewest
+// keys a unit of a pass takes: below that its 256 counts and write streams
+// cost more than its keys.
+constexpr std::size_t min_per_part = 32768;
+constexpr std::size_t min_per_unit = 8192;
+
 }  // namespace
 
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
@@ -35,26 +41,31 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     if (n < 2) {
         return;
     }
-    parts = std::max<std::size_t>(1, std::min(parts, n / 32768));
+    // The passes are cut into units taken as they come (work_shares.hpp): a
+    // thread slowed by other work on its core takes fewer of them. Each unit
+    // counts and scatters its own slice, after the same digit of the slices
+    // before it, so the sort stays stable however the units are taken.
+    const std::size_t threads = std::max<std::size_t>(1, std::min(parts, n / min_per_part));
+    const std::size_t units = units_for(n, threads, min_per_unit);
     key_bits = std::min(key_bits, 32u);  // the keys have no more
     std::uint64_t* from = packed;
     std::uint64_t* to = spare;
-    const auto run = [parts](const std::function<void(std::size_t)>& task) {
-        if (parts == 1) {
+    const auto run = [units, threads](const std::function<void(std::size_t)>& task) {
+        if (units == 1) {
             task(0);
         } else {
-            run_parts(parts, task);
+            run_units(units, threads, task);
         }
     };
-    const auto begin_of = [n, parts](std::size_t part) { return n * part / parts; };
+    const auto begin_of = [n, units](std::size_t unit) { return n * unit / units; };
     // On one thread the counts of every digit are taken as the keys are
     // packed: a digit's count over all keys does not depend on their order,
-    // so no pass needs a read of its own to count. With several parts each
-    // part counts the share it holds at the start of each pass.
+    // so no pass needs a read of its own to count. With several units each
+    // unit counts the slice it holds at the start of each pass.
     constexpr unsigned max_passes = 32 / digit_bits;
     const unsigned passes = std::min(max_passes, (key_bits + digit_bits - 1) / digit_bits);
     std::array<std::array<std::size_t, digit_values>, max_passes> counted{};
-    if (parts == 1) {
+    if (units == 1) {
         std::uint64_t* const out = from;
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t key = keys[i];
@@ -64,24 +75,24 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
             }
         }
     } else {
-        run([&](std::size_t part) {
-            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+        run([&](std::size_t unit) {
+            for (std::size_t i = begin_of(unit); i < begin_of(unit + 1); ++i) {
                 from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
             }
         });
     }
-    // count[part][digit]: each part counts its own share, then scatters it to
-    // the slots after every lower digit and after the same digit of lower parts,
-    // which keeps the sort stable.
-    std::vector<std::array<std::size_t, digit_values>> count(parts);
+    // count[unit][digit]: each unit counts its own slice, then scatters it to
+    // the slots after every lower digit and after the same digit of lower
+    // units, which keeps the sort stable.
+    std::vector<std::array<std::size_t, digit_values>> count(units);
     for (unsigned shift = 32; shift < 32 + key_bits; shift += digit_bits) {
-        if (parts == 1) {
+        if (units == 1) {
             count[0] = counted[(shift - 32) / digit_bits];
         } else {
-            run([&](std::size_t part) {
-                std::array<std::size_t, digit_values>& c = count[part];
+            run([&](std::size_t unit) {
+                std::array<std::size_t, digit_values>& c = count[unit];
                 c.fill(0);
-                for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+                for (std::size_t i = begin_of(unit); i < begin_of(unit + 1); ++i) {
                     ++c[(from[i] >> shift) & (digit_values - 1)];
                 }
             });
@@ -90,9 +101,9 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         bool one_digit = false;
         for (std::size_t d = 0; d < digit_values; ++d) {
             std::size_t of_digit = 0;
-            for (std::size_t part = 0; part < parts; ++part) {
-                const std::size_t here = count[part][d];
-                count[part][d] = sum;
+            for (std::size_t unit = 0; unit < units; ++unit) {
+                const std::size_t here = count[unit][d];
+                count[unit][d] = sum;
                 sum += here;
                 of_digit += here;
             }
@@ -101,16 +112,16 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         if (one_digit) {
             continue;  // every key has this digit: the pass would move nothing
         }
-        run([&](std::size_t part) {
-            std::array<std::size_t, digit_values>& c = count[part];
-            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+        run([&](std::size_t unit) {
+            std::array<std::size_t, digit_values>& c = count[unit];
+            for (std::size_t i = begin_of(unit); i < begin_of(unit + 1); ++i) {
                 to[c[(from[i] >> shift) & (digit_values - 1)]++] = from[i];
             }
         });
         std::swap(from, to);
     }
-    run([&](std::size_t part) {
-        for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
+    run([&](std::size_t unit) {
+        for (std::size_t i = begin_of(unit); i < begin_of(unit + 1); ++i) {
             keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
             values[i] = static_cast<std::uint32_t>(from[i]);
         }
@@ -140,9 +151,11 @@ void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, st
     // Share s takes the entries of both runs whose keys lie from its split
     // key up to the next one, and writes them after the entries of both runs
     // before its split key: the shares write apart and at the same time.
-    // The split keys are taken from the longer run, at equal steps.
+    // The split keys are taken from the longer run, at equal steps. The
+    // shares are units taken as they come (work_shares.hpp), a few a thread.
     constexpr std::size_t least_share = 16384;
-    const std::size_t shares = std::max<std::size_t>(1, std::min(parts, (a_n + b_n) / least_share));
+    const std::size_t threads = std::max<std::size_t>(1, std::min(parts, (a_n + b_n) / least_share));
+    const std::size_t shares = units_for(a_n + b_n, threads, least_share / 2);
     std::vector<std::size_t> a_at(shares + 1), b_at(shares + 1);
     a_at[0] = b_at[0] = 0;
     a_at[shares] = a_n;
@@ -172,7 +185,7 @@ void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, st
         std::copy(b_keys + j, b_keys + j_end, out_keys + out);
         std::copy(b_values + j, b_values + j_end, out_values + out);
     };
-    run_parts(shares, merge_share);  // on this thread alone for one share
+    run_units(shares, threads, merge_share);  // on this thread alone for one share
 }
 
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,

@@ -2,11 +2,15 @@
 // thread and split over two (the same result either way, equal keys in their
 // input order), in its own buffers and in memory the caller lends, merge_by_key against std::merge in shares split by key, and
 // repair_sort on nearly sorted input and past its move budget; bucket_starts
-// against prefix counts; sort_pairs against std::sort by (a, b).
+// against prefix counts; sort_pairs against std::sort by (a, b). On two
+// threads every step of the sorts is cut into more units than threads, taken
+// in any order, with the answer of one thread.
 #include "sort/pair_sort.hpp"
 #include "sort/radix_sort.hpp"
+#include "support/executor_scope.hpp"
 
 #include <obbsat/collide.hpp>
+#include <obbsat/executor.hpp>
 #include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -14,6 +18,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -301,6 +306,104 @@ TEST(repair_sort, sorts_nearly_sorted_input_and_gives_up_past_its_budget) {
     std::vector<std::uint32_t> all(ids.size());
     std::iota(all.begin(), all.end(), 0u);
     EXPECT_EQ(ids, all);
+}
+
+/// The units an executor was handed: the fewest and the most in one step.
+struct units_seen {
+    std::size_t fewest = std::numeric_limits<std::size_t>::max();
+    std::size_t most = 0;
+};
+
+/// Every unit a range of its own, the last first, before enqueue returns.
+void* enqueue_last_first(obbsat::executor_task task, std::size_t count, std::size_t, void* task_context,
+                         void* user) {
+    units_seen& seen = *static_cast<units_seen*>(user);
+    seen.fewest = std::min(seen.fewest, count);
+    seen.most = std::max(seen.most, count);
+    for (std::size_t item = count; item-- > 0;) {
+        task(item, item + 1, task_context);
+    }
+    return nullptr;
+}
+
+void finish_nothing(void*, void*) {}
+
+TEST(sorts_on_two_threads, cut_every_step_into_more_units_than_threads_with_the_answer_of_one) {
+    // A step split one share a thread would hand the executor 2 units; a
+    // thread slowed by other work on its core would then hold the other back.
+    constexpr std::size_t threads = 2;
+    {
+        std::vector<std::uint32_t> keys, values;
+        random_input(300000, 20, 5, keys, values);
+        const keyed want = stably_sorted(keys, values, 0);
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::radix_buffer packed, spare;
+            obbsat::detail::radix_sort(keys.data(), values.data(), keys.size(), 20, packed, spare, threads);
+        }
+        EXPECT_EQ(zipped(keys, values), want);
+        EXPECT_GT(seen.fewest, threads) << "radix_sort";
+        EXPECT_NE(seen.most, 0u) << "radix_sort ran on no executor";
+    }
+    {
+        std::vector<std::uint32_t> keys, values;
+        random_input(200000, 12, 6, keys, values);
+        keyed a(120000), b(80000);
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            (i < a.size() ? a[i] : b[i - a.size()]) = {keys[i], values[i]};
+        }
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        keyed want;
+        std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(want));
+        std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
+        for (const auto& [k, v] : a) {
+            a_keys.push_back(k);
+            a_values.push_back(v);
+        }
+        for (const auto& [k, v] : b) {
+            b_keys.push_back(k);
+            b_values.push_back(v);
+        }
+        std::vector<std::uint32_t> out_keys(want.size()), out_values(want.size());
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::merge_by_key(a_keys.data(), a_values.data(), a.size(), b_keys.data(), b_values.data(),
+                                         b.size(), out_keys.data(), out_values.data(), threads);
+        }
+        EXPECT_EQ(zipped(out_keys, out_values), want);
+        EXPECT_GT(seen.fewest, threads) << "merge_by_key";
+        EXPECT_NE(seen.most, 0u) << "merge_by_key ran on no executor";
+    }
+    {
+        const auto input = random_pairs(300000, threads, 7);
+        std::vector<obbsat::detail::pair_source<obbsat::detail::tagged_pair>> lists;
+        std::vector<obbsat::detail::tagged_pair> want;
+        for (const auto& source : input) {
+            lists.push_back({{source.data(), source.size()}});
+            want.insert(want.end(), source.begin(), source.end());
+        }
+        std::sort(want.begin(), want.end(),
+                  [](const auto& x, const auto& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
+        std::vector<obbsat::detail::tagged_pair> got;
+        std::vector<obbsat::detail::pair_sort_scratch<obbsat::detail::tagged_pair>> scratch(threads);
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::sort_pairs(lists, 300000, got, scratch);
+        }
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t i = 0; i < want.size(); ++i) {
+            ASSERT_TRUE(got[i].a == want[i].a && got[i].b == want[i].b) << "pair " << i;
+        }
+        EXPECT_GT(seen.fewest, threads) << "sort_pairs";
+        EXPECT_NE(seen.most, 0u) << "sort_pairs ran on no executor";
+    }
 }
 
 }  // namespace

@@ -1,9 +1,13 @@
-// Sorting (key, value) pairs of 32-bit integers by key, stably: a least
-// significant digit radix sort over the pairs packed into 64-bit words, 8 bits
-// per pass (256 write streams, few enough for the TLB and the store buffers),
-// skipping passes whose digit is the same for every key, in memory backed by
-// huge pages where the OS offers them (or lent by the caller). On one thread
-// every digit is counted while the keys are packed. Internal to the library.
+// Sorting (key, value) pairs of 32-bit integers by key, stably: a radix sort
+// over the pairs packed into 64-bit words, 8 bits per pass (256 write streams,
+// few enough for the TLB and the store buffers), skipping passes whose digit
+// is the same for every key, in memory backed by huge pages where the OS
+// offers them (or lent by the caller). Every digit is counted while the keys
+// are packed. On one thread the passes go from the least significant digit
+// up; on several, the highest digit that varies splits the keys into 256
+// buckets first, and each bucket is then sorted on its own from its least
+// significant digit up, the buckets taken as they come by the threads.
+// Internal to the library.
 #pragma once
 
 #include "support/scratch_vector.hpp"

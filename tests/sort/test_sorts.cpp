@@ -95,6 +95,35 @@ TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) 
     }
 }
 
+/// Two runs for merge_by_key, each sorted by (key, value), and their merge.
+struct two_runs {
+    std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
+    keyed want;
+};
+
+/// The first a_n of `n` random pairs as one run, the rest as the other.
+two_runs runs_of(std::size_t a_n, std::size_t b_n, unsigned key_bits, std::uint64_t seed) {
+    std::vector<std::uint32_t> keys, values;
+    random_input(a_n + b_n, key_bits, seed, keys, values);
+    keyed a(a_n), b(b_n);
+    for (std::size_t i = 0; i < a_n + b_n; ++i) {
+        (i < a_n ? a[i] : b[i - a_n]) = {keys[i], values[i]};
+    }
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    two_runs out;
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out.want));
+    for (const auto& [k, v] : a) {
+        out.a_keys.push_back(k);
+        out.a_values.push_back(v);
+    }
+    for (const auto& [k, v] : b) {
+        out.b_keys.push_back(k);
+        out.b_values.push_back(v);
+    }
+    return out;
+}
+
 TEST(merge_by_key, equals_a_merge_by_key_then_value_on_one_to_four_threads) {
     // Two runs sorted by (key, value), with keys shared between them and
     // long runs of one key (few key bits), one run empty or both of very
@@ -105,30 +134,12 @@ TEST(merge_by_key, equals_a_merge_by_key_then_value_on_one_to_four_threads) {
     };
     for (const sizes z : {sizes{0, 0, 8}, sizes{0, 5000, 8}, sizes{70000, 0, 12}, sizes{100000, 30000, 6},
                           sizes{20000, 150000, 16}, sizes{90000, 90000, 2}}) {
-        std::vector<std::uint32_t> keys, values;
-        random_input(z.a + z.b, z.key_bits, z.a + 3 * z.b + z.key_bits, keys, values);
-        keyed a(z.a), b(z.b);
-        for (std::size_t i = 0; i < z.a + z.b; ++i) {
-            (i < z.a ? a[i] : b[i - z.a]) = {keys[i], values[i]};
-        }
-        std::sort(a.begin(), a.end());
-        std::sort(b.begin(), b.end());
-        keyed want;
-        std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(want));
-        std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
-        for (const auto& [k, v] : a) {
-            a_keys.push_back(k);
-            a_values.push_back(v);
-        }
-        for (const auto& [k, v] : b) {
-            b_keys.push_back(k);
-            b_values.push_back(v);
-        }
+        const two_runs r = runs_of(z.a, z.b, z.key_bits, z.a + 3 * z.b + z.key_bits);
         for (const std::size_t parts : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
             std::vector<std::uint32_t> out_keys(z.a + z.b, 7), out_values(z.a + z.b, 7);
-            obbsat::detail::merge_by_key(a_keys.data(), a_values.data(), z.a, b_keys.data(), b_values.data(), z.b,
-                                         out_keys.data(), out_values.data(), parts);
-            EXPECT_EQ(zipped(out_keys, out_values), want) << z.a << " + " << z.b << ", " << parts << " parts";
+            obbsat::detail::merge_by_key(r.a_keys.data(), r.a_values.data(), z.a, r.b_keys.data(), r.b_values.data(),
+                                         z.b, out_keys.data(), out_values.data(), parts);
+            EXPECT_EQ(zipped(out_keys, out_values), r.want) << z.a << " + " << z.b << ", " << parts << " parts";
         }
     }
 }
@@ -348,34 +359,17 @@ TEST(sorts_on_two_threads, cut_every_step_into_more_units_than_threads_with_the_
         EXPECT_NE(seen.most, 0u) << "radix_sort ran on no executor";
     }
     {
-        std::vector<std::uint32_t> keys, values;
-        random_input(200000, 12, 6, keys, values);
-        keyed a(120000), b(80000);
-        for (std::size_t i = 0; i < keys.size(); ++i) {
-            (i < a.size() ? a[i] : b[i - a.size()]) = {keys[i], values[i]};
-        }
-        std::sort(a.begin(), a.end());
-        std::sort(b.begin(), b.end());
-        keyed want;
-        std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(want));
-        std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
-        for (const auto& [k, v] : a) {
-            a_keys.push_back(k);
-            a_values.push_back(v);
-        }
-        for (const auto& [k, v] : b) {
-            b_keys.push_back(k);
-            b_values.push_back(v);
-        }
-        std::vector<std::uint32_t> out_keys(want.size()), out_values(want.size());
+        const two_runs r = runs_of(120000, 80000, 12, 6);
+        std::vector<std::uint32_t> out_keys(r.want.size()), out_values(r.want.size());
         units_seen seen;
         const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
         {
             const obbsat::detail::executor_scope scope(&last_first);
-            obbsat::detail::merge_by_key(a_keys.data(), a_values.data(), a.size(), b_keys.data(), b_values.data(),
-                                         b.size(), out_keys.data(), out_values.data(), threads);
+            obbsat::detail::merge_by_key(r.a_keys.data(), r.a_values.data(), r.a_keys.size(), r.b_keys.data(),
+                                         r.b_values.data(), r.b_keys.size(), out_keys.data(), out_values.data(),
+                                         threads);
         }
-        EXPECT_EQ(zipped(out_keys, out_values), want);
+        EXPECT_EQ(zipped(out_keys, out_values), r.want);
         EXPECT_GT(seen.fewest, threads) << "merge_by_key";
         EXPECT_NE(seen.most, 0u) << "merge_by_key ran on no executor";
     }

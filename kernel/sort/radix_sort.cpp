@@ -59,7 +59,9 @@ void sort_words(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsi
     std::uint64_t* from = words;
     std::uint64_t* to = buffer;
     for (unsigned d = 0; d < digits; ++d) {
-        digit_counts& next = counts[d];
+        // A copy of its own, which the scatter's stores cannot alias: the
+        // compiler then keeps no reload of a slot after each store.
+        digit_counts next = counts[d];
         std::size_t sum = 0;
         bool one_digit = false;
         for (std::size_t& slot : next) {
@@ -166,9 +168,12 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     }
     bucket_begin[digit_values] = n;
     run_units(units, threads, [&](std::size_t unit) {
-        digit_counts& next = counts[unit][first];
-        for (std::size_t i = begin_of(unit); i < begin_of(unit + 1); ++i) {
-            spare[next[digit_of(packed[i], first)]++] = packed[i];
+        digit_counts next = counts[unit][first];  // a copy of its own, as in sort_words
+        const std::uint64_t* const from = packed;
+        std::uint64_t* const to = spare;
+        const std::size_t end = begin_of(unit + 1);  // read once: the stores might alias what it reads
+        for (std::size_t i = begin_of(unit); i < end; ++i) {
+            to[next[digit_of(from[i], first)]++] = from[i];
         }
     });
     run_units(digit_values, threads, [&](std::size_t bucket) {

@@ -75,6 +75,19 @@ TEST(radix_sort, equals_a_stable_sort_on_one_thread_and_two) {
     }
 }
 
+TEST(radix_sort, on_two_threads_skips_high_digits_every_key_shares) {
+    // 32 key bits asked for, keys of 12 (two digits the same for all) or all
+    // one key: the split by the highest digit must take the highest that varies.
+    for (const unsigned used_bits : {12u, 0u}) {
+        std::vector<std::uint32_t> keys, values;
+        random_input(300000, used_bits, 17 + used_bits, keys, values);
+        const keyed want = stably_sorted(keys, values, 0);
+        obbsat::detail::radix_buffer packed, spare;
+        obbsat::detail::radix_sort(keys.data(), values.data(), keys.size(), 32, packed, spare, 2);
+        EXPECT_EQ(zipped(keys, values), want) << "keys of " << used_bits << " bits";
+    }
+}
+
 TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) {
     // The scene query lends the records' memory: n words for the packed keys
     // and n for the spare, here between words that must keep their values.

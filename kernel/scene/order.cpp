@@ -29,13 +29,15 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     }
     keys_.resize(n_);
     order_.resize(n_);
+    // The passes over the boxes are cut into units taken as they come (work_shares.hpp).
+    const std::size_t units = units_for(n_, parts, min_boxes_per_unit);
     // The repair needs this query's keys on the last grid (measure_extent).
     stats_.reused_order = keep_grid && keys_by_id_fresh_ && repair_order(parts);
     if (!stats_.reused_order && !keys_by_id_fresh_) {
         // measure_extent left each box's lo_x and lo_y, widened as the sweep
         // will widen them, in keys_ and order_ (as bits).
-        run_parts(parts, [&](std::size_t share) {
-            const auto [begin, end] = share_of(n_, share, parts);
+        run_units(units, parts, [&](std::size_t unit) {
+            const auto [begin, end] = share_of(n_, unit, units);
             for (std::size_t i = begin; i < end; ++i) {
                 float lo_x, lo_y;
                 std::memcpy(&lo_x, &keys_[i], sizeof(float));
@@ -65,8 +67,8 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
         }
         radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts);
     } else if (!stats_.reused_order) {
-        run_parts(parts, [&](std::size_t share) {
-            const auto [begin, end] = share_of(n_, share, parts);
+        run_units(units, parts, [&](std::size_t unit) {
+            const auto [begin, end] = share_of(n_, unit, units);
             bounds_run b;
             for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
                 const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
@@ -95,11 +97,14 @@ bool pair_search::repair_order(std::size_t parts) {
     // are repaired there, strip by strip, the strips split between the
     // threads; those that changed strips are sorted apart; the two are then
     // merged. keys_ still holds the last query's keys, in its order.
+    // Every pass is cut into units taken as they come (work_shares.hpp),
+    // the same units in the passes that hand each other counts.
     const unsigned q_bits = grid_.q_bits;
+    const std::size_t units = units_for(n_, parts, min_boxes_per_unit);
     changed_strip_.resize(n_);
-    std::vector<std::size_t> changed_before(parts + 1, 0);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    std::vector<std::size_t> changed_before(units + 1, 0);
+    run_units(units, parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, units);
         std::size_t changed = 0;
         for (std::size_t k = begin; k < end; ++k) {
             const std::uint32_t key = key_by_id_[order_[k]];
@@ -111,7 +116,7 @@ bool pair_search::repair_order(std::size_t parts) {
         changed_before[share + 1] = changed;
     });
     std::partial_sum(changed_before.begin(), changed_before.end(), changed_before.begin());
-    const std::size_t changed = changed_before[parts];
+    const std::size_t changed = changed_before[units];
     const std::size_t stayed = n_ - changed;
     stay_keys_.resize(stayed);
     stay_ids_.resize(stayed);
@@ -120,10 +125,10 @@ bool pair_search::repair_order(std::size_t parts) {
     // The rectangles that stayed are in the order of their strips already,
     // as each share checks (and the shares' ends against each other): the
     // strips are found by position below.
-    std::vector<std::uint32_t> first_strip(parts, 0), last_strip(parts, 0);
-    std::vector<unsigned char> in_strip_order(parts, 1);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    std::vector<std::uint32_t> first_strip(units, 0), last_strip(units, 0);
+    std::vector<unsigned char> in_strip_order(units, 1);
+    run_units(units, parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, units);
         std::size_t m = changed_before[share];
         std::size_t s = begin - m;
         const std::size_t share_first = s;
@@ -148,8 +153,8 @@ bool pair_search::repair_order(std::size_t parts) {
         in_strip_order[share] = static_cast<unsigned char>(ordered);
     });
     std::uint32_t last_so_far = 0;
-    for (std::size_t share = 0; share < parts; ++share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    for (std::size_t share = 0; share < units; ++share) {
+        const auto [begin, end] = share_of(n_, share, units);
         const bool stayers = end - begin > changed_before[share + 1] - changed_before[share];
         if (in_strip_order[share] == 0 || (stayers && first_strip[share] < last_so_far)) {
             return false;
@@ -157,14 +162,14 @@ bool pair_search::repair_order(std::size_t parts) {
         last_so_far = stayers ? last_strip[share] : last_so_far;
     }
     std::vector<std::uint32_t> strip_begin(grid_.strips + 1);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(stayed, share, parts);
+    run_units(units, parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(stayed, share, units);
         bucket_starts(stay_keys_.data(), stayed, q_bits, grid_.strips, begin, end, strip_begin.data());
     });
-    std::vector<unsigned char> repaired(parts, 1);
-    run_parts(parts, [&](std::size_t share) {
-        const std::size_t first = grid_.strips * share / parts;
-        const std::size_t last = grid_.strips * (share + 1) / parts;
+    std::vector<unsigned char> repaired(units, 1);
+    run_units(units, parts, [&](std::size_t share) {
+        const std::size_t first = grid_.strips * share / units;
+        const std::size_t last = grid_.strips * (share + 1) / units;
         const std::size_t begin = strip_begin[first];
         const std::size_t end = strip_begin[last];
         std::size_t budget = 16 * (end - begin);

@@ -1,6 +1,7 @@
 // Step 3 of the scene query (pair_search.hpp): the visits of rectangles taller than their strip to the strips above.
 #include "scene/pair_search.hpp"
 
+#include "scene/search_common.hpp"
 #include "sort/radix_sort.hpp"
 #include "support/work_shares.hpp"
 
@@ -16,8 +17,9 @@ void pair_search::collect_visits(std::size_t parts) {
     // rectangle. The rectangles are in key order, so the visits to the strip
     // just above each one's lowest ("near" visits, most of them) come out in
     // that order already; only the others ("far" visits, of rectangles taller
-    // than a strip) are radix sorted, and then merged in. Each share counts
-    // its visits, then writes them after the shares before it.
+    // than a strip) are radix sorted, and then merged in. Each unit counts
+    // its visits, then writes them after the units before it; the units are
+    // taken as they come (work_shares.hpp), and the same in both passes.
     //
     // A rectangle's lowest strip (its key) comes from the order's read of the
     // rows, its highest (strip_hi_) from the copy's. Rows the caller changes
@@ -27,9 +29,10 @@ void pair_search::collect_visits(std::size_t parts) {
     // counted.
     const std::uint32_t strips = grid_.strips;
     const unsigned q_bits = grid_.q_bits;
-    std::vector<std::size_t> first_near(parts + 1, 0), first_far(parts + 1, 0);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    const std::size_t units = units_for(n_, parts, min_boxes_per_unit);
+    std::vector<std::size_t> first_near(units + 1, 0), first_far(units + 1, 0);
+    run_units(units, parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, units);
         std::size_t near = 0, far = 0;
         for (std::size_t k = begin; k < end; ++k) {
             const std::uint32_t low = keys_[k] >> q_bits;
@@ -41,12 +44,12 @@ void pair_search::collect_visits(std::size_t parts) {
         first_near[share + 1] = near;
         first_far[share + 1] = far;
     });
-    for (std::size_t share = 0; share < parts; ++share) {
+    for (std::size_t share = 0; share < units; ++share) {
         first_near[share + 1] += first_near[share];
         first_far[share + 1] += first_far[share];
     }
-    const std::size_t far_count = first_far[parts];
-    const std::size_t near_count = first_near[parts];
+    const std::size_t far_count = first_far[units];
+    const std::size_t near_count = first_near[units];
     const std::size_t visits = far_count + near_count;
     // One more entry after the last visit, for the sweep's merge to read.
     // With no far visits the near ones are the visits; otherwise they go to
@@ -62,9 +65,9 @@ void pair_search::collect_visits(std::size_t parts) {
     std::uint32_t* const near_keys = far_count > 0 ? near_keys_.data() : visit_keys_.data();
     std::uint32_t* const near_ids = far_count > 0 ? near_ids_.data() : visit_ids_.data();
     own_begin_.resize(strips + 1);
-    std::vector<unsigned char> near_sorted(parts, 1);
-    run_parts(parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, parts);
+    std::vector<unsigned char> near_sorted(units, 1);
+    run_units(units, parts, [&](std::size_t share) {
+        const auto [begin, end] = share_of(n_, share, units);
         bucket_starts(keys_.data(), n_, q_bits, strips, begin, end, own_begin_.data());
         std::size_t v = first_near[share];
         const std::size_t v_end = first_near[share + 1];
@@ -107,7 +110,7 @@ void pair_search::collect_visits(std::size_t parts) {
     // quantized lo_x agree, as they are computed from the same bounds; if
     // they ever did not, every visit is sorted, which gives the same order.
     bool merge = std::find(near_sorted.begin(), near_sorted.end(), 0) == near_sorted.end();
-    for (std::size_t share = 1; share < parts && merge; ++share) {
+    for (std::size_t share = 1; share < units && merge; ++share) {
         const std::size_t at = first_near[share];
         merge = at == 0 || at == near_count || near_keys[at - 1] <= near_keys[at];
     }
@@ -130,8 +133,9 @@ void pair_search::collect_visits(std::size_t parts) {
     visit_ids_[visits] = 0;
     visit_begin_.assign(strips + 1, 0);
     if (visits > 0) {
-        run_parts(parts, [&](std::size_t share) {
-            const auto [begin, end] = share_of(visits, share, parts);
+        const std::size_t visit_units = units_for(visits, parts, min_entries_per_unit);
+        run_units(visit_units, parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(visits, share, visit_units);
             bucket_starts(visit_keys_.data(), visits, q_bits, strips, begin, end, visit_begin_.data());
         });
     }

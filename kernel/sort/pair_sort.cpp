@@ -111,18 +111,23 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
     if (n == 0) {
         return;
     }
-    const auto run = [](std::size_t parts, const std::function<void(std::size_t)>& task) {
-        if (parts <= 1) {
+    // Threads: one a source. Both passes are cut into units taken as they
+    // come (work_shares.hpp), a few a thread, so that a thread slowed by
+    // other work on its core takes fewer; what each unit writes is fixed by
+    // the units before it, never by which thread took it.
+    const std::size_t threads = std::max<std::size_t>(1, sources.size());
+    const auto run = [threads](std::size_t units, const std::function<void(std::size_t)>& task) {
+        if (units <= 1) {
             task(0);
         } else {
-            run_parts(parts, task);
+            run_units(units, threads, task);
         }
     };
     const unsigned a_bits = bits_for(a_count > 0 ? a_count - 1 : 0);
     const unsigned high_shift = a_bits > bucket_bits ? a_bits - bucket_bits : 0;
     const std::size_t buckets = (a_count > 0 ? (a_count - 1) >> high_shift : 0) + 1;
     // Pass 1: the pairs of all sources, taken one after the other, split
-    // into equal shares, one a thread (sources may differ in size: a mixed
+    // into equal shares, a few a thread (sources may differ in size: a mixed
     // scene's strips do), each share scattered by the high bits of a after
     // the same bucket's pairs of the shares before it.
     std::vector<pair_span<Pair>> spans;
@@ -133,7 +138,8 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
             }
         }
     }
-    const std::size_t shares = std::max<std::size_t>(1, std::min(sources.size(), n / 4096));
+    const std::size_t shares =
+        units_for(n, std::max<std::size_t>(1, std::min(threads, n / 4096)), 4096);
     // Calls f(pair) for pairs [n * share / shares, n * (share + 1) / shares) of the spans in turn.
     const auto for_share = [&](std::size_t share, const auto& f) {
         const std::size_t first = n * share / shares;
@@ -183,10 +189,15 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
         Pair* const to = out.data();
         for_share(share, [&](const Pair& p) { to[slot[p.a >> high_shift]++] = p; });
     });
-    // Pass 2: each bucket on its own, the buckets split between the threads
-    // by the pairs they hold: a is the smaller index of a pair, so low
-    // buckets hold more (the lower half of the indices about three quarters).
-    const std::size_t parts = std::max<std::size_t>(1, std::min(scratch.size(), n / 65536));
+    // Pass 2: each bucket on its own, the buckets split into units by the
+    // pairs they hold: a is the smaller index of a pair, so low buckets hold
+    // more (the lower half of the indices about three quarters). Each unit
+    // has working memory of its own.
+    const std::size_t parts =
+        units_for(n, std::max<std::size_t>(1, std::min(threads, n / 65536)), 16384);
+    if (scratch.size() < parts) {
+        scratch.resize(parts);
+    }
     std::vector<std::size_t> first_bucket(parts + 1, buckets);
     for (std::size_t part = 0, k = 0; part < parts; ++part) {
         while (k < buckets && begin[k] < n * part / parts) {

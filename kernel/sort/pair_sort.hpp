@@ -39,10 +39,11 @@ template <class Pair>
 using pair_source = std::vector<pair_span<Pair>>;
 
 /// Every pair of every source, sorted by a then b, into `out`; every a must
-/// be < a_count. As many threads of the shared pool as there are sources
-/// scatter equal shares of all the pairs; the buckets are then sorted by
-/// scratch.size() threads. Pair is pair_index or
-/// tagged_pair; equal (a, b) keep no particular order.
+/// be < a_count. Up to as many threads as there are sources scatter shares of
+/// all the pairs, then sort the buckets, both cut into units taken as they
+/// come (work_shares.hpp); `scratch` grows to one entry a unit of the
+/// buckets. Pair is pair_index or tagged_pair; equal (a, b) keep no
+/// particular order.
 template <class Pair>
 void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_count, std::vector<Pair>& out,
                 std::vector<pair_sort_scratch<Pair>>& scratch);

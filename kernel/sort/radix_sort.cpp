@@ -13,6 +13,76 @@ namespace {
 
 constexpr unsigned digit_bits = 8;
 constexpr std::size_t digit_values = std::size_t{1} << digit_bits;
+constexpr unsigned max_passes = 32 / digit_bits;
+
+// Keys below which a second thread costs more than it saves, and the fewest
+// keys a unit of the first pass takes.
+constexpr std::size_t min_per_part = 32768;
+constexpr std::size_t min_per_unit = 8192;
+
+using digit_counts = std::array<std::size_t, digit_values>;
+using all_digit_counts = std::array<digit_counts, max_passes>;
+
+/// Digit `d` of a packed word: the key's bits [8d, 8d + 8).
+inline std::size_t digit_of(std::uint64_t word, unsigned d) {
+    return static_cast<std::size_t>(word >> (32 + d * digit_bits)) & (digit_values - 1);
+}
+
+/// Counts digits [0, digits) of words[0, n) into `counts` (added to it).
+void count_digits(const std::uint64_t* words, std::size_t n, unsigned digits, all_digit_counts& counts) {
+    for (std::size_t i = 0; i < n; ++i) {
+        for (unsigned d = 0; d < digits; ++d) {
+            ++counts[d][digit_of(words[i], d)];
+        }
+    }
+}
+
+/// Packs keys[i] and values[i] into words[i], key in the high half, and
+/// counts digits [0, digits) of the keys into `counts` (added to it) on the way.
+void pack_and_count(const std::uint32_t* keys, const std::uint32_t* values, std::size_t n, unsigned digits,
+                    std::uint64_t* words, all_digit_counts& counts) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t key = keys[i];
+        words[i] = (std::uint64_t{key} << 32) | values[i];
+        for (unsigned d = 0; d < digits; ++d) {
+            ++counts[d][(key >> (d * digit_bits)) & (digit_values - 1)];
+        }
+    }
+}
+
+/// Sorts the packed words[0, n) stably by digits [0, digits) of their keys,
+/// one pass a digit through `buffer` (n words), skipping a digit all of them
+/// share; `counts` holds each digit's counts over them. Then writes the keys
+/// and values back, in their order.
+void sort_words(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsigned digits, all_digit_counts& counts,
+                std::uint32_t* keys, std::uint32_t* values) {
+    std::uint64_t* from = words;
+    std::uint64_t* to = buffer;
+    for (unsigned d = 0; d < digits; ++d) {
+        // A copy of its own, which the scatter's stores cannot alias: the
+        // compiler then keeps no reload of a slot after each store.
+        digit_counts next = counts[d];
+        std::size_t sum = 0;
+        bool one_digit = false;
+        for (std::size_t& slot : next) {
+            const std::size_t here = slot;
+            one_digit = one_digit || here == n;
+            slot = sum;
+            sum += here;
+        }
+        if (one_digit) {
+            continue;  // every key has this digit: the pass would move nothing
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            to[next[digit_of(from[i], d)]++] = from[i];
+        }
+        std::swap(from, to);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
+        values[i] = static_cast<std::uint32_t>(from[i]);
+    }
+}
 
 }  // namespace
 
@@ -35,85 +105,83 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     if (n < 2) {
         return;
     }
-    parts = std::max<std::size_t>(1, std::min(parts, n / 32768));
     key_bits = std::min(key_bits, 32u);  // the keys have no more
-    std::uint64_t* from = packed;
-    std::uint64_t* to = spare;
-    const auto run = [parts](const std::function<void(std::size_t)>& task) {
-        if (parts == 1) {
-            task(0);
-        } else {
-            run_parts(parts, task);
-        }
-    };
-    const auto begin_of = [n, parts](std::size_t part) { return n * part / parts; };
-    // On one thread the counts of every digit are taken as the keys are
-    // packed: a digit's count over all keys does not depend on their order,
-    // so no pass needs a read of its own to count. With several parts each
-    // part counts the share it holds at the start of each pass.
-    constexpr unsigned max_passes = 32 / digit_bits;
-    const unsigned passes = std::min(max_passes, (key_bits + digit_bits - 1) / digit_bits);
-    std::array<std::array<std::size_t, digit_values>, max_passes> counted{};
-    if (parts == 1) {
-        std::uint64_t* const out = from;
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t key = keys[i];
-            out[i] = (std::uint64_t{key} << 32) | values[i];
-            for (unsigned d = 0; d < passes; ++d) {
-                ++counted[d][(key >> (d * digit_bits)) & (digit_values - 1)];
-            }
-        }
-    } else {
-        run([&](std::size_t part) {
-            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
-                from[i] = (std::uint64_t{keys[i]} << 32) | values[i];
-            }
-        });
+    const unsigned digits = (key_bits + digit_bits - 1) / digit_bits;
+    const std::size_t threads = std::max<std::size_t>(1, std::min(parts, n / min_per_part));
+    if (threads == 1) {
+        // Every digit is counted as the keys are packed: a digit's count over
+        // all keys does not depend on their order, so no pass needs a read
+        // of its own to count.
+        all_digit_counts counts{};
+        pack_and_count(keys, values, n, digits, packed, counts);
+        sort_words(packed, spare, n, digits, counts, keys, values);
+        return;
     }
-    // count[part][digit]: each part counts its own share, then scatters it to
-    // the slots after every lower digit and after the same digit of lower parts,
-    // which keeps the sort stable.
-    std::vector<std::array<std::size_t, digit_values>> count(parts);
-    for (unsigned shift = 32; shift < 32 + key_bits; shift += digit_bits) {
-        if (parts == 1) {
-            count[0] = counted[(shift - 32) / digit_bits];
-        } else {
-            run([&](std::size_t part) {
-                std::array<std::size_t, digit_values>& c = count[part];
-                c.fill(0);
-                for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
-                    ++c[(from[i] >> shift) & (digit_values - 1)];
-                }
-            });
-        }
-        std::size_t sum = 0;
-        bool one_digit = false;
-        for (std::size_t d = 0; d < digit_values; ++d) {
-            std::size_t of_digit = 0;
-            for (std::size_t part = 0; part < parts; ++part) {
-                const std::size_t here = count[part][d];
-                count[part][d] = sum;
-                sum += here;
-                of_digit += here;
+    // On several threads the highest digit that varies goes first (most
+    // significant digit first): units of the keys, taken as they come
+    // (work_shares.hpp), pack their slice and count its digits, then scatter
+    // it by that digit after the same digit of the slices before it. Each of
+    // the 256 buckets this leaves, small enough for the caches, is then a
+    // unit of its own, sorted by the lower digits (least significant first,
+    // its counts taken in one read) and written back. Every step is stable,
+    // so the order does not depend on the units or on who took them; no step
+    // makes both threads wait for equal shares.
+    const std::size_t units = units_for(n, threads, min_per_unit);
+    const auto begin_of = [n, units](std::size_t unit) { return n * unit / units; };
+    std::vector<all_digit_counts> counts(units);
+    run_units(units, threads, [&](std::size_t unit) {
+        const std::size_t begin = begin_of(unit);
+        counts[unit] = all_digit_counts{};
+        pack_and_count(keys + begin, values + begin, begin_of(unit + 1) - begin, digits, packed + begin, counts[unit]);
+    });
+    // The highest digit whose keys differ: those above it are the same for every key.
+    unsigned top = digits;
+    while (top > 0) {
+        const std::size_t d = top - 1;
+        bool varies = true;
+        for (std::size_t v = 0; v < digit_values && varies; ++v) {
+            std::size_t of_value = 0;
+            for (const all_digit_counts& c : counts) {
+                of_value += c[d][v];
             }
-            one_digit = one_digit || of_digit == n;
+            varies = of_value != n;
         }
-        if (one_digit) {
-            continue;  // every key has this digit: the pass would move nothing
+        if (varies) {
+            break;
         }
-        run([&](std::size_t part) {
-            std::array<std::size_t, digit_values>& c = count[part];
-            for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
-                to[c[(from[i] >> shift) & (digit_values - 1)]++] = from[i];
-            }
-        });
-        std::swap(from, to);
+        --top;
     }
-    run([&](std::size_t part) {
-        for (std::size_t i = begin_of(part); i < begin_of(part + 1); ++i) {
-            keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
-            values[i] = static_cast<std::uint32_t>(from[i]);
+    if (top == 0) {
+        return;  // every key the same: the input is its own stable order
+    }
+    const unsigned first = top - 1;
+    // bucket_begin[v]: the first slot of the keys whose first digit is v.
+    std::vector<std::size_t> bucket_begin(digit_values + 1, 0);
+    std::size_t sum = 0;
+    for (std::size_t v = 0; v < digit_values; ++v) {
+        bucket_begin[v] = sum;
+        for (all_digit_counts& c : counts) {
+            const std::size_t here = c[first][v];
+            c[first][v] = sum;
+            sum += here;
         }
+    }
+    bucket_begin[digit_values] = n;
+    run_units(units, threads, [&](std::size_t unit) {
+        digit_counts next = counts[unit][first];  // a copy of its own, as in sort_words
+        const std::uint64_t* const from = packed;
+        std::uint64_t* const to = spare;
+        const std::size_t end = begin_of(unit + 1);  // read once: the stores might alias what it reads
+        for (std::size_t i = begin_of(unit); i < end; ++i) {
+            to[next[digit_of(from[i], first)]++] = from[i];
+        }
+    });
+    run_units(digit_values, threads, [&](std::size_t bucket) {
+        const std::size_t begin = bucket_begin[bucket];
+        const std::size_t size = bucket_begin[bucket + 1] - begin;
+        all_digit_counts lower{};
+        count_digits(spare + begin, size, first, lower);
+        sort_words(spare + begin, packed + begin, size, first, lower, keys + begin, values + begin);
     });
 }
 
@@ -140,9 +208,11 @@ void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, st
     // Share s takes the entries of both runs whose keys lie from its split
     // key up to the next one, and writes them after the entries of both runs
     // before its split key: the shares write apart and at the same time.
-    // The split keys are taken from the longer run, at equal steps.
+    // The split keys are taken from the longer run, at equal steps. The
+    // shares are units taken as they come (work_shares.hpp), a few a thread.
     constexpr std::size_t least_share = 16384;
-    const std::size_t shares = std::max<std::size_t>(1, std::min(parts, (a_n + b_n) / least_share));
+    const std::size_t threads = std::max<std::size_t>(1, std::min(parts, (a_n + b_n) / least_share));
+    const std::size_t shares = units_for(a_n + b_n, threads, least_share / 2);
     std::vector<std::size_t> a_at(shares + 1), b_at(shares + 1);
     a_at[0] = b_at[0] = 0;
     a_at[shares] = a_n;
@@ -172,7 +242,7 @@ void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, st
         std::copy(b_keys + j, b_keys + j_end, out_keys + out);
         std::copy(b_values + j, b_values + j_end, out_values + out);
     };
-    run_parts(shares, merge_share);  // on this thread alone for one share
+    run_units(shares, threads, merge_share);  // on this thread alone for one share
 }
 
 bool repair_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, std::size_t move_budget,

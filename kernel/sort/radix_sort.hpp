@@ -1,9 +1,13 @@
-// Sorting (key, value) pairs of 32-bit integers by key, stably: a least
-// significant digit radix sort over the pairs packed into 64-bit words, 8 bits
-// per pass (256 write streams, few enough for the TLB and the store buffers),
-// skipping passes whose digit is the same for every key, in memory backed by
-// huge pages where the OS offers them (or lent by the caller). On one thread
-// every digit is counted while the keys are packed. Internal to the library.
+// Sorting (key, value) pairs of 32-bit integers by key, stably: a radix sort
+// over the pairs packed into 64-bit words, 8 bits per pass (256 write streams,
+// few enough for the TLB and the store buffers), skipping passes whose digit
+// is the same for every key, in memory backed by huge pages where the OS
+// offers them (or lent by the caller). Every digit is counted while the keys
+// are packed. On one thread the passes go from the least significant digit
+// up; on several, the highest digit that varies splits the keys into 256
+// buckets first, and each bucket is then sorted on its own from its least
+// significant digit up, the buckets taken as they come by the threads.
+// Internal to the library.
 #pragma once
 
 #include "support/scratch_vector.hpp"
@@ -19,8 +23,8 @@ using radix_buffer = scratch_records<std::uint64_t>;
 
 /// Sorts keys[0, n) and values[0, n) together by key, stably; `key_bits` is
 /// the number of low bits that can be non-zero. `packed` and `spare` are
-/// grown to n. Each pass is split over up to `parts` threads of the shared
-/// pool; the result does not depend on how many.
+/// grown to n. Each pass is cut into units taken as they come by up to
+/// `parts` threads (work_shares.hpp); the result does not depend on how many.
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
                 radix_buffer& spare, std::size_t parts = 1);
 
@@ -42,9 +46,9 @@ void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std
 /// by key, into out_keys/out_values[0, a_n + b_n), sorted by key; of two
 /// equal keys, a's comes first if its value is at most b's, so two runs
 /// sorted by (key, value) merge sorted by (key, value). The output overlaps
-/// neither run. Shares split by key run on up to `parts` threads of the
-/// shared pool (at least 16384 entries each); the result does not depend on
-/// how many.
+/// neither run. Shares split by key are units taken as they come by up to
+/// `parts` threads (work_shares.hpp; a second thread for at least 16384
+/// entries); the result does not depend on how many.
 void merge_by_key(const std::uint32_t* a_keys, const std::uint32_t* a_values, std::size_t a_n,
                   const std::uint32_t* b_keys, const std::uint32_t* b_values, std::size_t b_n,
                   std::uint32_t* out_keys, std::uint32_t* out_values, std::size_t parts);

@@ -163,6 +163,31 @@ TEST(find_pairs_executor, find_pairs_gives_the_pairs_of_one_thread_on_every_exec
     EXPECT_GT(executors.threaded.ranges.load(), 0u);
 }
 
+/// Every item a range of its own, in order; keeps the fewest items of a task.
+void* enqueue_counting(executor_task task, std::size_t count, std::size_t, void* task_context, void* user) {
+    auto& fewest = *static_cast<std::size_t*>(user);
+    fewest = std::min(fewest, count);
+    for (std::size_t i = 0; i < count; ++i) {
+        task(i, i + 1, task_context);
+    }
+    return nullptr;
+}
+
+TEST(find_pairs_executor, a_query_on_two_threads_cuts_every_step_into_more_units_than_threads) {
+    // A step cut one share a thread makes the thread with a busy core hold
+    // the other back; every step of find_pairs (bounds, keys, sort, visits,
+    // copy, sweep, the answer's sort) is cut into units taken as they come.
+    for (const auto sizes : {obbsat::scene_sizes::uniform, obbsat::scene_sizes::mixed}) {
+        const std::vector<rect_pose> boxes = scene(300000, sizes, 9);
+        const std::vector<pair_index> want = obbsat::find_pairs(boxes, on(nullptr, 1));
+        std::size_t fewest = std::numeric_limits<std::size_t>::max();
+        const executor counting{&enqueue_counting, &finish_nothing, &fewest};
+        EXPECT_TRUE(same_pairs(obbsat::find_pairs(boxes, on(&counting, 2)), want)) << obbsat::scene_sizes_name(sizes);
+        ASSERT_NE(fewest, std::numeric_limits<std::size_t>::max()) << "no step ran on the executor";
+        EXPECT_GT(fewest, 2u) << "a step of " << obbsat::scene_sizes_name(sizes) << " cut into as many units as threads";
+    }
+}
+
 TEST(find_pairs_executor, a_query_across_two_sets_gives_the_same_pairs_on_every_executor) {
     const std::vector<rect_pose> a = scene(120000, obbsat::scene_sizes::mixed, 11);
     const std::vector<rect_pose> b = scene(90000, obbsat::scene_sizes::mixed, 12, 5.0);

@@ -2,11 +2,15 @@
 // thread and split over two (the same result either way, equal keys in their
 // input order), in its own buffers and in memory the caller lends, merge_by_key against std::merge in shares split by key, and
 // repair_sort on nearly sorted input and past its move budget; bucket_starts
-// against prefix counts; sort_pairs against std::sort by (a, b).
+// against prefix counts; sort_pairs against std::sort by (a, b). On two
+// threads every step of the sorts is cut into more units than threads, taken
+// in any order, with the answer of one thread.
 #include "sort/pair_sort.hpp"
 #include "sort/radix_sort.hpp"
+#include "support/executor_scope.hpp"
 
 #include <obbsat/collide.hpp>
+#include <obbsat/executor.hpp>
 #include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -14,6 +18,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -70,6 +75,19 @@ TEST(radix_sort, equals_a_stable_sort_on_one_thread_and_two) {
     }
 }
 
+TEST(radix_sort, on_two_threads_skips_high_digits_every_key_shares) {
+    // 32 key bits asked for, keys of 12 (two digits the same for all) or all
+    // one key: the split by the highest digit must take the highest that varies.
+    for (const unsigned used_bits : {12u, 0u}) {
+        std::vector<std::uint32_t> keys, values;
+        random_input(300000, used_bits, 17 + used_bits, keys, values);
+        const keyed want = stably_sorted(keys, values, 0);
+        obbsat::detail::radix_buffer packed, spare;
+        obbsat::detail::radix_sort(keys.data(), values.data(), keys.size(), 32, packed, spare, 2);
+        EXPECT_EQ(zipped(keys, values), want) << "keys of " << used_bits << " bits";
+    }
+}
+
 TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) {
     // The scene query lends the records' memory: n words for the packed keys
     // and n for the spare, here between words that must keep their values.
@@ -90,6 +108,35 @@ TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) 
     }
 }
 
+/// Two runs for merge_by_key, each sorted by (key, value), and their merge.
+struct two_runs {
+    std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
+    keyed want;
+};
+
+/// The first a_n of `n` random pairs as one run, the rest as the other.
+two_runs runs_of(std::size_t a_n, std::size_t b_n, unsigned key_bits, std::uint64_t seed) {
+    std::vector<std::uint32_t> keys, values;
+    random_input(a_n + b_n, key_bits, seed, keys, values);
+    keyed a(a_n), b(b_n);
+    for (std::size_t i = 0; i < a_n + b_n; ++i) {
+        (i < a_n ? a[i] : b[i - a_n]) = {keys[i], values[i]};
+    }
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    two_runs out;
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out.want));
+    for (const auto& [k, v] : a) {
+        out.a_keys.push_back(k);
+        out.a_values.push_back(v);
+    }
+    for (const auto& [k, v] : b) {
+        out.b_keys.push_back(k);
+        out.b_values.push_back(v);
+    }
+    return out;
+}
+
 TEST(merge_by_key, equals_a_merge_by_key_then_value_on_one_to_four_threads) {
     // Two runs sorted by (key, value), with keys shared between them and
     // long runs of one key (few key bits), one run empty or both of very
@@ -100,30 +147,12 @@ TEST(merge_by_key, equals_a_merge_by_key_then_value_on_one_to_four_threads) {
     };
     for (const sizes z : {sizes{0, 0, 8}, sizes{0, 5000, 8}, sizes{70000, 0, 12}, sizes{100000, 30000, 6},
                           sizes{20000, 150000, 16}, sizes{90000, 90000, 2}}) {
-        std::vector<std::uint32_t> keys, values;
-        random_input(z.a + z.b, z.key_bits, z.a + 3 * z.b + z.key_bits, keys, values);
-        keyed a(z.a), b(z.b);
-        for (std::size_t i = 0; i < z.a + z.b; ++i) {
-            (i < z.a ? a[i] : b[i - z.a]) = {keys[i], values[i]};
-        }
-        std::sort(a.begin(), a.end());
-        std::sort(b.begin(), b.end());
-        keyed want;
-        std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(want));
-        std::vector<std::uint32_t> a_keys, a_values, b_keys, b_values;
-        for (const auto& [k, v] : a) {
-            a_keys.push_back(k);
-            a_values.push_back(v);
-        }
-        for (const auto& [k, v] : b) {
-            b_keys.push_back(k);
-            b_values.push_back(v);
-        }
+        const two_runs r = runs_of(z.a, z.b, z.key_bits, z.a + 3 * z.b + z.key_bits);
         for (const std::size_t parts : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
             std::vector<std::uint32_t> out_keys(z.a + z.b, 7), out_values(z.a + z.b, 7);
-            obbsat::detail::merge_by_key(a_keys.data(), a_values.data(), z.a, b_keys.data(), b_values.data(), z.b,
-                                         out_keys.data(), out_values.data(), parts);
-            EXPECT_EQ(zipped(out_keys, out_values), want) << z.a << " + " << z.b << ", " << parts << " parts";
+            obbsat::detail::merge_by_key(r.a_keys.data(), r.a_values.data(), z.a, r.b_keys.data(), r.b_values.data(),
+                                         z.b, out_keys.data(), out_values.data(), parts);
+            EXPECT_EQ(zipped(out_keys, out_values), r.want) << z.a << " + " << z.b << ", " << parts << " parts";
         }
     }
 }
@@ -301,6 +330,87 @@ TEST(repair_sort, sorts_nearly_sorted_input_and_gives_up_past_its_budget) {
     std::vector<std::uint32_t> all(ids.size());
     std::iota(all.begin(), all.end(), 0u);
     EXPECT_EQ(ids, all);
+}
+
+/// The units an executor was handed: the fewest and the most in one step.
+struct units_seen {
+    std::size_t fewest = std::numeric_limits<std::size_t>::max();
+    std::size_t most = 0;
+};
+
+/// Every unit a range of its own, the last first, before enqueue returns.
+void* enqueue_last_first(obbsat::executor_task task, std::size_t count, std::size_t, void* task_context,
+                         void* user) {
+    units_seen& seen = *static_cast<units_seen*>(user);
+    seen.fewest = std::min(seen.fewest, count);
+    seen.most = std::max(seen.most, count);
+    for (std::size_t item = count; item-- > 0;) {
+        task(item, item + 1, task_context);
+    }
+    return nullptr;
+}
+
+void finish_nothing(void*, void*) {}
+
+TEST(sorts_on_two_threads, cut_every_step_into_more_units_than_threads_with_the_answer_of_one) {
+    // A step split one share a thread would hand the executor 2 units; a
+    // thread slowed by other work on its core would then hold the other back.
+    constexpr std::size_t threads = 2;
+    {
+        std::vector<std::uint32_t> keys, values;
+        random_input(300000, 20, 5, keys, values);
+        const keyed want = stably_sorted(keys, values, 0);
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::radix_buffer packed, spare;
+            obbsat::detail::radix_sort(keys.data(), values.data(), keys.size(), 20, packed, spare, threads);
+        }
+        EXPECT_EQ(zipped(keys, values), want);
+        EXPECT_GT(seen.fewest, threads) << "radix_sort";
+        EXPECT_NE(seen.most, 0u) << "radix_sort ran on no executor";
+    }
+    {
+        const two_runs r = runs_of(120000, 80000, 12, 6);
+        std::vector<std::uint32_t> out_keys(r.want.size()), out_values(r.want.size());
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::merge_by_key(r.a_keys.data(), r.a_values.data(), r.a_keys.size(), r.b_keys.data(),
+                                         r.b_values.data(), r.b_keys.size(), out_keys.data(), out_values.data(),
+                                         threads);
+        }
+        EXPECT_EQ(zipped(out_keys, out_values), r.want);
+        EXPECT_GT(seen.fewest, threads) << "merge_by_key";
+        EXPECT_NE(seen.most, 0u) << "merge_by_key ran on no executor";
+    }
+    {
+        const auto input = random_pairs(300000, threads, 7);
+        std::vector<obbsat::detail::pair_source<obbsat::detail::tagged_pair>> lists;
+        std::vector<obbsat::detail::tagged_pair> want;
+        for (const auto& source : input) {
+            lists.push_back({{source.data(), source.size()}});
+            want.insert(want.end(), source.begin(), source.end());
+        }
+        std::sort(want.begin(), want.end(),
+                  [](const auto& x, const auto& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
+        std::vector<obbsat::detail::tagged_pair> got;
+        std::vector<obbsat::detail::pair_sort_scratch<obbsat::detail::tagged_pair>> scratch(threads);
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::sort_pairs(lists, 300000, got, scratch);
+        }
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t i = 0; i < want.size(); ++i) {
+            ASSERT_TRUE(got[i].a == want[i].a && got[i].b == want[i].b) << "pair " << i;
+        }
+        EXPECT_GT(seen.fewest, threads) << "sort_pairs";
+        EXPECT_NE(seen.most, 0u) << "sort_pairs ran on no executor";
+    }
 }
 
 }  // namespace

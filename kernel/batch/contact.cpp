@@ -4,6 +4,7 @@
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "store/finite_check.hpp"
+#include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
 
 #include <obbsat/contact.hpp>
@@ -31,6 +32,12 @@ constexpr std::size_t part_alignment = 64;
 constexpr std::size_t pose_row_floats = sizeof(rect_pose) / sizeof(float);
 constexpr std::size_t rect_floats = sizeof(rect) / sizeof(float);
 static_assert(pose_row_floats == 6 && rect_floats == 8, "rows are packed floats");
+
+/// The pose kernel of `table` for pair lists over a store of `bytes` of
+/// records: one that fetches nothing ahead when L2 holds the store.
+detail::contact_fn pose_kernel_for_store(const detail::contact_kernel_table& table, std::size_t bytes) {
+    return bytes <= detail::store_bytes_in_l2 ? table.poses_in_l2 : table.poses;
+}
 
 /// A float as the messages show it: its shortest round-trip-ish decimal form.
 std::string shown(float value) {
@@ -192,7 +199,9 @@ backend contact_pairs(const pose_records& poses, const pair_index* pairs, std::s
     require_poses_accepted(poses);
     require_indices(ran, poses.size(), pairs, count, "poses");
     const float* records = poses.data();
-    run_split(detail::contact_kernels_for(ran).poses, records, pose_records::record_floats, records,
+    run_split(pose_kernel_for_store(detail::contact_kernels_for(ran), poses.size() * sizeof(float) *
+                                                                          pose_records::record_floats),
+              records, pose_records::record_floats, records,
               pose_records::record_floats, pairs, count, out, options);
     return ran;
 }
@@ -207,7 +216,8 @@ backend contact_pairs(const rect_pose* poses, std::size_t pose_count, const pair
     require_poses_accepted(reinterpret_cast<const float*>(poses), pose_row_floats, pose_count);
     require_indices(ran, pose_count, pairs, count, "poses");
     const auto* rows = reinterpret_cast<const float*>(poses);
-    run_split(detail::contact_kernels_for(ran).poses, rows, pose_row_floats, rows, pose_row_floats, pairs, count,
+    run_split(pose_kernel_for_store(detail::contact_kernels_for(ran), pose_count * sizeof(rect_pose)), rows,
+              pose_row_floats, rows, pose_row_floats, pairs, count,
               out, options);
     return ran;
 }

@@ -24,7 +24,12 @@ using distance_fn = void (*)(const float* a, std::size_t a_stride, const float* 
                              const pair_index* pairs, std::size_t count, closest_points* out);
 
 struct contact_kernel_table {
-    contact_fn poses;    ///< records of at least six floats: cx, cy, hx, hy, c, s
+    /// Records of at least six floats: cx, cy, hx, hy, c, s; with pairs, the
+    /// records of the pairs ahead are asked into L2.
+    contact_fn poses;
+    /// As poses, for a store L2 holds (fetch_ahead.hpp's store_bytes_in_l2):
+    /// nothing is asked for ahead.
+    contact_fn poses_in_l2;
     contact_fn corners;  ///< records of eight floats: the corners UL, UR, LR, LL
     distance_fn distance_poses;
     distance_fn distance_corners;

@@ -55,7 +55,8 @@ const contact_kernel_table& table_for(backend resolved, type_list<Rows...>) {
 template <>
 const contact_kernel_table& contact_kernels_of<scalar_backend>() {
     static constexpr contact_kernel_table table{
-        contacts_one_by_one<rect_pose, pose_in>, contacts_one_by_one<rect, rect_in>,
+        contacts_one_by_one<rect_pose, pose_in>, contacts_one_by_one<rect_pose, pose_in>,
+        contacts_one_by_one<rect, rect_in>,
         distances_one_by_one<rect_pose, pose_in>, distances_one_by_one<rect, rect_in>};
     return table;
 }

@@ -99,14 +99,15 @@ OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* o
 /// at random: those of the pairs ahead, up to pair `fetchable` of the list,
 /// are asked into L2 (fetch_ahead.hpp), which costs two instructions a pair
 /// against a contact's hundreds and hides the reads of a store larger than
-/// the caches; records just read are not fetched again (fetchable 0).
-template <class Arch, std::size_t Fields, class Body>
+/// the caches; records just read are not fetched again (fetchable 0), nor
+/// any with Fetch none (a store the caches hold).
+template <class Arch, std::size_t Fields, pair_fetch Fetch = pair_fetch::into_l2, class Body>
 OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_stride, const float* b,
                                                  std::size_t b_stride, const pair_index* pairs, std::size_t count,
                                                  std::size_t fetchable, const Body& body) {
     using batch = lanes<Arch>;
     constexpr std::size_t width = batch::size;
-    constexpr std::size_t ahead = pairs_ahead<pair_fetch::into_l2>;
+    constexpr std::size_t ahead = pairs_ahead<Fetch>;
     const bool whole_records = a_stride == 8 && b_stride == 8;
     auto record_a = [&](std::size_t pair) { return a + 8 * (pairs != nullptr ? pairs[pair].a : pair); };
     auto record_b = [&](std::size_t pair) { return b + 8 * (pairs != nullptr ? pairs[pair].b : pair); };
@@ -142,10 +143,10 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_s
     };
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
-        if (pairs != nullptr && i + width + ahead <= fetchable) {
+        if (Fetch != pair_fetch::none && pairs != nullptr && i + width + ahead <= fetchable) {
             for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
-                fetch_into_l2(a + a_stride * pairs[k].a);
-                fetch_into_l2(b + b_stride * pairs[k].b);
+                fetch_record<Fetch>(a + a_stride * pairs[k].a);
+                fetch_record<Fetch>(b + b_stride * pairs[k].b);
             }
         }
         vector_at(i, width, [i](std::size_t lane) { return i + lane; });
@@ -174,8 +175,12 @@ void contact_batch(const float* a, std::size_t a_stride, const float* b, std::si
 /// whose best faces leave them within the margin, in full. Steps 5 to 8 cost
 /// more than half of a contact, and in a scene's candidate pairs most boxes
 /// are apart (two thirds of a typical scene's). Each pair's contact is
-/// computed by the same lanes either way, so the bits do not change.
-template <class Arch, std::size_t Fields>
+/// computed by the same lanes either way, so the bits do not change. Fetch
+/// into_l2 asks for the records of the pairs ahead (for_each_vector_of_pairs);
+/// none asks for nothing, for a store the caches hold: there the two
+/// prefetches a pair and their addresses cost a tenth of a contact (4K pairs
+/// over 2K poses: 16.3 against 14.7 us with AVX-512) and bring nothing.
+template <class Arch, std::size_t Fields, pair_fetch Fetch>
 void contact_pose_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
                         const pair_index* pairs, std::size_t count, float margin, contact* out) {
     constexpr std::size_t width = lanes<Arch>::size;
@@ -195,7 +200,7 @@ void contact_pose_batch(const float* a, std::size_t a_stride, const float* b, st
         const float* block_b = pairs != nullptr ? b : b + b_stride * begin;
         contact* block_out = out + begin;
         std::size_t near_count = 0;
-        for_each_vector_of_pairs<Arch, Fields>(
+        for_each_vector_of_pairs<Arch, Fields, Fetch>(
             block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
             [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
                 __attribute__((always_inline)) {
@@ -217,7 +222,7 @@ void contact_pose_batch(const float* a, std::size_t a_stride, const float* b, st
                         }
                     }
                 });
-        for_each_vector_of_pairs<Arch, Fields>(
+        for_each_vector_of_pairs<Arch, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,
             [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
                 __attribute__((always_inline)) {
@@ -252,7 +257,8 @@ void distance_batch(const float* a, std::size_t a_stride, const float* b, std::s
 /// The contact table of this ISA.
 template <class Arch>
 constexpr contact_kernel_table contact_table_of() {
-    return contact_kernel_table{contact_pose_batch<Arch, 6>, contact_batch<Arch, 8, true>,
+    return contact_kernel_table{contact_pose_batch<Arch, 6, pair_fetch::into_l2>,
+                                contact_pose_batch<Arch, 6, pair_fetch::none>, contact_batch<Arch, 8, true>,
                                 distance_batch<Arch, 6, false>, distance_batch<Arch, 8, true>};
 }
 

@@ -1,0 +1,118 @@
+// Each backend's two contact kernels over pose records (contact_kernel_table's
+// poses, which asks for the records of the pairs ahead into L2, and
+// poses_in_l2, which asks for nothing: contact_pairs picks it for a store L2
+// holds) must give the contact reference's contacts bit for bit, on pairs of a
+// scene that touch and overlap, in sweep-like runs and at random, of every
+// length up to a few vectors past a whole block of the two-pass driver, at
+// margin 0 and with a speculative margin.
+#include "dispatch/contact_kernel_table.hpp"
+
+#include <obbsat/backend.hpp>
+#include <obbsat/collide.hpp>
+#include <obbsat/contact_manifold.hpp>
+#include <obbsat/find_pairs.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/pose_records.hpp>
+#include <obbsat/pose_scene.hpp>
+#include <obbsat/ref/contact.hpp>
+#include <obbsat/scene.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using obbsat::contact;
+using obbsat::pair_index;
+
+struct contact_scene {
+    obbsat::pose_records poses;
+    std::vector<pair_index> pairs;
+};
+
+/// The colliding pairs of a scene of 3000 boxes in the query's order, and
+/// after every third one a pair at random (mostly apart).
+const contact_scene& scene() {
+    static const contact_scene s = [] {
+        contact_scene out;
+        obbsat::pose_scene_spec spec;
+        spec.seed = 23;
+        spec.boxes = 3000;
+        spec.pairs_per_box = 3.0;
+        out.poses = obbsat::pose_records(obbsat::make_pose_scene(spec));
+        obbsat::collide_options options;
+        options.test = obbsat::method::exact;
+        const std::vector<pair_index> colliding = obbsat::find_pairs(out.poses, options);
+        obbsat::seeded_random random(9);
+        for (std::size_t i = 0; i < colliding.size(); ++i) {
+            out.pairs.push_back(colliding[i]);
+            if (i % 3 == 0) {
+                out.pairs.push_back({static_cast<std::uint32_t>(random.below(spec.boxes)),
+                                     static_cast<std::uint32_t>(random.below(spec.boxes))});
+            }
+        }
+        return out;
+    }();
+    return s;
+}
+
+class contact_pose_kernels : public ::testing::TestWithParam<obbsat::backend> {};
+
+TEST_P(contact_pose_kernels, both_pose_entries_equal_the_reference) {
+    const obbsat::backend use = GetParam();
+    if (!obbsat::cpu_supports(use)) {
+        GTEST_SKIP() << "this CPU does not run " << obbsat::backend_name(use);
+    }
+    const contact_scene& s = scene();
+    ASSERT_GT(s.pairs.size(), 4000u);
+    const obbsat::detail::contact_kernel_table& table = obbsat::detail::contact_kernels_for(use);
+    ASSERT_NE(table.poses, nullptr);
+    ASSERT_NE(table.poses_in_l2, nullptr);
+    const float* records = s.poses.data();
+    constexpr std::size_t stride = obbsat::pose_records::record_floats;
+    const std::size_t lengths[] = {1, 15, 16, 17, 100, 1023, 1024, 1025, 2063, s.pairs.size()};
+    for (const float margin : {0.0f, 0.25f}) {
+        const std::size_t all = s.pairs.size();
+        std::vector<contact> want(all);
+        std::size_t with_points = 0;
+        for (std::size_t i = 0; i < all; ++i) {
+            want[i] = obbsat::ref::contact_of(s.poses[s.pairs[i].a], s.poses[s.pairs[i].b], margin);
+            with_points += want[i].point_count > 0 ? 1u : 0u;
+        }
+        // Both passes of the driver run: pairs with points and pairs without.
+        EXPECT_GT(with_points, all / 4);
+        EXPECT_LT(with_points, all - all / 8);
+        for (const std::size_t count : lengths) {
+            for (const bool in_l2 : {false, true}) {
+                const obbsat::detail::contact_fn kernel = in_l2 ? table.poses_in_l2 : table.poses;
+                std::vector<contact> got(count + 1);
+                std::memset(got.data(), 0xee, got.size() * sizeof(contact));
+                kernel(records, stride, records, stride, s.pairs.data(), count, margin, got.data());
+                const std::string what = std::string(in_l2 ? "poses_in_l2" : "poses") + ", " +
+                                         std::to_string(count) + " pairs, margin " + std::to_string(margin);
+                std::size_t differ = 0;
+                for (std::size_t i = 0; i < count; ++i) {
+                    differ += std::memcmp(&got[i], &want[i], sizeof(contact)) != 0 ? 1u : 0u;
+                }
+                EXPECT_EQ(differ, 0u) << what;
+                // Nothing past the last pair is written.
+                const contact& past = got[count];
+                const auto* bytes = reinterpret_cast<const unsigned char*>(&past);
+                for (std::size_t k = 0; k < sizeof(contact); ++k) {
+                    ASSERT_EQ(bytes[k], 0xee) << what << ": byte " << k << " past the output written";
+                }
+            }
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(every_backend, contact_pose_kernels, ::testing::ValuesIn(obbsat::compiled_backends()),
+                         [](const ::testing::TestParamInfo<obbsat::backend>& param_info) {
+                             return std::string(obbsat::backend_name(param_info.param));
+                         });
+
+}  // namespace

@@ -82,22 +82,32 @@ const detail::pose64_method_kernels& pose_kernels_of(const detail::double_kernel
     }
 }
 
-/// The backend's pair-list lanes for options.test over `count` double pose
-/// records, fetching the records ahead as the store's size asks (as the float
-/// stores choose, support/fetch_ahead.hpp: 64 bytes a record here).
-detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m, std::size_t count) {
-    const std::size_t bytes = count * sizeof(double) * pose_records64::record_doubles;
+/// Of a method's three pair-list lanes (fetching nothing ahead, into L1,
+/// into L2), the one a store of `bytes` asks for, as the float stores choose
+/// (support/fetch_ahead.hpp).
+template <class Lanes>
+Lanes fetching_as_store_asks(std::size_t bytes, Lanes in_cache, Lanes fetching, Lanes far) {
     if (bytes > detail::store_bytes_from_dram) {
-        return pose_kernels_of(table, m).indexed_far;
+        return far;
     }
-    if (bytes > detail::store_bytes_in_l2) {
-        return pose_kernels_of(table, m).indexed_fetching;
-    }
-    switch (m) {
-        case method::exact: return table.exact;
-        case method::conservative: return table.conservative;
-        default: return table.local;
-    }
+    return bytes > detail::store_bytes_in_l2 ? fetching : in_cache;
+}
+
+/// The backend's pair-list lanes for options.test over `count` double pose records.
+detail::pose64_indexed_fn pose_kernel_of(const detail::double_kernel_table& table, method m, std::size_t count) {
+    const detail::pose64_method_kernels& lanes = pose_kernels_of(table, m);
+    const detail::pose64_indexed_fn in_cache =
+        m == method::exact ? table.exact : m == method::conservative ? table.conservative : table.local;
+    return fetching_as_store_asks(count * sizeof(double) * pose_records64::record_doubles, in_cache,
+                                  lanes.indexed_fetching, lanes.indexed_far);
+}
+
+/// The backend's pair-list lanes for options.test (exact or conservative) over `count` double-corner records.
+detail::rect64_indexed_fn corner_kernel_of(const detail::corner64_kernel_table& table, method m, std::size_t count) {
+    const bool exact = m == method::exact;
+    const detail::corner64_method_kernels& lanes = exact ? table.exact_kernels : table.conservative_kernels;
+    return fetching_as_store_asks(count * sizeof(rect64), exact ? table.exact : table.conservative,
+                                  lanes.indexed_fetching, lanes.indexed_far);
 }
 
 void report_settled(const std::vector<std::size_t>& settled, const collide_options& options) {
@@ -260,8 +270,7 @@ backend collide_pairs(const rect_records64& rects, const pair_index* pairs, std:
                       std::uint8_t* verdicts, const collide_options& options) {
     const backend ran = require_call(rects.size(), pairs, count, verdicts, options, store_kind::corners);
     if (const detail::corner64_kernel_table* table = detail::corner64_kernels_for(ran)) {
-        run_lanes(options.test == method::exact ? table->exact : table->conservative, rects, pairs, count, verdicts,
-                  options);
+        run_lanes(corner_kernel_of(*table, options.test, rects.size()), rects, pairs, count, verdicts, options);
         return ran;
     }
     if (options.test == method::exact) {

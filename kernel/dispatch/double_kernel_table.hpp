@@ -90,10 +90,22 @@ const double_kernel_table* double_kernels_for(backend resolved);
 using rect64_indexed_fn = std::size_t (*)(const rect64* records, const pair_index* pairs, std::size_t count,
                                           std::uint8_t* verdicts);
 
-/// The entry points of one backend on double corners, one per method that runs there.
+/// The pair lists of one method on double corners that fetch the records of
+/// pairs ahead (support/fetch_ahead.hpp), for stores beyond L2.
+struct corner64_method_kernels {
+    rect64_indexed_fn indexed_fetching;  ///< 16 pairs ahead into L1: a store beyond L2, within L3
+    rect64_indexed_fn indexed_far;       ///< 128 pairs ahead into L2: a store read from DRAM
+};
+
+/// The entry points of one backend on double corners, per method that runs
+/// there: `exact` and `conservative` decide pair lists fetching nothing ahead
+/// (records the caches hold: the scene query's rows, a store within L2); the
+/// *_kernels rows fetch ahead.
 struct corner64_kernel_table {
     rect64_indexed_fn exact;
     rect64_indexed_fn conservative;
+    corner64_method_kernels exact_kernels;
+    corner64_method_kernels conservative_kernels;
 };
 
 /// The double-corner table of Backend (a SIMD row of dispatch/backend_catalogue.hpp),

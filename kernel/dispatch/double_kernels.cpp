@@ -84,32 +84,36 @@ std::size_t scalar_rect64_indexed(method m, const double* records, const pair_in
     return settled;
 }
 
-const double_kernel_table* double_kernels_for(backend resolved) {
+namespace {
+
+/// The table `of(Backend{})` gives for the SIMD backend `resolved`, or nullptr
+/// for the scalar backend and for a build without the x86 kernels.
+template <class Table, class Of>
+const Table* table_for(backend resolved, const Of& of) {
 #if OBBSAT_WITH_X86_KERNELS
     switch (resolved) {
-        case backend::avx512: return &double_kernels_of<avx512_backend>();
-        case backend::avx2: return &double_kernels_of<avx2_backend>();
-        case backend::sse2: return &double_kernels_of<sse2_backend>();
+        case backend::avx512: return &of(avx512_backend{});
+        case backend::avx2: return &of(avx2_backend{});
+        case backend::sse2: return &of(sse2_backend{});
         default: return nullptr;
     }
 #else
     (void)resolved;
+    (void)of;
     return nullptr;
 #endif
 }
 
+}  // namespace
+
+const double_kernel_table* double_kernels_for(backend resolved) {
+    return table_for<double_kernel_table>(
+        resolved, [](auto row) -> const double_kernel_table& { return double_kernels_of<decltype(row)>(); });
+}
+
 const corner64_kernel_table* corner64_kernels_for(backend resolved) {
-#if OBBSAT_WITH_X86_KERNELS
-    switch (resolved) {
-        case backend::avx512: return &corner64_kernels_of<avx512_backend>();
-        case backend::avx2: return &corner64_kernels_of<avx2_backend>();
-        case backend::sse2: return &corner64_kernels_of<sse2_backend>();
-        default: return nullptr;
-    }
-#else
-    (void)resolved;
-    return nullptr;
-#endif
+    return table_for<corner64_kernel_table>(
+        resolved, [](auto row) -> const corner64_kernel_table& { return corner64_kernels_of<decltype(row)>(); });
 }
 
 }  // namespace obbsat::detail

@@ -1,7 +1,9 @@
-// What the kernels see of a pose_soa64: six double field arrays, shifted as a
-// batch is split over threads. Plain data, with its helpers of internal
-// linkage: the per-ISA kernels read it too (kernel/lanes/README.md).
+// What the kernels see of a pose_soa64: its six double field arrays, as
+// dispatch/pose_soa_view.hpp shows a pose_soa's. Plain data, with its helpers
+// of internal linkage: the per-ISA kernels read it too (kernel/lanes/README.md).
 #pragma once
+
+#include "dispatch/pose_soa_view.hpp"
 
 #include <obbsat/pose_soa64.hpp>
 #include <obbsat/rect_pose64.hpp>
@@ -10,9 +12,7 @@
 
 namespace obbsat::detail {
 
-struct pose_soa64_view {
-    const double* fields[pose_field_count];  // cx, cy, hx, hy, c, s
-};
+using pose_soa64_view = pose_fields_view<double>;
 
 namespace {
 
@@ -22,22 +22,7 @@ inline rect_pose64 pose64_at(const pose_soa64_view& v, std::size_t i) {
                        {v.fields[4][i], v.fields[5][i]}};
 }
 
-/// The arrays of `v` starting `offset` poses later.
-inline pose_soa64_view shifted(const pose_soa64_view& v, std::size_t offset) {
-    pose_soa64_view out = v;
-    for (auto& f : out.fields) {
-        f += offset;
-    }
-    return out;
-}
-
-inline pose_soa64_view view_of(const pose_soa64& poses) {
-    pose_soa64_view v{};
-    for (unsigned f = 0; f < pose_field_count; ++f) {
-        v.fields[f] = poses.data(pose_field(f));
-    }
-    return v;
-}
+inline pose_soa64_view view_of(const pose_soa64& poses) { return fields_view_of<double>(poses); }
 
 }  // namespace
 }  // namespace obbsat::detail

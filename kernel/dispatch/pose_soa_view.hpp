@@ -1,6 +1,7 @@
-// What the kernels see of a pose_soa: six field arrays, shifted as a batch is
-// split over threads. Plain data, with its helpers of internal linkage: the
-// per-ISA kernels read it too (kernel/lanes/README.md).
+// What the kernels see of a pose store of arrays, pose_soa (float) or
+// pose_soa64 (double, dispatch/pose_soa64_view.hpp): six field arrays,
+// shifted as a batch is split over threads. Plain data, with its helpers of
+// internal linkage: the per-ISA kernels read it too (kernel/lanes/README.md).
 #pragma once
 
 #include <obbsat/pose_soa.hpp>
@@ -10,9 +11,13 @@
 
 namespace obbsat::detail {
 
-struct pose_soa_view {
-    const float* fields[pose_field_count];  // cx, cy, hx, hy, c, s
+/// The six field arrays of a pose store of Real.
+template <class Real>
+struct pose_fields_view {
+    const Real* fields[pose_field_count];  // cx, cy, hx, hy, c, s
 };
+
+using pose_soa_view = pose_fields_view<float>;
 
 namespace {
 
@@ -22,21 +27,26 @@ inline rect_pose pose_at(const pose_soa_view& v, std::size_t i) {
 }
 
 /// The arrays of `v` starting `offset` poses later.
-inline pose_soa_view shifted(const pose_soa_view& v, std::size_t offset) {
-    pose_soa_view out = v;
+template <class Real>
+inline pose_fields_view<Real> shifted(const pose_fields_view<Real>& v, std::size_t offset) {
+    pose_fields_view<Real> out = v;
     for (auto& f : out.fields) {
         f += offset;
     }
     return out;
 }
 
-inline pose_soa_view view_of(const pose_soa& poses) {
-    pose_soa_view v{};
+/// The arrays of a store (pose_soa or pose_soa64) holding Real.
+template <class Real, class Store>
+inline pose_fields_view<Real> fields_view_of(const Store& poses) {
+    pose_fields_view<Real> v{};
     for (unsigned f = 0; f < pose_field_count; ++f) {
         v.fields[f] = poses.data(pose_field(f));
     }
     return v;
 }
+
+inline pose_soa_view view_of(const pose_soa& poses) { return fields_view_of<float>(poses); }
 
 }  // namespace
 }  // namespace obbsat::detail

@@ -84,11 +84,11 @@ constexpr pose_method_kernels pose_kernels_of_row() {
     if constexpr (offered<poses>) {
         static_assert(poses::template lanes<isa_arch>::has_slow_path == Row::has_slow_path,
                       "a method's lanes and its catalogue row agree on the slow path");
-        k.stream = pose_stream_batch<isa_arch, poses::template lanes>;
-        k.indexed = pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l1>;
+        k.stream = record_stream_batch<isa_arch, poses::template lanes, pose_records_of>;
+        k.indexed = record_indexed_batch<isa_arch, poses::template lanes, pose_records_of, pair_fetch::into_l1>;
         k.stream_soa = pose_stream_soa_batch<isa_arch, poses::template lanes>;
-        k.indexed_near = pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::none>;
-        k.indexed_far = pose_indexed_batch<isa_arch, poses::template lanes, pair_fetch::into_l2>;
+        k.indexed_near = record_indexed_batch<isa_arch, poses::template lanes, pose_records_of, pair_fetch::none>;
+        k.indexed_far = record_indexed_batch<isa_arch, poses::template lanes, pose_records_of, pair_fetch::into_l2>;
     }
     return k;
 }
@@ -96,9 +96,17 @@ constexpr pose_method_kernels pose_kernels_of_row() {
 /// The entry points of one method on double poses but its plain pair list, instantiated for this ISA.
 template <template <class> class Method>
 constexpr pose64_method_kernels pose64_kernels_of() {
-    return pose64_method_kernels{pose64_indexed_batch<isa_arch, Method, pair_fetch::into_l1>,
-                                 pose64_indexed_batch<isa_arch, Method, pair_fetch::into_l2>,
-                                 pose64_stream_batch<isa_arch, Method>, pose64_stream_soa_batch<isa_arch, Method>};
+    return pose64_method_kernels{record_indexed_batch<isa_arch, Method, pose64_records_of, pair_fetch::into_l1>,
+                                 record_indexed_batch<isa_arch, Method, pose64_records_of, pair_fetch::into_l2>,
+                                 record_stream_batch<isa_arch, Method, pose64_records_of>,
+                                 pose64_stream_soa_batch<isa_arch, Method>};
+}
+
+/// The pair lists of one method on double corners that fetch ahead, instantiated for this ISA.
+template <template <class> class Method>
+constexpr corner64_method_kernels corner64_kernels_of_method() {
+    return corner64_method_kernels{record_indexed_batch<isa_arch, Method, corner64_records_of, pair_fetch::into_l1>,
+                                   record_indexed_batch<isa_arch, Method, corner64_records_of, pair_fetch::into_l2>};
 }
 
 template <class... Rows>
@@ -130,9 +138,9 @@ const kernel_table& kernels_of<this_backend>() {
 template <>
 const double_kernel_table& double_kernels_of<this_backend>() {
     static constexpr double_kernel_table table{
-        pose64_indexed_batch<isa_arch, pose_exact64_lanes, pair_fetch::none>,
-        pose64_indexed_batch<isa_arch, pose_conservative64_lanes, pair_fetch::none>,
-        pose64_indexed_batch<isa_arch, local64_lanes, pair_fetch::none>,
+        record_indexed_batch<isa_arch, pose_exact64_lanes, pose64_records_of, pair_fetch::none>,
+        record_indexed_batch<isa_arch, pose_conservative64_lanes, pose64_records_of, pair_fetch::none>,
+        record_indexed_batch<isa_arch, local64_lanes, pose64_records_of, pair_fetch::none>,
         pose64_kernels_of<pose_exact64_lanes>(), pose64_kernels_of<pose_conservative64_lanes>(),
         pose64_kernels_of<local64_lanes>()};
     return table;
@@ -141,8 +149,10 @@ const double_kernel_table& double_kernels_of<this_backend>() {
 // So do the double-corner lanes, for the same reason.
 template <>
 const corner64_kernel_table& corner64_kernels_of<this_backend>() {
-    static constexpr corner64_kernel_table table{corner64_indexed_batch<isa_arch, corner_exact64_lanes>,
-                                                 corner64_indexed_batch<isa_arch, corner_conservative64_lanes>};
+    static constexpr corner64_kernel_table table{
+        record_indexed_batch<isa_arch, corner_exact64_lanes, corner64_records_of, pair_fetch::none>,
+        record_indexed_batch<isa_arch, corner_conservative64_lanes, corner64_records_of, pair_fetch::none>,
+        corner64_kernels_of_method<corner_exact64_lanes>(), corner64_kernels_of_method<corner_conservative64_lanes>()};
     return table;
 }
 

@@ -9,11 +9,12 @@
 //   conservative  obbsat/ref/conservative64.hpp: the steps of
 //                 conservative_lanes.hpp in double, its fused projections and
 //                 margin computed by fused_multiply_add (one rounding each).
-// And the batch driver: a vector of pairs at a time, each lane's two records
-// read whole and transposed in registers (record64_transpose.hpp).
+// And the records as the record driver (record_batch.hpp) reads them: each
+// lane's record read whole and transposed in registers (record64_transpose.hpp).
 #pragma once
 
 #include "lanes/batch_kernel.hpp"
+#include "lanes/record_batch.hpp"
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
 #include "lanes/lanes.hpp"
@@ -35,13 +36,43 @@ using quad64_lanes = quad<xsimd::batch<double, Arch>>;
 
 /// Method exact on double corners: proven lanes from the certified path in
 /// double, the rest from the double oracle.
+///
+/// The steps are certified_steps::certify's, ordered to hold fewer vectors at
+/// once (a vector holds half the pairs of a float one, so the per-vector cost
+/// is what the double path pays twice): the edges of b are made after those
+/// of a are scanned. And when an edge of a already separates every lane, the
+/// edges of b are not scanned: a lane once separating stays so and is then
+/// never intersecting, so their scan could change no verdict.
 template <class Arch>
 struct corner_exact64_lanes {
     static constexpr bool has_slow_path = true;
 
     static OBBSAT_LANE_INLINE lane_verdicts collide(const quad64_lanes<Arch>& a, const quad64_lanes<Arch>& b) {
-        const auto v = certified_steps<Arch, double>::certify(a, b);
-        return lane_verdicts{lane_bits(v.intersecting), lane_bits(~(v.separated | v.intersecting))};
+        using steps = certified_steps<Arch, double>;
+        using batch = typename steps::batch;
+        using mask = typename steps::mask;
+        using limits = typename steps::limits;
+        const typename steps::extent xa = steps::extent_of(a);
+        const typename steps::extent xb = steps::extent_of(b);
+        const batch area_a = xa.area();
+        const batch area_b = xb.area();
+        const batch area = steps::joined(xa, xb).area();
+        const batch min_area(limits::min_area);
+        const batch factor(limits::bound_factor);
+        const mask in_range =
+            (area >= min_area) & (area <= batch(limits::max_area)) & (area_a >= min_area) & (area_b >= min_area);
+        const batch bound = area * factor;
+
+        mask separating(false), all_blocked(true);
+        const typename steps::quad_edges ea = steps::edges_of(a, area_a * factor);
+        steps::scan_edges(a, ea, b, bound, separating, all_blocked);
+        const typename steps::quad_edges eb = steps::edges_of(b, area_b * factor);
+        if (!xsimd::all(separating)) {
+            steps::scan_edges(b, eb, a, bound, separating, all_blocked);
+        }
+        const mask decidable = in_range & ea.convex & eb.convex;
+        const mask intersecting = decidable & ~separating & all_blocked;
+        return lane_verdicts{lane_bits(intersecting), lane_bits(~((decidable & separating) | intersecting))};
     }
 
     static bool decide_exactly(const rect64& a, const rect64& b) { return oracle::intersects(a, b); }
@@ -52,35 +83,23 @@ struct corner_exact64_lanes {
 template <class Arch>
 struct corner_conservative64_lanes : conservative_steps<Arch, double> {};
 
-/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count
-/// over rect_records64 records; returns the lanes settled exactly. The last,
-/// partial vector repeats its last pair in the unused lanes and stores only
-/// its own verdicts, so nothing past the caller's arrays is read or written.
-template <class Arch, template <class> class Method>
-std::size_t corner64_indexed_batch(const rect64* records, const pair_index* pairs, std::size_t count,
-                                   std::uint8_t* verdicts) {
-    using transpose = record64_transpose<Arch>;
-    constexpr std::size_t width = transpose::width;
-    std::size_t settled = 0;
-    auto rects_of = [&](std::size_t pair) { return make_lane_pair(records[pairs[pair].a], records[pairs[pair].b]); };
-    // One vector of pairs from i, pair_of(lane) giving each lane's pair.
-    auto run = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
-        const lane_verdicts v =
-            Method<Arch>::collide(transpose::load([&](std::size_t lane) { return records + pairs[pair_of(lane)].a; }),
-                                  transpose::load([&](std::size_t lane) { return records + pairs[pair_of(lane)].b; }));
-        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
-                                                      [&](std::size_t lane) { return rects_of(i + lane); });
-    };
-    std::size_t i = 0;
-    for (; i + width <= count; i += width) {
-        run(i, width, [&](std::size_t lane) { return i + lane; });
+/// Double-corner rectangles in their 64-byte records, as record_batch.hpp
+/// reads them (whole records transposed in registers, record64_transpose.hpp).
+template <class Arch>
+struct corner64_records_of {
+    using value = rect64;
+    static constexpr std::size_t width = record64_transpose<Arch>::width;
+
+    static const rect64* record(const rect64* records, std::size_t index) { return records + index; }
+
+    /// Every load reads whole cache lines, so whether they are cached changes nothing.
+    template <bool InCache, class Index>
+    static OBBSAT_LANE_INLINE quad64_lanes<Arch> load(const rect64* records, const Index& index) {
+        return record64_transpose<Arch>::load([&](std::size_t lane) { return records + index(lane); });
     }
-    if (i < count) {
-        const std::size_t valid = count - i;
-        run(i, valid, [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); });
-    }
-    return settled;
-}
+
+    static rect64 at(const rect64* records, std::size_t index) { return records[index]; }
+};
 
 }  // namespace
 }  // namespace obbsat::detail

@@ -1,16 +1,14 @@
-// The batch drivers of the methods on double poses: walk a batch one vector
-// of pairs at a time, load each lane's two poses from their 64-byte
-// pose_records64 records (read in wide pieces and transposed in registers,
-// pose64_record_transpose.hpp), run the method's lane test, store the
-// verdicts, and settle the lanes the fast path left undecided one by one. The
-// last, partial vector repeats its last pair in the unused lanes, so nothing
-// past the caller's arrays is read or written.
+// The methods on double poses in batches: the pose_records64 records as the
+// record driver (record_batch.hpp) reads them, and the driver over two
+// pose_soa64 views, which reads every field as a vector. The last, partial
+// vector repeats its last pair in the unused lanes, so nothing past the
+// caller's arrays is read or written.
 #pragma once
 
 #include "dispatch/pose_soa64_view.hpp"
 #include "lanes/batch_kernel.hpp"
 #include "lanes/pose64_lanes.hpp"
-#include "support/fetch_ahead.hpp"
+#include "lanes/record_batch.hpp"
 
 #include <obbsat/pose_records64.hpp>
 #include <obbsat/rect_pose64.hpp>
@@ -29,63 +27,25 @@ inline rect_pose64 pose64_at(const double* records, std::size_t index) {
     return rect_pose64{{r[0], r[1]}, {r[2], r[3]}, {r[4], r[5]}};
 }
 
-/// verdicts[i] = Method(a[first(i)], b[second(i)]) for i < count, a and b
-/// pose_records64 records; returns the lanes settled exactly. The records of
-/// pairs ahead are fetched as Fetch says (fetch_ahead.hpp).
-template <class Arch, template <class> class Method, pair_fetch Fetch, class First, class Second>
-std::size_t pose64_batch(const double* a, const double* b, First first, Second second, std::size_t count,
-                         std::uint8_t* verdicts) {
-    constexpr std::size_t width = lanes64<Arch>::size;
-    using transpose = pose64_record_transpose<Arch>;
-    std::size_t settled = 0;
-    auto poses_of_pair = [&](std::size_t i) {
-        return make_lane_pair(pose64_at(a, first(i)), pose64_at(b, second(i)));
-    };
-    // One vector of pairs, pair_of(lane) giving each lane's pair; inlined into
-    // the loop, as pose_batch's (its comment says why).
-    auto run = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
-        const lane_verdicts v = Method<Arch>::collide(
-            transpose::load([&](std::size_t lane) { return a + pose64_record_doubles * first(pair_of(lane)); }),
-            transpose::load([&](std::size_t lane) { return b + pose64_record_doubles * second(pair_of(lane)); }));
-        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
-                                                      [&](std::size_t lane) { return poses_of_pair(i + lane); });
-    };
-    std::size_t i = 0;
-    for (; i + width <= count; i += width) {
-        if constexpr (Fetch != pair_fetch::none) {
-            constexpr std::size_t ahead = pairs_ahead<Fetch>;
-            if (i + width + ahead <= count) {
-                for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
-                    fetch_record<Fetch>(a + pose64_record_doubles * first(k));
-                    fetch_record<Fetch>(b + pose64_record_doubles * second(k));
-                }
-            }
-        }
-        run(i, width, [&](std::size_t lane) { return i + lane; });
-    }
-    if (i < count) {
-        const std::size_t valid = count - i;
-        run(i, valid, [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); });
-    }
-    return settled;
-}
+/// Double poses in their 64-byte records, as record_batch.hpp reads them
+/// (wide pieces transposed in registers, pose64_record_transpose.hpp).
+template <class Arch>
+struct pose64_records_of {
+    using value = double;
+    static constexpr std::size_t width = lanes64<Arch>::size;
 
-/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
-/// the records of pairs ahead are fetched as Fetch says.
-template <class Arch, template <class> class Method, pair_fetch Fetch>
-std::size_t pose64_indexed_batch(const double* records, const pair_index* pairs, std::size_t count,
-                                 std::uint8_t* verdicts) {
-    return pose64_batch<Arch, Method, Fetch>(
-        records, records, [pairs](std::size_t i) { return pairs[i].a; }, [pairs](std::size_t i) { return pairs[i].b; },
-        count, verdicts);
-}
+    static const double* record(const double* records, std::size_t index) {
+        return records + pose64_record_doubles * index;
+    }
 
-/// verdicts[i] = Method(a[i], b[i]) for i < count: consecutive records, no index read.
-template <class Arch, template <class> class Method>
-std::size_t pose64_stream_batch(const double* a, const double* b, std::size_t count, std::uint8_t* verdicts) {
-    auto same = [](std::size_t i) { return i; };
-    return pose64_batch<Arch, Method, pair_fetch::none>(a, b, same, same, count, verdicts);
-}
+    /// Every load reads whole cache lines, so whether they are cached changes nothing.
+    template <bool InCache, class Index>
+    static OBBSAT_LANE_INLINE pose64_lanes<Arch> load(const double* records, const Index& index) {
+        return pose64_record_transpose<Arch>::load([&](std::size_t lane) { return record(records, index(lane)); });
+    }
+
+    static rect_pose64 at(const double* records, std::size_t index) { return pose64_at(records, index); }
+};
 
 /// The poses [first, first + width) of a view, one vector per field; the caller guarantees they exist.
 template <class Arch>

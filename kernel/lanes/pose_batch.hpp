@@ -1,14 +1,14 @@
-// The batch drivers of the methods on poses: walk a batch one vector of pairs
-// at a time, load each lane's two poses from their 32-byte records (read whole
-// and transposed in registers, as corner records are), run the method's lane
-// test, store the verdicts. The last, partial vector repeats its last pair in
-// the unused lanes, so nothing past the caller's arrays is read or written.
+// The methods on float poses in batches: the pose records as the record
+// driver (record_batch.hpp) reads them, each lane's 32-byte record read whole
+// and transposed in registers as corner records are; and the driver over two
+// pose_soa views, which reads every field as a vector.
 #pragma once
 
 #include "lanes/batch_kernel.hpp"
 #include "lanes/pose_lanes.hpp"
 #include "store/pose_record.hpp"
 #include "dispatch/pose_soa_view.hpp"
+#include "lanes/record_batch.hpp"
 #include "lanes/record_transpose.hpp"
 
 #include <obbsat/rect_pose.hpp>
@@ -27,65 +27,23 @@ OBBSAT_LANE_INLINE pose_lanes<Arch> load_poses(const float* records, const Index
     }));
 }
 
-/// verdicts[i] = Method(a[first(i)], b[second(i)]) for i < count; returns the
-/// lanes settled exactly. The records of pairs ahead are fetched as Fetch
-/// says (fetch_ahead.hpp).
-template <class Arch, template <class> class Method, pair_fetch Fetch, class First, class Second>
-std::size_t pose_batch(const float* a, const float* b, First first, Second second,
-                       std::size_t count, std::uint8_t* verdicts) {
-    constexpr std::size_t width = lanes<Arch>::size;
-    // A list that fetches nothing ahead reads records the caches hold.
-    constexpr bool in_cache = Fetch == pair_fetch::none;
-    std::size_t settled = 0;
-    auto poses_of_pair = [&](std::size_t i) { return make_lane_pair(pose_record_at(a, first(i)), pose_record_at(b, second(i))); };
-    // One vector of pairs, pair_of(lane) giving each lane's pair. Inlined
-    // into the loop, with first and second held by value: called out of line,
-    // or reading the pair list through references, the loop reloaded its
-    // pointers from memory after every verdict store (a byte store may alias
-    // anything), 1.9-2.0 against 1.65 ns per pair for local at 256K pairs.
-    auto run = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
-        const lane_verdicts v =
-            Method<Arch>::collide(load_poses<Arch, in_cache>(a, [&](std::size_t lane) { return first(pair_of(lane)); }),
-                                  load_poses<Arch, in_cache>(b, [&](std::size_t lane) { return second(pair_of(lane)); }));
-        settled += finish_vector<width, Method, Arch>(v, verdicts + i, valid,
-                                                      [&](std::size_t lane) { return poses_of_pair(i + lane); });
-    };
-    std::size_t i = 0;
-    for (; i + width <= count; i += width) {
-        if constexpr (Fetch != pair_fetch::none) {
-            constexpr std::size_t ahead = pairs_ahead<Fetch>;
-            if (i + width + ahead <= count) {
-                for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
-                    fetch_record<Fetch>(a + pose_record_floats * first(k));
-                    fetch_record<Fetch>(b + pose_record_floats * second(k));
-                }
-            }
-        }
-        run(i, width, [&](std::size_t lane) { return i + lane; });
-    }
-    if (i < count) {
-        const std::size_t valid = count - i;
-        run(i, valid, [&](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); });
-    }
-    return settled;
-}
+/// Float poses in their 32-byte records, as record_batch.hpp reads them.
+template <class Arch>
+struct pose_records_of {
+    using value = float;
+    static constexpr std::size_t width = lanes<Arch>::size;
 
-/// verdicts[i] = Method(records[pairs[i].a], records[pairs[i].b]) for i < count;
-/// the records of pairs ahead are fetched as Fetch says.
-template <class Arch, template <class> class Method, pair_fetch Fetch>
-std::size_t pose_indexed_batch(const float* records, const pair_index* pairs, std::size_t count,
-                               std::uint8_t* verdicts) {
-    return pose_batch<Arch, Method, Fetch>(
-        records, records, [pairs](std::size_t i) { return pairs[i].a; }, [pairs](std::size_t i) { return pairs[i].b; },
-        count, verdicts);
-}
+    static const float* record(const float* records, std::size_t index) {
+        return records + pose_record_floats * index;
+    }
 
-/// verdicts[i] = Method(a[i], b[i]) for i < count.
-template <class Arch, template <class> class Method>
-std::size_t pose_stream_batch(const float* a, const float* b, std::size_t count, std::uint8_t* verdicts) {
-    auto same = [](std::size_t i) { return i; };
-    return pose_batch<Arch, Method, pair_fetch::none>(a, b, same, same, count, verdicts);
-}
+    template <bool InCache, class Index>
+    static OBBSAT_LANE_INLINE pose_lanes<Arch> load(const float* records, const Index& index) {
+        return load_poses<Arch, InCache>(records, index);
+    }
+
+    static rect_pose at(const float* records, std::size_t index) { return pose_record_at(records, index); }
+};
 
 /// The poses [first, first + width) of a view, one vector per field; the caller guarantees they exist.
 template <class Arch>

@@ -1,21 +1,9 @@
 #include "store/finite_check.hpp"
+#include "store/pose_fields.hpp"
 
 #include <obbsat/pose_soa64.hpp>
 
 namespace obbsat {
-
-namespace {
-
-void fields_of(const rect_pose64& p, double out[pose_field_count]) {
-    out[0] = p.center.x;
-    out[1] = p.center.y;
-    out[2] = p.half_extents.x;
-    out[3] = p.half_extents.y;
-    out[4] = p.rotation.x;
-    out[5] = p.rotation.y;
-}
-
-}  // namespace
 
 pose_soa64::pose_soa64(const rect_pose64* poses, std::size_t count) {
     // Checked before anything is copied: a bad batch leaves nothing half-stored.
@@ -42,11 +30,7 @@ void pose_soa64::reserve(std::size_t count) {
 }
 
 void pose_soa64::append(const rect_pose64& p) {
-    double values[pose_field_count];
-    fields_of(p, values);
-    for (unsigned f = 0; f < pose_field_count; ++f) {
-        fields_[f].push_back(values[f]);
-    }
+    detail::append_fields<double>(fields_, p);
 }
 
 void pose_soa64::push_back(const rect_pose64& p) {
@@ -57,11 +41,7 @@ void pose_soa64::push_back(const rect_pose64& p) {
 void pose_soa64::set(std::size_t index, const rect_pose64& p) {
     detail::require_index(index, size());
     require_valid_pose(p, index);
-    double values[pose_field_count];
-    fields_of(p, values);
-    for (unsigned f = 0; f < pose_field_count; ++f) {
-        fields_[f][index] = values[f];
-    }
+    detail::set_fields<double>(fields_, index, p);
 }
 
 void pose_soa64::clear() {

@@ -2,14 +2,18 @@
 // pose_records on the collide rows' pairs (their generator's order), beside
 // contacts/local_verdicts/poses/indexed/<backend>/...: the verdict-only local
 // method on the same pairs in the same binary, and
-// distances/poses/indexed/<backend>/...: distance_pairs on them. Each row
-// checks its answers against the reference before it times anything.
+// distances/poses/indexed/<backend>/...: distance_pairs on them, and
+// contacts64/poses/indexed/scalar/...: contact_pairs over pose_records64
+// holding the same poses, every float taken exactly (double contacts run on
+// the scalar backend). Each row checks its answers against the reference
+// before it times anything.
 #include "bench_registry.hpp"
 #include "contact_workload.hpp"
 
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/contact.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/ref/contact.hpp>
 #include <obbsat/ref/distance.hpp>
 #include <obbsat/ref/local.hpp>
@@ -33,17 +37,35 @@ workload& contact_workload(std::size_t pairs) {
 
 namespace {
 
-void time_contacts(benchmark::State& state, obbsat::backend use, std::size_t count) {
-    workload& w = contact_workload(count);
-    const obbsat::pose_records& poses = w.poses();
-    const std::vector<obbsat::pair_index>& pairs = w.sorted_pairs();
-    obbsat::contact_options options;
+/// The workload's poses as double records: the same rectangles, every float
+/// taken exactly, built once per size.
+const obbsat::pose_records64& double_poses(std::size_t count) {
+    static std::map<std::size_t, std::unique_ptr<obbsat::pose_records64>> cache;
+    std::unique_ptr<obbsat::pose_records64>& records = cache[count];
+    if (!records) {
+        const obbsat::pose_records& poses = contact_workload(count).poses();
+        std::vector<obbsat::rect_pose64> rows(poses.size());
+        for (std::size_t i = 0; i < poses.size(); ++i) {
+            const obbsat::rect_pose p = poses[i];
+            rows[i] = {{p.center.x, p.center.y}, {p.half_extents.x, p.half_extents.y}, {p.rotation.x, p.rotation.y}};
+        }
+        records = std::make_unique<obbsat::pose_records64>(rows);
+    }
+    return *records;
+}
+
+/// contact_pairs over `poses` (float or double records) on the workload's
+/// pairs, after checking every contact byte for byte against the reference.
+template <class Records, class Contact, class Options>
+void time_contacts_of(benchmark::State& state, const Records& poses, obbsat::backend use, std::size_t count) {
+    const std::vector<obbsat::pair_index>& pairs = contact_workload(count).sorted_pairs();
+    Options options;
     options.use = use;
-    std::vector<obbsat::contact> out(count);
+    std::vector<Contact> out(count);
     obbsat::contact_pairs(poses, pairs.data(), count, out.data(), options);
     std::size_t colliding = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const obbsat::contact expected = obbsat::ref::contact_of(poses[pairs[i].a], poses[pairs[i].b]);
+        const Contact expected = obbsat::ref::contact_of(poses[pairs[i].a], poses[pairs[i].b]);
         if (std::memcmp(&expected, &out[i], sizeof expected) != 0) {
             state.SkipWithError(("pair " + std::to_string(i) + " differs from the reference").c_str());
             return;
@@ -57,6 +79,15 @@ void time_contacts(benchmark::State& state, obbsat::backend use, std::size_t cou
     }
     set_pair_rate_counters(state, count);
     state.counters["with_points"] = static_cast<double>(colliding) / static_cast<double>(count);
+}
+
+void time_contacts(benchmark::State& state, obbsat::backend use, std::size_t count) {
+    time_contacts_of<obbsat::pose_records, obbsat::contact, obbsat::contact_options>(state, contact_workload(count).poses(), use, count);
+}
+
+void time_contacts64(benchmark::State& state, std::size_t count) {
+    time_contacts_of<obbsat::pose_records64, obbsat::contact64, obbsat::contact_options64>(
+        state, double_poses(count), obbsat::backend::scalar, count);
 }
 
 void time_distances(benchmark::State& state, obbsat::backend use, std::size_t count) {
@@ -108,6 +139,12 @@ void time_local_verdicts(benchmark::State& state, obbsat::backend use, std::size
 }  // namespace
 
 void register_contact_benchmarks() {
+    for (const std::size_t count : contact_sizes) {
+        benchmark::RegisterBenchmark(
+            ("contacts64/poses/indexed/scalar/pairs:" + std::to_string(count) + "/threads:1").c_str(),
+            [count](benchmark::State& s) { time_contacts64(s, count); })
+            ->UseRealTime();
+    }
     for (const obbsat::backend use : obbsat::compiled_backends()) {
         if (!obbsat::cpu_supports(use)) {
             continue;

@@ -7,6 +7,8 @@
 // margin 0 and with a speculative margin.
 #include "dispatch/contact_kernel_table.hpp"
 
+#include "test_support/mixed_pair_list.hpp"
+
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/contact_manifold.hpp>
@@ -44,17 +46,7 @@ const contact_scene& scene() {
         spec.boxes = 3000;
         spec.pairs_per_box = 3.0;
         out.poses = obbsat::pose_records(obbsat::make_pose_scene(spec));
-        obbsat::collide_options options;
-        options.test = obbsat::method::exact;
-        const std::vector<pair_index> colliding = obbsat::find_pairs(out.poses, options);
-        obbsat::seeded_random random(9);
-        for (std::size_t i = 0; i < colliding.size(); ++i) {
-            out.pairs.push_back(colliding[i]);
-            if (i % 3 == 0) {
-                out.pairs.push_back({static_cast<std::uint32_t>(random.below(spec.boxes)),
-                                     static_cast<std::uint32_t>(random.below(spec.boxes))});
-            }
-        }
+        out.pairs = obbsat::test_support::colliding_pairs_mixed_with_random(out.poses, 9);
         return out;
     }();
     return s;

@@ -9,6 +9,8 @@
 // every length up to a few vectors past a whole block.
 #include "backends/backend_cases.hpp"
 
+#include "test_support/mixed_pair_list.hpp"
+
 #include <obbsat/backend.hpp>
 #include <obbsat/collide.hpp>
 #include <obbsat/find_pairs.hpp>
@@ -44,19 +46,7 @@ const near_scene& scene() {
         spec.pairs_per_box = 3.0;
         out.poses = obbsat::pose_records(obbsat::make_pose_scene(spec));
         out.corners = obbsat::corner_records_of(out.poses, obbsat::backend::scalar);
-        // The colliding pairs (runs of one first index, as a sweep gives them)
-        // and as many pairs at random, interleaved in blocks.
-        obbsat::collide_options options;
-        options.test = obbsat::method::exact;
-        const std::vector<obbsat::pair_index> colliding = obbsat::find_pairs(out.poses, options);
-        obbsat::seeded_random random(5);
-        for (std::size_t i = 0; i < colliding.size(); ++i) {
-            out.pairs.push_back(colliding[i]);
-            if (i % 3 == 0) {
-                out.pairs.push_back({static_cast<std::uint32_t>(random.below(spec.boxes)),
-                                     static_cast<std::uint32_t>(random.below(spec.boxes))});
-            }
-        }
+        out.pairs = obbsat::test_support::colliding_pairs_mixed_with_random(out.poses, 5);
         return out;
     }();
     return s;

@@ -1,5 +1,7 @@
 // pose_records64 keeps every double exactly, refuses what is not a pose with a
 // message naming the pose and the field, and stores nothing from a bad batch.
+#include "test_support/refusal.hpp"
+
 #include <obbsat/error.hpp>
 #include <obbsat/pose_records64.hpp>
 
@@ -18,12 +20,7 @@ using obbsat::rect_pose64;
 const rect_pose64 footprint{{500000.123456789, 5712345.987654321}, {10.0000001, 4.9999999}, {0.8, 0.6}};
 
 std::string message_of(const std::vector<rect_pose64>& poses) {
-    try {
-        obbsat::pose_records64 store(poses);
-    } catch (const obbsat::invalid_input& e) {
-        return e.what();
-    }
-    return "";
+    return obbsat::test_support::refusal_of<obbsat::pose_records64>(poses);
 }
 
 TEST(pose_records64, keeps_every_double_exactly) {

@@ -3,6 +3,10 @@
 #include <chrono>
 #include <limits>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 namespace obbsat::detail {
 
 namespace {
@@ -18,11 +22,23 @@ inline void relax() {
 #endif
 }
 
+// The CPU this thread runs on, or -1 where the system does not say.
+int current_cpu() {
+#if defined(__linux__)
+    return sched_getcpu();
+#else
+    return -1;
+#endif
+}
+
 // Polls `done` until it holds or `budget` has passed; true if it holds. Every
-// few dozen polls it yields, so that on a core shared with other work (more
-// threads than cores) the poll takes little from the thread it waits for.
-template <class Done>
-bool poll_until(const Done& done, std::chrono::microseconds budget) {
+// few dozen polls it yields if `on_shared_cpu()` says the thread it waits for
+// (or works beside) runs on this one's CPU: the poll then hands that thread
+// the CPU instead of taking it. It does not yield otherwise: on a CPU shared
+// with a process of its own (a busy core), a yield gives that process the
+// CPU for a whole time slice, long after what the poll waits for is done.
+template <class Done, class OnSharedCpu>
+bool poll_until(const Done& done, std::chrono::microseconds budget, const OnSharedCpu& on_shared_cpu) {
     const auto deadline = std::chrono::steady_clock::now() + budget;
     for (unsigned k = 1;; ++k) {
         if (done()) {
@@ -32,7 +48,9 @@ bool poll_until(const Done& done, std::chrono::microseconds budget) {
             if (std::chrono::steady_clock::now() > deadline) {
                 return done();
             }
-            std::this_thread::yield();
+            if (on_shared_cpu()) {
+                std::this_thread::yield();
+            }
         }
         relax();
     }
@@ -132,7 +150,11 @@ void thread_pool::worker_loop(worker& self, std::size_t slot, std::uint64_t seen
         bool ready = false;
         if (just_ran) {
             polls_started_.fetch_add(1, std::memory_order_relaxed);
-            ready = poll_until(news, worker_poll);
+            const auto beside_caller = [this] {
+                const int cpu = current_cpu();
+                return cpu < 0 || cpu == caller_cpu_.load(std::memory_order_relaxed);
+            };
+            ready = poll_until(news, worker_poll, beside_caller);
         }
         if (!ready) {
             std::unique_lock<std::mutex> lock(state_);
@@ -162,6 +184,7 @@ void thread_pool::worker_loop(worker& self, std::size_t slot, std::uint64_t seen
             continue;
         }
         // The caller waits for every worker that joined: task_ is still this batch's.
+        self.cpu.store(current_cpu(), std::memory_order_relaxed);
         take_parts(*task_.load(std::memory_order_relaxed), static_cast<std::size_t>(parts));
         left_.fetch_add(1, std::memory_order_acq_rel);
         // Taking the lock orders this notify after a caller that found a
@@ -185,6 +208,10 @@ void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>&
     {
         std::lock_guard<std::mutex> lock(state_);
         grow_to(parts - 1);
+        caller_cpu_.store(current_cpu(), std::memory_order_relaxed);
+        for (std::size_t w = 0; w + 1 < parts; ++w) {
+            workers_[w]->cpu.store(-2, std::memory_order_relaxed);  // none yet: -2 matches no CPU
+        }
         task_.store(&task, std::memory_order_relaxed);
         next_part_.store(1, std::memory_order_relaxed);  // part 0 is the caller's
         left_.store(0, std::memory_order_relaxed);
@@ -206,7 +233,17 @@ void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>&
     // joined are waited for.
     const std::uint64_t joined = entry_.fetch_or(closed_bit, std::memory_order_acq_rel) & joined_mask;
     auto all_done = [&] { return left_.load(std::memory_order_acquire) == joined; };
-    if (!poll_until(all_done, caller_poll)) {
+    // A joined worker on the caller's CPU runs only when the caller lets it.
+    const auto worker_beside = [&] {
+        const int cpu = current_cpu();
+        for (std::size_t w = 0; w + 1 < parts; ++w) {
+            if (cpu < 0 || workers_[w]->cpu.load(std::memory_order_relaxed) == cpu) {
+                return true;
+            }
+        }
+        return false;
+    };
+    if (!poll_until(all_done, caller_poll, worker_beside)) {
         std::unique_lock<std::mutex> lock(state_);
         finished_.wait(lock, all_done);
     }

@@ -63,6 +63,7 @@ private:
         std::thread thread;
         std::condition_variable wake;  ///< notified when a batch gives this worker a part
         bool asleep = false;           ///< waiting on `wake`; under state_
+        std::atomic<int> cpu{-2};      ///< its CPU when it joined this batch; -2 before, -1 unknown
     };
 
     thread_pool() = default;
@@ -88,6 +89,7 @@ private:
     std::atomic<const std::function<void(std::size_t)>*> task_{nullptr};
     std::atomic<std::size_t> next_part_{0};  ///< the next part not taken
     std::atomic<std::size_t> left_{0};       ///< joined workers that have taken their last part
+    std::atomic<int> caller_cpu_{-1};        ///< the caller's CPU when it started the last batch
     std::atomic<bool> stopping_{false};
     std::atomic<std::size_t> awake_{0};
     std::atomic<std::uint64_t> polls_started_{0};

@@ -29,15 +29,15 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     }
     keys_.resize(n_);
     order_.resize(n_);
-    // The passes over the boxes are cut into units taken as they come (work_shares.hpp).
-    const std::size_t units = units_for(n_, parts, min_boxes_per_unit);
     // The repair needs this query's keys on the last grid (measure_extent).
     stats_.reused_order = keep_grid && keys_by_id_fresh_ && repair_order(parts);
+    // A new order's keys are made by the units of the sort's first pass,
+    // each its own slice just before it packs it (radix_sort_filled): no
+    // pass of their own, and no wait for every key before the sort starts.
     if (!stats_.reused_order && !keys_by_id_fresh_) {
         // measure_extent left each box's lo_x and lo_y, widened as the sweep
         // will widen them, in keys_ and order_ (as bits).
-        run_units(units, parts, [&](std::size_t unit) {
-            const auto [begin, end] = share_of(n_, unit, units);
+        const radix_fill keys_from_corners = [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 float lo_x, lo_y;
                 std::memcpy(&lo_x, &keys_[i], sizeof(float));
@@ -45,7 +45,7 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 keys_[i] = grid_.key_of(lo_x, lo_y);
                 order_[i] = static_cast<std::uint32_t>(i);
             }
-        });
+        };
         // The records' memory, which copy_records fills next, is the sort's
         // working memory first (16 of its 32 bytes a box): a cold query then
         // maps and clears 16 bytes a box fewer of fresh pages. The words live
@@ -65,10 +65,10 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
         for (std::size_t w = 0; w < 2 * n_; ++w) {
             ::new (static_cast<void*>(words + w)) std::uint64_t;  // no code: words begin to live here
         }
-        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts);
+        radix_sort_filled(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts,
+                          keys_from_corners);
     } else if (!stats_.reused_order) {
-        run_units(units, parts, [&](std::size_t unit) {
-            const auto [begin, end] = share_of(n_, unit, units);
+        const radix_fill keys_from_rows = [&](std::size_t begin, std::size_t end) {
             bounds_run b;
             for (std::size_t run_begin = begin; run_begin < end; run_begin += bounds_run::size) {
                 const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
@@ -79,8 +79,8 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                     order_[i] = static_cast<std::uint32_t>(i);
                 }
             }
-        });
-        radix_sort(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts);
+        };
+        radix_sort_filled(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts, keys_from_rows);
     }
     have_order_ = true;
     ordered_n_ = n_;

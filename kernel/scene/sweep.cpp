@@ -235,10 +235,6 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
             ++s;
         }
         p.end_strip = s;
-        if (p.candidates.size() < candidate_block) {
-            p.candidates.resize(candidate_block);
-            p.verdicts.resize(candidate_block);
-        }
         p.candidate_count = 0;
         p.found.clear();
         p.keep.captured.clear();
@@ -257,6 +253,11 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     run_units(units, parts, [&](std::size_t index) {
         part& p = parts_[index];
         try {
+            // Each unit sizes its own blocks, on the thread that sweeps it, not the caller for all before.
+            if (p.candidates.size() < candidate_block) {
+                p.candidates.resize(candidate_block);
+                p.verdicts.resize(candidate_block);
+            }
             // Pairs are found only by a flush, at most candidate_block at a
             // time: handing them over once a flush may not fit under
             // emit_block keeps every chunk, and what a part holds, within it.

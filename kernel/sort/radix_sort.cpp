@@ -50,6 +50,20 @@ void pack_and_count(const std::uint32_t* keys, const std::uint32_t* values, std:
     }
 }
 
+/// fill(0, n), when given, then pack_and_count, slice by slice: each slice is
+/// packed while what fill wrote is still in the caches.
+void fill_pack_and_count(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned digits,
+                         std::uint64_t* words, all_digit_counts& counts, const radix_fill* fill, std::size_t offset) {
+    constexpr std::size_t slice = 4096;
+    for (std::size_t begin = 0; begin < n; begin += slice) {
+        const std::size_t end = std::min(n, begin + slice);
+        if (fill != nullptr) {
+            (*fill)(offset + begin, offset + end);
+        }
+        pack_and_count(keys + begin, values + begin, end - begin, digits, words + begin, counts);
+    }
+}
+
 /// Sorts the packed words[0, n) stably by digits [0, digits) of their keys,
 /// one pass a digit through `buffer` (n words), skipping a digit all of them
 /// share; `counts` holds each digit's counts over them. Then writes the keys
@@ -86,23 +100,15 @@ void sort_words(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsi
 
 }  // namespace
 
-void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
-                radix_buffer& spare, std::size_t parts) {
-    if (n < 2) {
-        return;
-    }
-    if (packed.size() < n) {
-        packed.resize(n);
-    }
-    if (spare.size() < n) {
-        spare.resize(n);
-    }
-    radix_sort(keys, values, n, key_bits, packed.data(), spare.data(), parts);
-}
+namespace {
 
-void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
-                std::uint64_t* spare, std::size_t parts) {
+/// radix_sort and radix_sort_filled (`fill` nullptr for the first) in lent memory.
+void sort_lent(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
+               std::uint64_t* spare, std::size_t parts, const radix_fill* fill) {
     if (n < 2) {
+        if (fill != nullptr) {
+            (*fill)(0, n);
+        }
         return;
     }
     key_bits = std::min(key_bits, 32u);  // the keys have no more
@@ -113,7 +119,7 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         // all keys does not depend on their order, so no pass needs a read
         // of its own to count.
         all_digit_counts counts{};
-        pack_and_count(keys, values, n, digits, packed, counts);
+        fill_pack_and_count(keys, values, n, digits, packed, counts, fill, 0);
         sort_words(packed, spare, n, digits, counts, keys, values);
         return;
     }
@@ -132,7 +138,8 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
     run_units(units, threads, [&](std::size_t unit) {
         const std::size_t begin = begin_of(unit);
         counts[unit] = all_digit_counts{};
-        pack_and_count(keys + begin, values + begin, begin_of(unit + 1) - begin, digits, packed + begin, counts[unit]);
+        fill_pack_and_count(keys + begin, values + begin, begin_of(unit + 1) - begin, digits, packed + begin,
+                            counts[unit], fill, begin);
     });
     // The highest digit whose keys differ: those above it are the same for every key.
     unsigned top = digits;
@@ -183,6 +190,43 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
         count_digits(spare + begin, size, first, lower);
         sort_words(spare + begin, packed + begin, size, first, lower, keys + begin, values + begin);
     });
+}
+
+/// Grows the caller's buffers to n words.
+void grow_buffers(std::size_t n, radix_buffer& packed, radix_buffer& spare) {
+    if (packed.size() < n) {
+        packed.resize(n);
+    }
+    if (spare.size() < n) {
+        spare.resize(n);
+    }
+}
+
+}  // namespace
+
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
+                radix_buffer& spare, std::size_t parts) {
+    if (n < 2) {
+        return;
+    }
+    grow_buffers(n, packed, spare);
+    sort_lent(keys, values, n, key_bits, packed.data(), spare.data(), parts, nullptr);
+}
+
+void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
+                std::uint64_t* spare, std::size_t parts) {
+    sort_lent(keys, values, n, key_bits, packed, spare, parts, nullptr);
+}
+
+void radix_sort_filled(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
+                       radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill) {
+    grow_buffers(n, packed, spare);
+    sort_lent(keys, values, n, key_bits, packed.data(), spare.data(), parts, &fill);
+}
+
+void radix_sort_filled(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
+                       std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill) {
+    sort_lent(keys, values, n, key_bits, packed, spare, parts, &fill);
 }
 
 void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::size_t buckets, std::size_t begin,

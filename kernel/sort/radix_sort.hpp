@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace obbsat::detail {
@@ -32,6 +33,20 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
 /// words each, not overlapping each other, keys or values.
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
                 std::uint64_t* spare, std::size_t parts = 1);
+
+/// Writes keys[begin, end) and values[begin, end) of a sort to come (radix_sort_filled).
+using radix_fill = std::function<void(std::size_t begin, std::size_t end)>;
+
+/// radix_sort of keys and values that `fill` writes first: fill is called
+/// over slices that tile [0, n), each slice packed just after it is filled,
+/// by the same unit of the sort's first pass. Making the keys then takes no
+/// pass of its own and no wait for all of them before the sort starts.
+void radix_sort_filled(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
+                       radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill);
+
+/// radix_sort_filled in working memory the caller lends, as radix_sort's.
+void radix_sort_filled(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
+                       std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill);
 
 /// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
 /// (every bucket below `buckets`): starts[b] is the first i whose bucket is

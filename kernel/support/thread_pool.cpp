@@ -3,6 +3,10 @@
 #include <chrono>
 #include <limits>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 namespace obbsat::detail {
 
 namespace {
@@ -18,11 +22,23 @@ inline void relax() {
 #endif
 }
 
+// The CPU this thread runs on, or -1 where the system does not say.
+int current_cpu() {
+#if defined(__linux__)
+    return sched_getcpu();
+#else
+    return -1;
+#endif
+}
+
 // Polls `done` until it holds or `budget` has passed; true if it holds. Every
-// few dozen polls it yields, so that on a core shared with other work (more
-// threads than cores) the poll takes little from the thread it waits for.
-template <class Done>
-bool poll_until(const Done& done, std::chrono::microseconds budget) {
+// few dozen polls it yields if `on_shared_cpu()` says the thread it waits for
+// (or works beside) runs on this one's CPU: the poll then hands that thread
+// the CPU instead of taking it. It does not yield otherwise: on a CPU shared
+// with a process of its own (a busy core), a yield gives that process the
+// CPU for a whole time slice, long after what the poll waits for is done.
+template <class Done, class OnSharedCpu>
+bool poll_until(const Done& done, std::chrono::microseconds budget, const OnSharedCpu& on_shared_cpu) {
     const auto deadline = std::chrono::steady_clock::now() + budget;
     for (unsigned k = 1;; ++k) {
         if (done()) {
@@ -32,7 +48,9 @@ bool poll_until(const Done& done, std::chrono::microseconds budget) {
             if (std::chrono::steady_clock::now() > deadline) {
                 return done();
             }
-            std::this_thread::yield();
+            if (on_shared_cpu()) {
+                std::this_thread::yield();
+            }
         }
         relax();
     }
@@ -40,6 +58,9 @@ bool poll_until(const Done& done, std::chrono::microseconds budget) {
 
 constexpr std::uint64_t generation_of(std::uint64_t batch) { return batch >> 32; }
 constexpr std::uint64_t parts_of(std::uint64_t batch) { return batch & 0xffffffffu; }
+// In entry_: the batch closed to workers not yet in it, and how many are.
+constexpr std::uint64_t closed_bit = std::uint64_t{1} << 31;
+constexpr std::uint64_t joined_mask = closed_bit - 1;
 
 // True on a thread while it runs a part of a batch (a worker, always; the
 // caller, during its part 0). A run started there runs its parts in turn on
@@ -77,21 +98,39 @@ void thread_pool::grow_to(std::size_t workers) {
     // seen every batch so far, none of which had a part for it.
     const std::uint64_t seen = generation_of(batch_.load(std::memory_order_relaxed));
     while (workers_.size() < workers) {
-        const std::size_t part = workers_.size() + 1;  // part 0 is the caller's
+        const std::size_t slot = workers_.size() + 1;  // invited to batches of more parts than this
         workers_.push_back(std::make_unique<worker>());
         worker& w = *workers_.back();
         awake_.fetch_add(1);
-        w.thread = std::thread([this, &w, part, seen] { worker_loop(w, part, seen); });
+        w.thread = std::thread([this, &w, slot, seen] { worker_loop(w, slot, seen); });
     }
 }
 
-void thread_pool::worker_loop(worker& self, std::size_t part, std::uint64_t seen) {
+bool thread_pool::join(std::uint64_t generation) {
+    std::uint64_t entry = entry_.load(std::memory_order_acquire);
+    while (generation_of(entry) == generation && (entry & closed_bit) == 0) {
+        if (entry_.compare_exchange_weak(entry, entry + 1, std::memory_order_acq_rel, std::memory_order_acquire)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void thread_pool::take_parts(const std::function<void(std::size_t)>& task, std::size_t parts) {
+    for (std::size_t part = next_part_.fetch_add(1, std::memory_order_relaxed); part < parts;
+         part = next_part_.fetch_add(1, std::memory_order_relaxed)) {
+        task(part);
+    }
+}
+
+void thread_pool::worker_loop(worker& self, std::size_t slot, std::uint64_t seen) {
     running_a_part = true;
     bool just_ran = false;
     for (;;) {
         // True once a batch has started since the last one seen (or the
-        // pool stops); has_part says whether it has a part for this worker.
-        bool has_part = false;
+        // pool stops); invited says whether it asks this worker to join.
+        bool invited = false;
+        std::uint64_t parts = 0;
         const auto news = [&] {
             if (stopping_.load(std::memory_order_acquire)) {
                 return true;
@@ -101,16 +140,21 @@ void thread_pool::worker_loop(worker& self, std::size_t part, std::uint64_t seen
                 return false;
             }
             seen = generation_of(batch);
-            has_part = part < parts_of(batch);
+            parts = parts_of(batch);
+            invited = slot < parts;
             return true;
         };
         // Only a worker that took part in the last batch polls for the next:
         // one the batches have stopped using sleeps at once, and is woken
-        // only by a batch with a part for it.
+        // only by a batch that invites it.
         bool ready = false;
         if (just_ran) {
             polls_started_.fetch_add(1, std::memory_order_relaxed);
-            ready = poll_until(news, worker_poll);
+            const auto beside_caller = [this] {
+                const int cpu = current_cpu();
+                return cpu < 0 || cpu == caller_cpu_.load(std::memory_order_relaxed);
+            };
+            ready = poll_until(news, worker_poll, beside_caller);
         }
         if (!ready) {
             std::unique_lock<std::mutex> lock(state_);
@@ -124,21 +168,29 @@ void thread_pool::worker_loop(worker& self, std::size_t part, std::uint64_t seen
             awake_.fetch_sub(1);
             return;
         }
-        just_ran = has_part;
-        if (!has_part) {
+        if (!invited) {
+            just_ran = false;
             continue;
         }
         if (!ready) {
             wake_ups_.fetch_add(1, std::memory_order_relaxed);
         }
-        // This batch cannot end before this part has: task_ is still its own.
-        (*task_.load(std::memory_order_relaxed))(part);
-        if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-            // Taking the lock orders this notify after a caller that found
-            // work unfinished has started waiting: no wake-up is lost.
-            std::lock_guard<std::mutex> lock(state_);
-            finished_.notify_one();
+        // A worker that comes after the caller has closed the batch leaves
+        // it alone: its task may be gone. It still polls for the next one,
+        // which a caller running back-to-back batches is about to start.
+        just_ran = true;
+        if (!join(seen)) {
+            late_arrivals_.fetch_add(1, std::memory_order_relaxed);
+            continue;
         }
+        // The caller waits for every worker that joined: task_ is still this batch's.
+        self.cpu.store(current_cpu(), std::memory_order_relaxed);
+        take_parts(*task_.load(std::memory_order_relaxed), static_cast<std::size_t>(parts));
+        left_.fetch_add(1, std::memory_order_acq_rel);
+        // Taking the lock orders this notify after a caller that found a
+        // joined worker unfinished has started waiting: no wake-up is lost.
+        std::lock_guard<std::mutex> lock(state_);
+        finished_.notify_one();
     }
 }
 
@@ -156,11 +208,17 @@ void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>&
     {
         std::lock_guard<std::mutex> lock(state_);
         grow_to(parts - 1);
+        caller_cpu_.store(current_cpu(), std::memory_order_relaxed);
+        for (std::size_t w = 0; w + 1 < parts; ++w) {
+            workers_[w]->cpu.store(-2, std::memory_order_relaxed);  // none yet: -2 matches no CPU
+        }
         task_.store(&task, std::memory_order_relaxed);
-        unfinished_.store(parts - 1, std::memory_order_relaxed);
+        next_part_.store(1, std::memory_order_relaxed);  // part 0 is the caller's
+        left_.store(0, std::memory_order_relaxed);
         const std::uint64_t generation = generation_of(batch_.load(std::memory_order_relaxed)) + 1;
+        entry_.store(generation << 32, std::memory_order_relaxed);
         batch_.store((generation << 32) | parts, std::memory_order_release);
-        // Only the workers with a part are woken; a polling one sees the batch itself.
+        // Only the workers invited are woken; a polling one sees the batch itself.
         for (std::size_t w = 0; w + 1 < parts; ++w) {
             if (workers_[w]->asleep) {
                 workers_[w]->wake.notify_one();
@@ -169,9 +227,23 @@ void thread_pool::run(std::size_t parts, const std::function<void(std::size_t)>&
     }
     running_a_part = true;
     task(0);
+    take_parts(task, parts);
     running_a_part = false;
-    auto all_done = [&] { return unfinished_.load(std::memory_order_acquire) == 0; };
-    if (!poll_until(all_done, caller_poll)) {
+    // Every part is taken: no worker joins from here on, and only those that
+    // joined are waited for.
+    const std::uint64_t joined = entry_.fetch_or(closed_bit, std::memory_order_acq_rel) & joined_mask;
+    auto all_done = [&] { return left_.load(std::memory_order_acquire) == joined; };
+    // A joined worker on the caller's CPU runs only when the caller lets it.
+    const auto worker_beside = [&] {
+        const int cpu = current_cpu();
+        for (std::size_t w = 0; w + 1 < parts; ++w) {
+            if (cpu < 0 || workers_[w]->cpu.load(std::memory_order_relaxed) == cpu) {
+                return true;
+            }
+        }
+        return false;
+    };
+    if (!poll_until(all_done, caller_poll, worker_beside)) {
         std::unique_lock<std::mutex> lock(state_);
         finished_.wait(lock, all_done);
     }

@@ -8,7 +8,9 @@
 // nothing is promised for one that does, so nothing is tested. Workers a run
 // does not use are neither woken nor left polling by it, and a worker that
 // ran a part goes to sleep soon after (the pool's counters of wake-ups and
-// polls, and of workers awake).
+// polls, and of workers awake). A run never waits for a worker that has not
+// joined it: the caller takes the parts left, and a worker that comes once
+// all are taken runs nothing (the pool's counter of late arrivals).
 #include "support/thread_pool.hpp"
 
 #include <gtest/gtest.h>
@@ -213,6 +215,34 @@ TEST(thread_pool, after_a_run_on_many_threads_a_run_on_two_wakes_and_polls_with_
     // Ten runs of two parts: worker 0 (part 1) at most wakes or polls once per run.
     EXPECT_LE(pool.wake_ups() - wakes, 10u);
     EXPECT_LE(pool.polls_started() - polls, 10u);
+}
+
+TEST(thread_pool, a_run_takes_the_parts_of_a_worker_not_there_yet_which_then_runs_nothing) {
+    // With the workers asleep, a run of two parts that take no time is over
+    // before the woken worker gets to it (waking takes microseconds): the
+    // caller runs part 1 itself, returns without waiting for the worker, and
+    // the worker, coming to a batch already closed, runs nothing of it.
+    thread_pool& pool = thread_pool::shared();
+    const std::thread::id caller = std::this_thread::get_id();
+    const std::uint64_t late_before = pool.late_arrivals();
+    bool caller_ran_both = false;
+    for (int round = 0; round < 50 && !caller_ran_both; ++round) {
+        ASSERT_TRUE(all_workers_asleep_within_ten_seconds()) << pool.awake_workers() << " workers still awake";
+        std::vector<std::thread::id> ran_on(2);
+        std::vector<int> runs(2, 0);
+        pool.run(2, [&](std::size_t part) {
+            ran_on[part] = std::this_thread::get_id();
+            runs[part] += 1;
+        });
+        ASSERT_EQ(runs, (std::vector<int>{1, 1})) << "round " << round;
+        caller_ran_both = ran_on[1] == caller;
+    }
+    EXPECT_TRUE(caller_ran_both) << "part 1 always waited for a worker";
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (pool.late_arrivals() == late_before && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_GT(pool.late_arrivals(), late_before) << "no worker came to a batch after it was closed";
 }
 
 TEST(thread_pool, a_worker_that_ran_a_part_sleeps_soon_after) {

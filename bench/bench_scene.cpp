@@ -458,8 +458,10 @@ void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row r
         }
         // Nothing but the call is timed: the contacts' points are counted
         // after the loop, on the last answer (pausing the timer in the loop
-        // costs time of its own). Each iteration frees the last answer of
-        // the row that returns one, as a caller's would go.
+        // costs time of its own). The row that returns an answer frees the
+        // last one before the next call, as a caller's answer going out of
+        // scope each step would (freed after, the OS would map the next one
+        // in other pages, which costs more).
         double pairs = 0;
         obbsat::scene_contacts found;
         for (auto _ : state) {
@@ -471,6 +473,7 @@ void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row r
                 if (row == contacts_row::contacts_into) {
                     obbsat::find_contacts(view, options, 0.0f, found);
                 } else {
+                    found = obbsat::scene_contacts();
                     found = obbsat::find_contacts(view, options);
                 }
                 benchmark::DoNotOptimize(found.contacts.data());

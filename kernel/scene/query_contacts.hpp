@@ -7,12 +7,13 @@
 // computed, one of the two orders is read or written at random. Here it is
 // the rows of the b boxes, read at random (the a rows in order, the kernel
 // fetching the rows of the pairs ahead); the contacts themselves are written
-// in order, once. Computing each contact in the sweep, on records the cache
-// held, then reading it back through a tag in the answer's order took more at
-// 1M boxes (92.6 against 82.2 ms of CPU, find_contacts_into, one thread): it
-// wrote every contact twice (a block, then the answer) and read the blocks at
-// random, 48 bytes a pair against a row's 32, and it sorted 12-byte tagged
-// pairs where the query sorts 8-byte ones.
+// in order, once. Computing each contact in the sweep instead, on records the
+// cache held, then reading it back through a tag in the answer's order cost
+// more (1M boxes, one thread, a kept answer: 91-95 ms of CPU against 74-76,
+// find_pairs 54-58, on a busy machine): it wrote every contact twice (a
+// block, then the answer), read the blocks at random, 48 bytes a pair against
+// a row's 24 or 32, and sorted 12-byte tagged pairs where the query sorts 8-byte
+// ones.
 #pragma once
 
 #include "dispatch/contact_kernel_table.hpp"

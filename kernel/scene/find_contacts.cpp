@@ -1,7 +1,8 @@
-// find_contacts: the scene query with each pair's contact computed as the
-// pair is found (query_contacts.hpp), and with a margin the pairs of widened
-// stand-ins kept when their contacts have points (obbsat/find_contacts.hpp
-// says why the stand-ins lose none); pair_finder's frames with contacts.
+// find_contacts: the scene query's pairs sorted into the answer, then their
+// contacts on the caller's rows (query_contacts.hpp); with a margin, the
+// pairs of widened stand-ins kept when their contacts have points
+// (obbsat/find_contacts.hpp says why the stand-ins lose none); pair_finder's
+// frames with contacts.
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "methods/method_check.hpp"
@@ -10,8 +11,6 @@
 #include "scene/query_input.hpp"
 #include "scene/search_common.hpp"
 #include "support/executor_scope.hpp"
-#include "support/huge_pages.hpp"
-#include "support/work_shares.hpp"
 
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
@@ -19,8 +18,6 @@
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/ref/bounds.hpp>
 #include <obbsat/ref/contact.hpp>
-
-#include <algorithm>
 
 #include <cfloat>
 #include <cmath>
@@ -35,27 +32,13 @@ namespace obbsat {
 
 namespace detail {
 
-void pair_search::collect_with_contacts(const query_input& input, query_contacts& contacts) {
-    static_assert(sizeof(record) == query_contacts::record_floats * sizeof(float),
-                  "the contact kernel reads the query's records with this stride");
-    contacts.start(input.a_count + (input.b == nullptr ? 0 : input.b_count));
-    for (part& p : parts_) {
-        p.contacts.clear();
-    }
-    struct handed {
-        query_contacts*& to;
-        ~handed() { to = nullptr; }
-    } const hand{contacts_};
-    contacts_ = &contacts;
+void pair_search::collect_into(const query_input& input, std::vector<pair_index>& out) {
     run(input, pair_chunk_sink{});
-    std::vector<const unit_contacts*> units(used_parts_);
-    for (std::size_t i = 0; i < used_parts_; ++i) {
-        units[i] = &parts_[i].contacts;
-    }
-    // One group per thread of the output sort, as sort_found groups the units.
-    const std::size_t groups = std::max<std::size_t>(
-        1, std::min(std::max<std::size_t>(used_parts_, 1), parts_for(n_, options_.threads, min_boxes_per_part)));
-    contacts.sort(units, groups, self_ ? n_ : a_count_);
+    // The sort writes into out's memory: a caller's answer kept between
+    // calls takes no fresh page.
+    pairs_.swap(out);
+    sort_found();
+    pairs_.swap(out);
 }
 
 }  // namespace detail
@@ -161,42 +144,6 @@ rect_pose stand_in_of(const ref::box_bounds& b, float margin) {
     return p;
 }
 
-/// The sorted pairs of `contacts` that `keep(pair, contact)` accepts, each
-/// with its contact, into `found`. The contacts are read in the pairs'
-/// order, at random in the blocks: each is fetched a few pairs ahead.
-template <class Keep>
-void answer_of(const detail::query_contacts& contacts, scene_contacts& found, const Keep& keep) {
-    const std::vector<detail::tagged_pair>& sorted = contacts.sorted();
-    const std::size_t n = sorted.size();
-    found.pairs.clear();
-    found.contacts.clear();
-    found.pairs.reserve(n);
-    found.contacts.reserve(n);
-    // Fresh memory for a large answer: in huge pages, one fault per 2 MiB.
-    detail::advise_huge_pages(found.pairs.data(), n * sizeof(pair_index));
-    detail::advise_huge_pages(found.contacts.data(), n * sizeof(contact));
-    constexpr std::size_t ahead = 48;
-    for (std::size_t k = 0; k < n; ++k) {
-        if (k + ahead < n) {
-            contacts.fetch(sorted[k + ahead]);
-        }
-        const pair_index pair{sorted[k].a, sorted[k].b};
-        const contact& c = contacts.contact_of(sorted[k]);
-        if (keep(pair, c)) {
-            found.pairs.push_back(pair);
-            found.contacts.push_back(c);
-        }
-    }
-}
-
-bool precedes(const pair_index& x, const pair_index& y) {
-    return x.a < y.a || (x.a == y.a && x.b < y.b);
-}
-
-bool same_pair(const pair_index& x, const pair_index& y) {
-    return x.a == y.a && x.b == y.b;
-}
-
 /// The checks find_contacts makes before any work: the margin, the rows'
 /// precision, the method on their kind, and that contacts accept every row
 /// (the query checks the rows themselves). Returns the contact kernel.
@@ -207,59 +154,82 @@ detail::contact_fn checked_kernel(const box_view& boxes, const collide_options& 
     return kernel;
 }
 
-/// out[k] = the contact of a's row pairs[k].a and b's row pairs[k].b, split over `threads`.
-void contacts_of_rows(detail::contact_fn kernel, const box_view& a, const box_view& b,
-                      const std::vector<pair_index>& pairs, contact* out, unsigned threads) {
-    // A contact costs a few nanoseconds; parts start on multiples of the
-    // widest backend's vector.
-    constexpr std::size_t min_pairs_per_part = 2048;
-    constexpr std::size_t part_alignment = 64;
-    const std::size_t count = pairs.size();
-    const std::size_t parts = detail::parts_for(count, threads, min_pairs_per_part);
-    detail::run_parts(parts, [&](std::size_t part) {
-        const auto [begin, end] = detail::aligned_share_of(count, part, parts, part_alignment);
-        if (begin < end) {
-            kernel(a.floats(), a.stride(), b.floats(), b.stride(), pairs.data() + begin, end - begin, 0.0f,
-                   out + begin);
-        }
-    });
+/// The contact rows of one box set: both boxes of a pair read from `boxes`.
+detail::contact_rows rows_of(detail::contact_fn kernel, const box_view& boxes, float margin) {
+    return detail::contact_rows{kernel, boxes.floats(), boxes.stride(), boxes.floats(), boxes.stride(), margin};
 }
 
-/// The contact blocks of find_contacts, kept between calls: a query of a
-/// million boxes writes some 120 MB of them, and fresh memory costs a page
-/// fault per page on every call. A call that finds them taken (another
-/// thread's call running) makes its own, which it drops.
-class kept_contacts {
+/// What find_contacts with a margin keeps, kept between calls. A call that
+/// finds it taken (another thread's call running) makes its own, which it
+/// drops.
+class kept_near_contacts {
 public:
-    kept_contacts() {
+    kept_near_contacts() {
         const std::lock_guard<std::mutex> lock(mutex());
         held_ = std::move(spare());
         if (!held_) {
-            held_ = std::make_unique<detail::query_contacts>();
+            held_ = std::make_unique<detail::near_contacts>();
         }
     }
-    ~kept_contacts() {
+    ~kept_near_contacts() {
         const std::lock_guard<std::mutex> lock(mutex());
         if (!spare()) {
             spare() = std::move(held_);
         }
     }
-    kept_contacts(const kept_contacts&) = delete;
-    kept_contacts& operator=(const kept_contacts&) = delete;
+    kept_near_contacts(const kept_near_contacts&) = delete;
+    kept_near_contacts& operator=(const kept_near_contacts&) = delete;
 
-    detail::query_contacts& get() { return *held_; }
+    detail::near_contacts& get() { return *held_; }
 
 private:
     static std::mutex& mutex() {
         static std::mutex m;
         return m;
     }
-    static std::unique_ptr<detail::query_contacts>& spare() {
-        static std::unique_ptr<detail::query_contacts> kept;
+    static std::unique_ptr<detail::near_contacts>& spare() {
+        static std::unique_ptr<detail::near_contacts> kept;
         return kept;
     }
-    std::unique_ptr<detail::query_contacts> held_;
+    std::unique_ptr<detail::near_contacts> held_;
 };
+
+/// find_contacts once its checks have passed, margin 0: the method's pairs
+/// sorted straight into found.pairs, then their contacts into found.contacts.
+void touching_contacts(const box_view& boxes, const collide_options& options, detail::contact_fn kernel,
+                       scene_contacts& found) {
+    detail::pair_search search(options);
+    search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), found.pairs);
+    detail::contacts_of_answer(rows_of(kernel, boxes, 0.0f), found.pairs, found.contacts, options.threads);
+}
+
+/// find_contacts once its checks have passed, with a margin: the method's
+/// pairs, then the pairs of widened stand-ins (obbsat/find_contacts.hpp says
+/// why they lose none), each kept when the method reported it or its contact
+/// at the margin has a point.
+void near_contacts_of(const box_view& boxes, const collide_options& options, detail::contact_fn kernel, float margin,
+                      scene_contacts& found) {
+    kept_near_contacts kept;
+    detail::near_contacts& near = kept.get();
+    // The method's pairs first: this query also checks every box.
+    {
+        detail::pair_search search(options);
+        search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), near.reported);
+    }
+    near.stand_ins.resize(boxes.size());
+    for (std::size_t i = 0; i < near.stand_ins.size(); ++i) {
+        near.stand_ins[i] = stand_in_of(bounds_of_row(boxes, i), margin);
+    }
+    collide_options near_options = options;
+    near_options.test = method::exact;
+    {
+        detail::pair_search search(near_options);
+        search.collect_into(
+            search.bound_doubles(detail::input_of(box_view(near.stand_ins).with_filters(boxes.filters()), nullptr)),
+            near.candidates);
+    }
+    near.answer(rows_of(kernel, boxes, margin), options.threads, found);
+}
 
 }  // namespace
 
@@ -275,45 +245,20 @@ void find_contacts(box_view boxes, const collide_options& options, float margin,
     }
     const detail::executor_scope scope(options.executor);
     const detail::contact_fn kernel = checked_kernel(boxes, options, "find_contacts");
-    kept_contacts kept;
-    detail::query_contacts& contacts = kept.get();
-    if (margin == 0.0f) {
-        // The method's pairs, each with its contact computed on the query's
-        // own records as the pair is found.
-        detail::pair_search search(options);
-        contacts.read_records(kernel, 0.0f);
-        search.collect_with_contacts(search.bound_doubles(detail::input_of(boxes, nullptr)), contacts);
-        answer_of(contacts, found, [](const pair_index&, const contact&) { return true; });
-        return;
-    }
-
-    // The method's pairs first: this query also checks every box.
-    const std::vector<pair_index> colliding = find_pairs(boxes, options);
-    std::vector<rect_pose> stand_ins(boxes.size());
-    for (std::size_t i = 0; i < stand_ins.size(); ++i) {
-        stand_ins[i] = stand_in_of(bounds_of_row(boxes, i), margin);
-    }
-    // The candidates are the pairs of stand-ins, their contacts computed on
-    // the boxes' own rows as each is found.
-    collide_options near_options = options;
-    near_options.test = method::exact;
-    detail::pair_search search(near_options);
-    contacts.read_rows(kernel, margin, boxes.floats(), boxes.stride());
-    search.collect_with_contacts(
-        search.bound_doubles(detail::input_of(box_view(stand_ins).with_filters(boxes.filters()), nullptr)),
-        contacts);
-
-    // Both lists are sorted; a candidate stays when the method reported it
-    // or its contact has a point. Every reported pair is a candidate, as its
-    // bounds overlap and the stand-ins contain them.
-    std::size_t next = 0;
-    answer_of(contacts, found, [&](const pair_index& candidate, const contact& c) {
-        while (next < colliding.size() && precedes(colliding[next], candidate)) {
-            ++next;
+    try {
+        if (margin == 0.0f) {
+            touching_contacts(boxes, options, kernel, found);
+        } else {
+            near_contacts_of(boxes, options, kernel, margin, found);
         }
-        const bool reported = next < colliding.size() && same_pair(colliding[next], candidate);
-        return reported || c.point_count > 0;
-    });
+    } catch (const invalid_input&) {
+        throw;  // a box the query refused: found is as it was
+    } catch (...) {
+        // Out of memory once found may be partly written: never half an answer.
+        found.pairs.clear();
+        found.contacts.clear();
+        throw;
+    }
 }
 
 const scene_contacts& pair_finder::find_contacts(box_view boxes) {
@@ -341,8 +286,9 @@ const scene_contacts& pair_finder::frame_contacts(const box_view& a, const box_v
         contacts_ = std::make_unique<scene_contacts>();
     }
     contacts_->pairs.assign(pairs.begin(), pairs.end());
-    contacts_->contacts.resize(pairs.size());
-    contacts_of_rows(kernel, a, b == nullptr ? a : *b, pairs, contacts_->contacts.data(), options.threads);
+    const box_view& rows_b = b == nullptr ? a : *b;
+    detail::contacts_of_answer(detail::contact_rows{kernel, a.floats(), a.stride(), rows_b.floats(), rows_b.stride(), 0.0f},
+                               contacts_->pairs, contacts_->contacts, options.threads);
     return *contacts_;
 }
 

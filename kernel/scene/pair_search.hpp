@@ -63,7 +63,6 @@
 #include "scene/id_rows.hpp"
 #include "scene/kept_pairs.hpp"
 #include "scene/pair_blocks.hpp"
-#include "scene/query_contacts.hpp"
 #include "scene/query_input.hpp"
 #include "sort/pair_sort.hpp"
 #include "sort/radix_sort.hpp"
@@ -110,10 +109,10 @@ public:
     /// are released before the sorted copy is made, and nothing is kept.
     std::vector<pair_index> collect_once(const query_input& input);
 
-    /// Runs the query with the contact of each pair computed as the pair is
-    /// found (query_contacts.hpp); the pairs, sorted by (a, b), are then
-    /// contacts.sorted(). [find_contacts.cpp]
-    void collect_with_contacts(const query_input& input, query_contacts& contacts);
+    /// Runs the query and sorts its pairs by (a, b) into `out`, in the
+    /// memory `out` holds; `out` changes only once the query has run (every
+    /// row checked). [find_contacts.cpp]
+    void collect_into(const query_input& input, std::vector<pair_index>& out);
 
     const find_pairs_stats& stats() const { return stats_; }
 
@@ -151,7 +150,6 @@ private:
         // Colliding pairs in the caller's indices.
         pair_blocks found;
         kept_share keep;  ///< this share of the kept candidates (kept_pairs.hpp)
-        unit_contacts contacts;  ///< a query with contacts: its pairs with their contacts instead of `found`
         std::size_t tested = 0;
         std::size_t slow_path = 0;
         double kernel_seconds = 0;
@@ -200,7 +198,7 @@ private:
     /// A double query that keeps nothing and computes no contacts: nothing
     /// after the order reads a float row (records_, or bound_doubles' rows);
     /// the sort works in records64_'s memory and copy_double_records fills it.
-    bool double_records_only() const { return doubles_ && !kept_.keep && contacts_ == nullptr; }
+    bool double_records_only() const { return doubles_ && !kept_.keep; }
     /// copy_records of rows [begin, end) of the order for a double query that
     /// keeps nothing and computes no contacts: the double records, and their
     /// bounds computed again from them.
@@ -344,7 +342,6 @@ private:
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;
 
-    query_contacts* contacts_ = nullptr;  ///< collect_with_contacts: where flush_candidates hands the pairs found
     kept_pairs kept_;  ///< pair_finder's kept candidates and the policy that keeps them
     kept_filters kept_filters_;  ///< the pair filters kept_ was built with (kept_filters.hpp)
 

@@ -1,114 +1,112 @@
-// The contacts of a scene query's pairs, computed as the pairs are found (query_contacts.hpp).
+// The contacts of a scene query's sorted pairs, on the caller's rows (query_contacts.hpp).
 #include "scene/query_contacts.hpp"
 
-#include <obbsat/error.hpp>
+#include "support/fetch_ahead.hpp"
+#include "support/huge_pages.hpp"
+#include "support/work_shares.hpp"
 
-#include <cstdint>
-#include <limits>
+#include <algorithm>
 
 namespace obbsat::detail {
 
-void query_contacts::read_records(contact_fn kernel, float margin) {
-    kernel_ = kernel;
-    margin_ = margin;
-    rows_ = nullptr;
-    stride_ = record_floats;
+namespace {
+
+// A contact costs a few nanoseconds: below this many pairs a part, waking
+// another core costs more than it saves. Parts start on multiples of the
+// widest backend's vector.
+constexpr std::size_t min_pairs_per_part = 2048;
+constexpr std::size_t part_alignment = 64;
+
+/// Contacts appended a block at a time go through a buffer of this many
+/// (96 KiB, which L2 holds and the allocator serves from its heap).
+constexpr std::size_t appended_block = 2048;
+
+/// Makes room in `out` for `count` elements without keeping its old ones
+/// (all are about to be overwritten): fresh memory, in huge pages for a
+/// large answer, only when its capacity is short.
+template <class T>
+void make_room(std::vector<T>& out, std::size_t count) {
+    if (out.capacity() < count) {
+        out.clear();
+        out.reserve(count);
+        advise_huge_pages(out.data(), count * sizeof(T));
+    }
 }
 
-void query_contacts::read_rows(contact_fn kernel, float margin, const float* rows, std::size_t stride) {
-    kernel_ = kernel;
-    margin_ = margin;
-    rows_ = rows;
-    stride_ = stride;
+}  // namespace
+
+void contacts_of_pairs(const contact_rows& rows, const pair_index* pairs, std::size_t count, contact* out,
+                       unsigned threads) {
+    const std::size_t parts = parts_for(count, threads, min_pairs_per_part);
+    run_parts(parts, [&](std::size_t part) {
+        const auto [begin, end] = aligned_share_of(count, part, parts, part_alignment);
+        if (begin < end) {
+            rows.kernel(rows.a, rows.a_stride, rows.b, rows.b_stride, pairs + begin, end - begin, rows.margin,
+                        out + begin);
+        }
+    });
 }
 
-void query_contacts::start(std::size_t boxes) {
-    // About two pairs a box: a large scene fills large blocks.
-    block_size_ = boxes >= contact_block::block_contacts ? contact_block::block_contacts
-                                                         : contact_block::small_contacts;
-    taken_ = 0;
-    bases_.clear();
-    sorted_.clear();
-}
-
-void query_contacts::make_room(unit_contacts& unit, std::size_t count) {
-    if (unit.current != nullptr && unit.used + count <= unit.current->contacts.size()) {
+void contacts_of_answer(const contact_rows& rows, const std::vector<pair_index>& pairs, std::vector<contact>& out,
+                        unsigned threads) {
+    const std::size_t n = pairs.size();
+    make_room(out, n);
+    if (out.size() >= n || parts_for(n, threads, min_pairs_per_part) > 1) {
+        // Kept elements enough (a caller's answer kept between calls), or
+        // several threads, which write their shares in place: the new
+        // elements zeroed once by resize, a cost only while the answer grows.
+        out.resize(n);
+        contacts_of_pairs(rows, pairs.data(), n, out.data(), threads);
         return;
     }
-    {
-        const std::lock_guard<std::mutex> lock(pool_mutex_);
-        // Tags are 32 bits: block number times block_contacts plus a place.
-        if (taken_ >= (std::size_t{std::numeric_limits<std::uint32_t>::max()} + 1) / contact_block::block_contacts) {
-            throw invalid_input("find_contacts: more than 4294967295 pairs in one query");
+    // One thread: the kept elements in place, then the rest appended.
+    const std::size_t kept = out.size();
+    contacts_of_pairs(rows, pairs.data(), kept, out.data(), 1);
+    scratch_vector<contact> block(std::min(appended_block, n - kept));
+    for (std::size_t begin = kept; begin < n; begin += appended_block) {
+        const std::size_t count = std::min(appended_block, n - begin);
+        // The kernel fetches the rows of the pairs ahead only within one
+        // call: the next block's first ones are asked for here.
+        const std::size_t next_end = std::min(n, begin + count + random_rows_ahead);
+        for (std::size_t k = begin + count; k < next_end; ++k) {
+            fetch_into_l2(rows.a + rows.a_stride * pairs[k].a);
+            fetch_into_l2(rows.b + rows.b_stride * pairs[k].b);
         }
-        if (taken_ == pool_.size()) {
-            pool_.push_back(std::make_unique<contact_block>());
-            pool_.back()->number = static_cast<std::uint32_t>(taken_);
-        }
-        contact_block& block = *pool_[taken_];
-        if (block.contacts.size() < block_size_) {
-            // Unwritten until the kernel writes (scratch_vector.hpp); huge pages from 4 MiB.
-            block.contacts = scratch_records<contact>(block_size_);
-            block.pairs = scratch_records<tagged_pair>(block_size_);
-        }
-        unit.current = &block;
-        ++taken_;
+        rows.kernel(rows.a, rows.a_stride, rows.b, rows.b_stride, pairs.data() + begin, count, rows.margin,
+                    block.data());
+        out.insert(out.end(), block.begin(), block.begin() + static_cast<std::ptrdiff_t>(count));
     }
-    unit.used = 0;
-    unit.spans.push_back({unit.current->pairs.data(), 0});
 }
 
-void query_contacts::take(unit_contacts& unit, const float* records, const pair_index* candidates,
-                          const std::uint8_t* verdicts, std::size_t count, const pair_index* caller,
-                          std::size_t kept) {
-    if (kept == 0) {
-        return;
+void near_contacts::answer(const contact_rows& rows, unsigned threads, scene_contacts& found) {
+    const std::size_t n = candidates.size();
+    if (contacts_.size() < n) {
+        contacts_ = scratch_records<contact>(n);  // unwritten until the kernel writes; huge pages from 4 MiB
     }
-    make_room(unit, kept);
-    contact* const out = unit.current->contacts.data() + unit.used;
-    if (rows_ == nullptr) {
-        // The colliding candidates, in the query's order, in the order the
-        // caller's pairs were written: their records were just tested.
-        if (unit.colliding.size() < count) {
-            unit.colliding.resize(count);
+    contacts_of_pairs(rows, candidates.data(), n, contacts_.data(), threads);
+    // Both lists are sorted; a candidate stays when the method reported it
+    // or its contact has a point. At most every candidate stays: room for
+    // all of them costs no page the answer does not write.
+    make_room(found.pairs, n);
+    make_room(found.contacts, n);
+    found.pairs.clear();
+    found.contacts.clear();
+    const auto precedes = [](const pair_index& x, const pair_index& y) {
+        return x.a < y.a || (x.a == y.a && x.b < y.b);
+    };
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const pair_index& candidate = candidates[k];
+        while (next < reported.size() && precedes(reported[next], candidate)) {
+            ++next;
         }
-        pair_index* const colliding = unit.colliding.data();
-        std::size_t k = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            colliding[k] = candidates[i];
-            k += verdicts[i] != 0 ? 1u : 0u;
+        const bool is_reported =
+            next < reported.size() && reported[next].a == candidate.a && reported[next].b == candidate.b;
+        if (is_reported || contacts_[k].point_count > 0) {
+            found.pairs.push_back(candidate);
+            found.contacts.push_back(contacts_[k]);
         }
-        kernel_(records, record_floats, records, record_floats, colliding, kept, margin_, out);
-    } else {
-        kernel_(rows_, stride_, rows_, stride_, caller, kept, margin_, out);
     }
-    tagged_pair* const pairs = unit.current->pairs.data() + unit.used;
-    const std::size_t first_tag = unit.current->number * contact_block::block_contacts + unit.used;
-    for (std::size_t k = 0; k < kept; ++k) {
-        pairs[k] = tagged_pair{caller[k].a, caller[k].b, static_cast<std::uint32_t>(first_tag + k)};
-    }
-    unit.used += kept;
-    unit.spans.back().size += kept;
-}
-
-void query_contacts::sort(const std::vector<const unit_contacts*>& units, std::size_t groups, std::size_t a_count) {
-    bases_.resize(pool_.size());
-    for (std::size_t b = 0; b < pool_.size(); ++b) {
-        bases_[b] = pool_[b]->contacts.data();
-    }
-    // The units in unit order, one source per group of threads (sort_pairs
-    // scatters one share per source); pairs are unique, so the answer does
-    // not depend on the grouping.
-    std::vector<pair_source<tagged_pair>> sources(groups);
-    for (std::size_t i = 0; i < units.size(); ++i) {
-        pair_source<tagged_pair>& into = sources[i * groups / units.size()];
-        into.insert(into.end(), units[i]->spans.begin(), units[i]->spans.end());
-    }
-    if (sort_scratch_.size() < groups) {
-        sort_scratch_.resize(groups);
-    }
-    sorted_.clear();
-    sort_pairs(sources, a_count, sorted_, sort_scratch_);
 }
 
 }  // namespace obbsat::detail

@@ -1,126 +1,73 @@
-// The contacts a scene query computes while it finds its pairs (find_contacts,
-// obbsat/find_contacts.hpp). Internal to the library, baseline ISA.
+// The contacts of a scene query's pairs (find_contacts, obbsat/find_contacts.hpp),
+// computed on the caller's rows once the pairs are sorted, each written once,
+// straight into its place in the answer. Internal to the library, baseline ISA.
 //
-// Why during the query: when the sweep has tested a block of candidates
-// (pair_search::flush_candidates), the records of the colliding ones are in
-// the cache, in the query's order. The contact kernel run then reads them
-// there; run over the sorted answer afterwards, it would read one record at
-// random per pair from memory (the caller's order has nothing to do with the
-// plane's). So each unit of the sweep hands its colliding pairs here, block
-// by block: their contacts go into blocks of a pool kept between queries,
-// each pair beside them tagged with where its contact is, and the answer is
-// the tagged pairs sorted by (a, b) as find_pairs sorts its pairs, the
-// contacts read through the tags.
-//
-// Two sources of rows:
-//   - the query's own records (margin 0: the query runs on the boxes
-//     themselves, and its records are their rows, copied verbatim);
-//   - the caller's rows, through the pairs in the caller's indices (with a
-//     margin the query runs on stand-ins, whose records are not the boxes).
-// Either way each contact is the kernel's on the same floats, so bit for bit
-// contact_pairs' on the caller's rows.
+// Why after the sort: the answer is in the caller's order, (a, b), and the
+// query finds its pairs in the plane's. Whichever way the contacts are
+// computed, one of the two orders is read or written at random. Here it is
+// the rows of the b boxes, read at random (the a rows in order, the kernel
+// fetching the rows of the pairs ahead); the contacts themselves are written
+// in order, once. Computing each contact in the sweep instead, on records the
+// cache held, then reading it back through a tag in the answer's order cost
+// more (1M boxes, one thread, a kept answer: 91-95 ms of CPU against 74-76,
+// find_pairs 54-58, on a busy machine): it wrote every contact twice (a
+// block, then the answer), read the blocks at random, 48 bytes a pair against
+// a row's 24 or 32, and sorted 12-byte tagged pairs where the query sorts 8-byte
+// ones.
 #pragma once
 
 #include "dispatch/contact_kernel_table.hpp"
-#include "sort/pair_sort.hpp"
-#include "support/fetch_ahead.hpp"
 #include "support/scratch_vector.hpp"
 
 #include <obbsat/contact_manifold.hpp>
+#include <obbsat/find_contacts.hpp>
 #include <obbsat/rect.hpp>
 
 #include <cstddef>
-#include <cstdint>
-#include <memory>
-#include <mutex>
 #include <vector>
 
 namespace obbsat::detail {
 
-/// Contacts of one block of the pool, and their pairs tagged with where each
-/// contact is (block number times block_contacts plus its place). A query of
-/// many boxes takes blocks of block_contacts (6 MiB: huge pages, so that
-/// neither their first writes nor the sorted answer's reads at random take a
-/// page fault or a TLB miss per 4 KiB); a small one takes small_contacts, as
-/// each unit writes into a block of its own.
-struct contact_block {
-    static constexpr std::size_t block_contacts = std::size_t{1} << 17;
-    static constexpr std::size_t small_contacts = std::size_t{1} << 13;
-    scratch_records<contact> contacts;
-    scratch_records<tagged_pair> pairs;
-    std::uint32_t number = 0;  ///< its place in the pool
+/// The contact kernel on the caller's rows: box a of a pair is the row at
+/// a + a_stride * pair.a (in floats), box b the row at b + b_stride * pair.b.
+struct contact_rows {
+    contact_fn kernel = nullptr;
+    const float* a = nullptr;
+    std::size_t a_stride = 0;
+    const float* b = nullptr;
+    std::size_t b_stride = 0;
+    float margin = 0.0f;
 };
 
-/// What one unit of the sweep found: its pairs block by block, in the order found.
-struct unit_contacts {
-    pair_source<tagged_pair> spans;  ///< one per block it filled
-    contact_block* current = nullptr;
-    std::size_t used = 0;                ///< contacts in `current`
-    std::vector<pair_index> colliding;   ///< working memory: a flush's colliding candidates
+/// out[k] = the contact of pairs[k] on `rows`, k < count, split over `threads`.
+void contacts_of_pairs(const contact_rows& rows, const pair_index* pairs, std::size_t count, contact* out,
+                       unsigned threads);
 
-    void clear() {
-        spans.clear();
-        current = nullptr;
-        used = 0;
-    }
-};
+/// `out` = the contact of each of `pairs` on `rows`, each element written
+/// once: `out` keeps its memory, its old elements are overwritten in place
+/// and only what it grows by is new (appended by one thread a block at a
+/// time; std::vector would zero it first, a second write of memory the
+/// caches do not hold).
+void contacts_of_answer(const contact_rows& rows, const std::vector<pair_index>& pairs, std::vector<contact>& out,
+                        unsigned threads);
 
-class query_contacts {
+/// What find_contacts with a margin keeps from one call to the next (a
+/// million boxes' worth is some 200 MB, and fresh memory costs the OS a page
+/// fault and a zeroing per page on every call), and the answer it makes of
+/// the candidates.
+class near_contacts {
 public:
-    /// Contacts of each pair of the query's own records (records of
-    /// `record_floats` floats), on the kernel `kernel`, with `margin`.
-    void read_records(contact_fn kernel, float margin);
-    /// Contacts of each pair read from the caller's rows instead (`rows`,
-    /// `stride` floats apart), through the pairs in the caller's indices.
-    void read_rows(contact_fn kernel, float margin, const float* rows, std::size_t stride);
+    std::vector<pair_index> reported;    ///< the pairs the method reports, sorted by (a, b)
+    std::vector<rect_pose> stand_ins;    ///< each box's widened stand-in
+    std::vector<pair_index> candidates;  ///< the pairs of stand-ins, sorted by (a, b)
 
-    /// Forgets the last query's contacts (the blocks stay for this one) and
-    /// sizes the blocks for a query of `boxes` rectangles.
-    void start(std::size_t boxes);
-
-    /// Takes the `kept` colliding pairs of one flush: `candidates` (the
-    /// query's order, `count` of them, colliding where verdicts[i] != 0,
-    /// each the caller's way round) over `records`, and `caller` the same
-    /// `kept` pairs in the caller's indices. Called by several units at once.
-    void take(unit_contacts& unit, const float* records, const pair_index* candidates, const std::uint8_t* verdicts,
-              std::size_t count, const pair_index* caller, std::size_t kept);
-
-    /// The pairs of `units` (in unit order, a group per thread of `groups`),
-    /// sorted by (a, b) into `sorted`; every a < a_count.
-    void sort(const std::vector<const unit_contacts*>& units, std::size_t groups, std::size_t a_count);
-
-    /// The sorted pairs (after sort) and the contact of each through its tag.
-    const std::vector<tagged_pair>& sorted() const { return sorted_; }
-    const contact& contact_of(const tagged_pair& p) const {
-        return bases_[p.tag / contact_block::block_contacts][p.tag % contact_block::block_contacts];
-    }
-    /// Fetches the contact of `p` towards the cache ahead of its read; a
-    /// contact (48 bytes) may straddle two cache lines.
-    void fetch(const tagged_pair& p) const {
-        const char* c = reinterpret_cast<const char*>(&contact_of(p));
-        fetch_into_l2(c);
-        fetch_into_l2(c + sizeof(contact) - 1);
-    }
-
-    static constexpr std::size_t record_floats = 8;
+    /// `found` = the candidates the method reported or whose contact on
+    /// `rows` has a point, each with its contact; every reported pair is a
+    /// candidate.
+    void answer(const contact_rows& rows, unsigned threads, scene_contacts& found);
 
 private:
-    /// A block with room for `count` more contacts for `unit`.
-    void make_room(unit_contacts& unit, std::size_t count);
-
-    contact_fn kernel_ = nullptr;
-    float margin_ = 0.0f;
-    const float* rows_ = nullptr;  ///< nullptr: the query's records
-    std::size_t stride_ = record_floats;
-
-    std::mutex pool_mutex_;  ///< guards pool_ and taken_ while units take blocks
-    std::vector<std::unique_ptr<contact_block>> pool_;
-    std::size_t taken_ = 0;  ///< blocks of the pool this query took
-    std::size_t block_size_ = contact_block::small_contacts;  ///< contacts per block in this query
-    std::vector<const contact*> bases_;  ///< each block's contacts, for contact_of
-
-    std::vector<tagged_pair> sorted_;
-    std::vector<pair_sort_scratch<tagged_pair>> sort_scratch_;
+    scratch_records<contact> contacts_;  ///< the candidates' contacts
 };
 
 }  // namespace obbsat::detail

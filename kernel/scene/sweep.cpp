@@ -97,12 +97,6 @@ void pair_search::flush_candidates(part& p) const {
         out[kept] = caller_pair(candidates[i]);
         kept += p.verdicts[i] != 0 ? 1u : 0u;
     }
-    if (contacts_ != nullptr) {
-        // A query with contacts keeps the pairs beside their contacts, computed
-        // now while the candidates' records are in the cache (query_contacts.hpp).
-        contacts_->take(p.contacts, records_.data()->v, candidates, p.verdicts.data(), count, out, kept);
-        kept = 0;
-    }
     p.found.add(kept);
     p.candidate_count = 0;
 }

@@ -231,39 +231,93 @@ TEST(FindContacts, WithAMarginTheSameOnEveryBackendAndThreadCount) {
     }
 }
 
-TEST(FindContacts, LargeAndSmallScenesInTurnReuseTheKeptBlocks) {
-    // A scene large enough for the large blocks, then small ones (small
-    // blocks taken where large ones were kept), then the large one again.
-    const obbsat::pose_records large(scene_of(140000, 23));
+TEST(FindContacts, IntoAKeptAnswerLargerOrSmallerOnEveryThreadCount) {
+    // An answer kept from call to call, in turn larger and smaller than the
+    // next: its old contacts are overwritten in place and only those past
+    // them are new (appended by one thread, written in place by several).
+    const obbsat::pose_records large(scene_of(60000, 23));
     const obbsat::pose_records small(scene_of(2000, 24));
+    for (const unsigned threads : {1u, 2u, 3u}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        const auto options = exact_on(obbsat::backend::automatic, threads);
+        const obbsat::scene_contacts want_large = contacts_of_found_pairs(large, options);
+        const obbsat::scene_contacts want_small = contacts_of_found_pairs(small, options);
+        ASSERT_GT(want_large.pairs.size(), 2 * want_small.pairs.size());
+        obbsat::scene_contacts found;
+        found.contacts.resize(10);  // a few contacts before the first answer: overwritten, never kept
+        found.pairs.resize(10);
+        obbsat::find_contacts(small, options, 0.0f, found);
+        expect_same(found, want_small);
+        obbsat::find_contacts(large, options, 0.0f, found);
+        expect_same(found, want_large);
+        // Memory enough: the next answers take no fresh memory.
+        const pair_index* const pairs_memory = found.pairs.data();
+        const contact* const contacts_memory = found.contacts.data();
+        obbsat::find_contacts(small, options, 0.0f, found);
+        expect_same(found, want_small);
+        obbsat::find_contacts(large, options, 0.0f, found);
+        expect_same(found, want_large);
+        EXPECT_EQ(found.pairs.data(), pairs_memory);
+        EXPECT_EQ(found.contacts.data(), contacts_memory);
+        // With a margin, into the same kept answer.
+        const obbsat::scene_contacts near_large = obbsat::find_contacts(large, options, 0.05f);
+        const obbsat::scene_contacts near_small = obbsat::find_contacts(small, options, 0.05f);
+        ASSERT_GT(near_large.pairs.size(), want_large.pairs.size());
+        obbsat::find_contacts(small, options, 0.05f, found);
+        expect_same(found, near_small);
+        obbsat::find_contacts(large, options, 0.05f, found);
+        expect_same(found, near_large);
+    }
+}
+
+TEST(FindContacts, ARefusedCallLeavesAKeptAnswerAsItWas) {
+    // The query refuses the box; the answer of the call before stays whole.
+    const obbsat::pose_records store(scene_of(3000, 27));
+    std::vector<obbsat::rect_pose> bad = scene_of(3000, 28);
+    bad[1234].half_extents.x = std::numeric_limits<float>::infinity();
     const auto options = exact_on(obbsat::backend::automatic, 2);
-    const obbsat::scene_contacts want_large = contacts_of_found_pairs(large, options);
-    const obbsat::scene_contacts want_small = contacts_of_found_pairs(small, options);
-    for (int round = 0; round < 2; ++round) {
-        expect_same(obbsat::find_contacts(large, options), want_large);
-        expect_same(obbsat::find_contacts(small, options), want_small);
-        expect_same(obbsat::find_contacts(small, options), want_small);
+    for (const float margin : {0.0f, 0.05f}) {
+        SCOPED_TRACE("margin " + std::to_string(margin));
+        obbsat::scene_contacts found;
+        obbsat::find_contacts(store, options, margin, found);
+        const obbsat::scene_contacts before = found;
+        ASSERT_FALSE(before.pairs.empty());
+        try {
+            obbsat::find_contacts(bad, options, margin, found);
+            FAIL() << "an infinite half extent was accepted";
+        } catch (const obbsat::invalid_input& e) {
+            EXPECT_NE(std::string(e.what()).find("1234"), std::string::npos) << e.what();
+        }
+        expect_same(found, before);
     }
 }
 
 TEST(FindContacts, CallsFromSeveralThreadsAtOnceEachGetTheirOwn) {
-    // One call holds the kept blocks; the others make their own meanwhile.
+    // With a margin one call holds the kept memory; the others make their own meanwhile.
     const obbsat::pose_records first(scene_of(20000, 25));
     const obbsat::pose_records second(scene_of(30000, 26));
     const auto options = exact_on(obbsat::backend::automatic, 1);
-    const obbsat::scene_contacts want_first = contacts_of_found_pairs(first, options);
-    const obbsat::scene_contacts want_second = contacts_of_found_pairs(second, options);
-    std::vector<obbsat::scene_contacts> got(8);
-    std::vector<std::thread> callers;
-    for (std::size_t t = 0; t < got.size(); ++t) {
-        callers.emplace_back([&, t] { got[t] = obbsat::find_contacts(t % 2 == 0 ? first : second, options); });
-    }
-    for (std::thread& caller : callers) {
-        caller.join();
-    }
-    for (std::size_t t = 0; t < got.size(); ++t) {
-        SCOPED_TRACE("caller " + std::to_string(t));
-        expect_same(got[t], t % 2 == 0 ? want_first : want_second);
+    for (const float margin : {0.0f, 0.05f}) {
+        SCOPED_TRACE("margin " + std::to_string(margin));
+        const obbsat::scene_contacts want_first = obbsat::find_contacts(first, options, margin);
+        const obbsat::scene_contacts want_second = obbsat::find_contacts(second, options, margin);
+        if (margin == 0.0f) {
+            expect_same(want_first, contacts_of_found_pairs(first, options));
+            expect_same(want_second, contacts_of_found_pairs(second, options));
+        }
+        std::vector<obbsat::scene_contacts> got(8);
+        std::vector<std::thread> callers;
+        for (std::size_t t = 0; t < got.size(); ++t) {
+            callers.emplace_back(
+                [&, t] { got[t] = obbsat::find_contacts(t % 2 == 0 ? first : second, options, margin); });
+        }
+        for (std::thread& caller : callers) {
+            caller.join();
+        }
+        for (std::size_t t = 0; t < got.size(); ++t) {
+            SCOPED_TRACE("caller " + std::to_string(t));
+            expect_same(got[t], t % 2 == 0 ? want_first : want_second);
+        }
     }
 }
 

@@ -10,7 +10,10 @@
 //       A scene whose boxes have ids (spawn_despawn) passes them
 //       (box_view::with_ids), so that the finder follows rows that come and
 //       go; engine_frame/drift is the same scene with no rows changed, so
-//       spawn_despawn over drift reads the cost of the change from one run.
+//       spawn_despawn over drift reads the cost of the change from one run,
+//       and engine_frame/drift_ids is drift passing ids (the same each
+//       frame): spawn_despawn over drift_ids is the cost of the change alone,
+//       the id match of every frame left out of it.
 //       A scene with pair filters (spawn_despawn_filtered) passes them to
 //       both rows (box_view::with_filters); its reused_candidates counter
 //       shows whether frames whose rows and filters changed are answered

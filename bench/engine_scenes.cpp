@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <vector>
 
 namespace obbsat_bench {
@@ -401,13 +402,23 @@ private:
 class drift_sequence final : public drifting_uniform_sequence {
 public:
     // spawn_despawn's seed: the same scene, drifting alike, with no rows changed.
-    explicit drift_sequence(std::size_t boxes) : drifting_uniform_sequence(boxes, 41) {}
+    drift_sequence(std::size_t boxes, bool with_ids) : drifting_uniform_sequence(boxes, 41) {
+        if (with_ids) {
+            ids_.resize(rows_.size());
+            std::iota(ids_.begin(), ids_.end(), std::uint64_t{0});
+        }
+    }
 
     void step() override {
         drift();
         // A new store each frame, as spawn_despawn makes.
         current_ = obbsat::pose_records(rows_);
     }
+
+    const std::vector<std::uint64_t>* ids() const override { return ids_.empty() ? nullptr : &ids_; }
+
+private:
+    std::vector<std::uint64_t> ids_;  ///< drift_ids: row i's box has id i, every frame
 };
 
 class teleports_sequence final : public drifting_uniform_sequence {
@@ -440,6 +451,8 @@ const char* engine_scene_name(engine_scene scene) {
             return "spawn_despawn_filtered";
         case engine_scene::drift:
             return "drift";
+        case engine_scene::drift_ids:
+            return "drift_ids";
         case engine_scene::teleports:
             return "teleports";
     }
@@ -457,7 +470,9 @@ std::unique_ptr<engine_sequence> make_engine_sequence(engine_scene scene, std::s
         case engine_scene::spawn_despawn_filtered:
             return std::make_unique<spawn_despawn_sequence>(boxes, true);
         case engine_scene::drift:
-            return std::make_unique<drift_sequence>(boxes);
+            return std::make_unique<drift_sequence>(boxes, false);
+        case engine_scene::drift_ids:
+            return std::make_unique<drift_sequence>(boxes, true);
         case engine_scene::teleports:
             return std::make_unique<teleports_sequence>(boxes);
     }

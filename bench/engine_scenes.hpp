@@ -43,6 +43,10 @@
 //   drift          The same uniform drifting scene with no box removed or
 //                  added: spawn_despawn's frames without the change of rows,
 //                  the baseline its frame rows compare with.
+//   drift_ids      drift's frames with ids (each box's id its row, the same
+//                  every frame), passed by the engine_frame row: a frame with
+//                  no change of rows that pays, as spawn_despawn's do, for
+//                  matching the ids against the last frame's.
 //   teleports      The same uniform drifting scene; every frame 2% of the
 //                  boxes, drawn at random, jump to a random place in the
 //                  scene's square.
@@ -58,13 +62,13 @@
 
 namespace obbsat_bench {
 
-enum class engine_scene { stacks, tumbler, spawn_despawn, spawn_despawn_filtered, drift, teleports };
+enum class engine_scene { stacks, tumbler, spawn_despawn, spawn_despawn_filtered, drift, drift_ids, teleports };
 
-inline constexpr engine_scene engine_scenes[] = {engine_scene::stacks,        engine_scene::tumbler,
-                                                 engine_scene::spawn_despawn, engine_scene::spawn_despawn_filtered,
-                                                 engine_scene::drift,         engine_scene::teleports};
+inline constexpr engine_scene engine_scenes[] = {
+    engine_scene::stacks, engine_scene::tumbler,   engine_scene::spawn_despawn, engine_scene::spawn_despawn_filtered,
+    engine_scene::drift,  engine_scene::drift_ids, engine_scene::teleports};
 
-/// "stacks", "tumbler", "spawn_despawn", "spawn_despawn_filtered", "drift" or "teleports".
+/// "stacks", "tumbler", "spawn_despawn", "spawn_despawn_filtered", "drift", "drift_ids" or "teleports".
 const char* engine_scene_name(engine_scene scene);
 
 /// One run through a scene's frames, from frame 0.
@@ -76,7 +80,7 @@ public:
     /// Moves to the next frame.
     virtual void step() = 0;
     /// The ids of the current frame's rows, one per row, when the scene
-    /// gives its boxes ids (spawn_despawn); nullptr otherwise.
+    /// gives its boxes ids (spawn_despawn, drift_ids); nullptr otherwise.
     virtual const std::vector<std::uint64_t>* ids() const { return nullptr; }
     /// The pair filters of the current frame's rows (spawn_despawn_filtered),
     /// valid until the next step; none given otherwise.

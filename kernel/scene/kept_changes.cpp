@@ -36,6 +36,7 @@
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
+#include "scene/kept_pair_order.hpp"
 #include "scene/out_of_order.hpp"
 #include "scene/search_common.hpp"
 #include "sort/pair_sort.hpp"
@@ -43,6 +44,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace obbsat::detail {
@@ -482,16 +485,10 @@ void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
             kept_.moved_pairs.push_back(tagged_pair{a, b, p.tag});
         }
     }
-    // The radix sort of the answer's pairs: a comparison sort of the new
-    // rows' few thousand pairs cost more than the rest of this step.
-    if (!kept_.moved_pairs.empty()) {
-        if (kept_.tag_scratch.empty()) {
-            kept_.tag_scratch.resize(1);
-        }
-        const std::vector<pair_source<tagged_pair>> sources = {{{kept_.moved_pairs.data(), kept_.moved_pairs.size()}}};
-        sort_pairs(sources, self_ ? n_ : a_count_, kept_.moved_sorted, kept_.tag_scratch);
-        kept_.moved_pairs.swap(kept_.moved_sorted);
-    }
+    // Sorted by a sort that costs passes over these few pairs, not over the
+    // rows (kept_pair_order.hpp): the answer's sort counted a table the
+    // size of the rows for a few thousand pairs.
+    sort_kept_pairs(kept_.moved_pairs, kept_.moved_order);
     kept_.remap_pending = true;
     kept_.remap_any_moved = any_moved;
     kept_.remap_last_a = last_a_count;
@@ -513,7 +510,16 @@ void pair_search::answer_by_id() {
     const std::size_t most = kept_.by_caller.size() + kept_.moved_pairs.size();
     std::vector<tagged_pair>& next = kept_.by_caller_spare;
     next.resize(most);
-    pairs_.resize(most);
+    // The answer holds at most the pairs the test called colliding (those of
+    // gone rows are not taken): sized for them and one more place, where
+    // every pair after the last colliding one is written, it grows by a few
+    // places a call, where sizing it for every kept pair filled the growth
+    // with zeros on each call.
+    std::size_t colliding = 0;
+    for (std::size_t i = 0; i < used_parts_; ++i) {
+        colliding += parts_[i].keep.colliding;
+    }
+    pairs_.resize(colliding + 1);
     kept_.dropped.resize((kept_.pairs.size() + 63) / 64, 0);
     std::uint64_t* const dropped = kept_.dropped.data();
     tagged_pair* const into = next.data();
@@ -524,7 +530,7 @@ void pair_search::answer_by_id() {
     // if it collides: no branch on the verdicts.
     const auto take = [&](const tagged_pair& p) {
         into[written++] = p;
-        out[found] = pair_index{p.a, p.b};
+        out[std::min(found, colliding)] = pair_index{p.a, p.b};
         found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
     };
     const tagged_pair* side = kept_.moved_pairs.data();
@@ -560,6 +566,10 @@ void pair_search::answer_by_id() {
     }
     while (side != side_end) {
         take(*side++);
+    }
+    if (found > colliding) {
+        throw std::logic_error("obbsat: the answer from kept candidates carried over found " + std::to_string(found) +
+                               " colliding pairs where the test counted " + std::to_string(colliding));
     }
     next.resize(written);
     kept_.by_caller.swap(next);

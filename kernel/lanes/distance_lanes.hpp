@@ -20,8 +20,8 @@ struct closest_points_lanes {
 /// D1 for corners on one box's faces: the lanes where no face of `faces`
 /// separates it from `other`.
 template <class Arch>
-OBBSAT_LANE_INLINE lane_mask<Arch> faces_overlap_lanes(const contact_box_lanes<Arch>& faces,
-                                                       const contact_box_lanes<Arch>& other) {
+OBBSAT_LANE_INLINE lane_mask<Arch> faces_overlap_lanes(const contact_box_lanes<Arch, float>& faces,
+                                                       const contact_box_lanes<Arch, float>& other) {
     using batch = lanes<Arch>;
     lane_mask<Arch> overlap = batch(0.0f) == batch(0.0f);
     for (int k = 0; k < 4; ++k) {
@@ -40,8 +40,8 @@ OBBSAT_LANE_INLINE lane_mask<Arch> faces_overlap_lanes(const contact_box_lanes<A
 /// D2 for the edges of `edges` against the vertices of `vertices`, folded
 /// into `best` (d2 and the points of A and of B), `first` for the very first.
 template <class Arch>
-OBBSAT_LANE_INLINE void edge_candidates_lanes(const contact_box_lanes<Arch>& edges,
-                                              const contact_box_lanes<Arch>& vertices, bool edges_are_a,
+OBBSAT_LANE_INLINE void edge_candidates_lanes(const contact_box_lanes<Arch, float>& edges,
+                                              const contact_box_lanes<Arch, float>& vertices, bool edges_are_a,
                                               lanes<Arch>* best, bool first) {
     using batch = lanes<Arch>;
     const batch zero(0.0f), one(1.0f);
@@ -82,16 +82,16 @@ OBBSAT_LANE_INLINE closest_points_lanes<Arch> distance_lanes_of(const lanes<Arch
     using batch = lanes<Arch>;
     const batch zero(0.0f), one(1.0f);
     const batch origin_x = fa[0], origin_y = fa[1];
-    contact_box_lanes<Arch> a, b;
+    contact_box_lanes<Arch, float> a, b;
     lane_mask<Arch> collides;
     if constexpr (Corners) {
-        a = contact_corner_box<Arch>(fa, origin_x, origin_y);
-        b = contact_corner_box<Arch>(fb, origin_x, origin_y);
+        a = contact_corner_box<Arch, float>(fa, origin_x, origin_y);
+        b = contact_corner_box<Arch, float>(fb, origin_x, origin_y);
         collides = faces_overlap_lanes<Arch>(a, b) & faces_overlap_lanes<Arch>(b, a);
     } else {
         // The boxes' inv is not used here.
-        a = contact_pose_box<Arch>(fa, origin_x, origin_y, one);
-        b = contact_pose_box<Arch>(fb, origin_x, origin_y, one);
+        a = contact_pose_box<Arch, float>(fa, origin_x, origin_y, one);
+        b = contact_pose_box<Arch, float>(fb, origin_x, origin_y, one);
         const pose_lanes<Arch> pa{fa[0], fa[1], fa[2], fa[3], fa[4], fa[5]};
         const pose_lanes<Arch> pb{fb[0], fb[1], fb[2], fb[3], fb[4], fb[5]};
         typename pose_steps<Arch>::axes axes;

@@ -67,7 +67,14 @@ void require_out_apart(const void* out, std::size_t out_bytes, const pair_index*
     }
 }
 
-void require_indices(std::size_t rows, const pair_index* pairs, std::size_t count, const char* rows_name) {
+/// Throws invalid_input naming the first pair with an index >= rows: one
+/// pass of the backend's lanes finds the largest index, and only when it is
+/// out of range is the offender searched for.
+void require_indices(backend ran, std::size_t rows, const pair_index* pairs, std::size_t count,
+                     const char* rows_name) {
+    if (count == 0 || detail::kernels_for(ran).largest_index(pairs, count) < rows) {
+        return;
+    }
     for (std::size_t i = 0; i < count; ++i) {
         const bool a_bad = pairs[i].a >= rows;
         if (a_bad || pairs[i].b >= rows) {
@@ -111,7 +118,7 @@ backend require_call(const Store& store, const pair_index* pairs, std::size_t co
     require_out_apart(out, count * sizeof(Out), pairs, count, what);
     const backend ran = resolve_backend(use);
     require_accepted(store);
-    require_indices(store.size(), pairs, count, rows_name(store));
+    require_indices(ran, store.size(), pairs, count, rows_name(store));
     return ran;
 }
 

@@ -1,8 +1,8 @@
 // The contact and distance entry points over the double stores
 // (obbsat/contact.hpp, the *64 overloads): check everything first, then run
-// the backend's double contact kernel (lanes bit for bit the double
-// reference, obbsat/ref/contact.hpp) or, for distances, the double reference
-// (obbsat/ref/distance.hpp) on the scalar backend, the pairs split over threads.
+// the backend's double kernel (lanes bit for bit the double references,
+// obbsat/ref/contact.hpp and distance.hpp; the references themselves on the
+// scalar backend), the pairs split over threads.
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "support/fetch_ahead.hpp"
@@ -11,7 +11,6 @@
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/ref/contact.hpp>
-#include <obbsat/ref/distance.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -45,15 +44,6 @@ std::string shown(double value) {
 void require_margin(double margin) {
     if (!std::isfinite(margin) || !(margin >= 0.0)) {
         throw invalid_input("contact margin is " + shown(margin) + ": it must be finite and >= 0");
-    }
-}
-
-/// Double distances have no lanes: automatic and scalar run the reference,
-/// an explicit SIMD backend is refused rather than silently not used.
-void require_scalar_backend(backend use, const char* what) {
-    if (use != backend::automatic && use != backend::scalar) {
-        throw invalid_input(std::string("backend ") + backend_name(use) + " has no kernels for double " + what +
-                            ": they run on the scalar backend (pass backend::automatic or backend::scalar)");
     }
 }
 
@@ -122,20 +112,6 @@ backend require_call(const Store& store, const pair_index* pairs, std::size_t co
     return ran;
 }
 
-/// out[i] = compute(a[pairs[i].a], b[pairs[i].b]) for i < count, or
-/// compute(a[i], b[i]) without pairs, split over threads.
-template <class Store, class Out, class Compute>
-void compute_pairs(const Store& a, const Store& b, const pair_index* pairs, std::size_t count, Out* out,
-                   unsigned threads, const Compute& compute) {
-    const std::size_t parts = detail::parts_for(count, threads, min_pairs_per_part);
-    detail::run_parts(parts, [&](std::size_t part) {
-        const auto [begin, end] = detail::share_of(count, part, parts);
-        for (std::size_t i = begin; i < end; ++i) {
-            out[i] = pairs != nullptr ? compute(a[pairs[i].a], b[pairs[i].b]) : compute(a[i], b[i]);
-        }
-    });
-}
-
 void require_same_length(std::size_t a, std::size_t b, const char* rows) {
     if (a != b) {
         throw invalid_input("stream batches differ in length: " + std::to_string(a) + " " + rows + " in A, " +
@@ -168,38 +144,59 @@ detail::contact64_fn contact_kernel_for(const detail::contact_kernel_table& tabl
     return table.corners64;
 }
 
-/// out[i] = the contact of a(pairs[i].a) and b(pairs[i].b), or of a(i) and
-/// b(i) without pairs, by the kernel of backend `ran`, split over threads
-/// into parts of whole vectors.
-template <class Store>
-void run_contacts(backend ran, const Store& a, const Store& b, const pair_index* pairs, std::size_t count,
-                  contact64* out, const contact_options64& options) {
-    const detail::contact64_fn kernel =
-        contact_kernel_for(detail::contact_kernels_for(ran), a, pairs != nullptr);
+detail::distance64_fn distance_kernel_for(const detail::contact_kernel_table& table, const pose_records64&) {
+    return table.distance_poses64;
+}
+
+detail::distance64_fn distance_kernel_for(const detail::contact_kernel_table& table, const rect_records64&) {
+    return table.distance_corners64;
+}
+
+/// run(a', b', pairs', n, out') over [0, count) split over `threads` into
+/// parts of whole vectors, where a part from `begin` reads the pairs from
+/// begin (a pair list) or the records of a and b from begin (a stream) and
+/// writes out + begin.
+template <class Store, class Out, class Run>
+void run_split(const Store& a, const Store& b, const pair_index* pairs, std::size_t count, Out* out,
+               unsigned threads, const Run& run) {
     const double* ra = records_of(a);
     const double* rb = records_of(b);
-    const std::size_t parts = detail::parts_for(count, options.threads, min_pairs_per_part);
+    const std::size_t parts = detail::parts_for(count, threads, min_pairs_per_part);
     detail::run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = detail::aligned_share_of(count, part, parts, part_alignment);
         if (begin < end) {
             if (pairs != nullptr) {
-                kernel(ra, record_doubles, rb, record_doubles, pairs + begin, end - begin, options.margin,
-                       out + begin);
+                run(ra, rb, pairs + begin, end - begin, out + begin);
             } else {
-                kernel(ra + record_doubles * begin, record_doubles, rb + record_doubles * begin, record_doubles,
-                       nullptr, end - begin, options.margin, out + begin);
+                run(ra + record_doubles * begin, rb + record_doubles * begin, nullptr, end - begin, out + begin);
             }
         }
     });
 }
 
-/// The distance of two double boxes.
-struct distance_between {
-    template <class Box>
-    closest_points64 operator()(const Box& a, const Box& b) const {
-        return ref::distance_of(a, b);
-    }
-};
+/// out[i] = the contact of a(pairs[i].a) and b(pairs[i].b), or of a(i) and
+/// b(i) without pairs, by the kernel of backend `ran`.
+template <class Store>
+void run_contacts(backend ran, const Store& a, const Store& b, const pair_index* pairs, std::size_t count,
+                  contact64* out, const contact_options64& options) {
+    const detail::contact64_fn kernel = contact_kernel_for(detail::contact_kernels_for(ran), a, pairs != nullptr);
+    run_split(a, b, pairs, count, out, options.threads,
+              [&](const double* pa, const double* pb, const pair_index* pp, std::size_t n, contact64* po) {
+                  kernel(pa, record_doubles, pb, record_doubles, pp, n, options.margin, po);
+              });
+}
+
+/// out[i] = the distance of a(pairs[i].a) and b(pairs[i].b), or of a(i) and
+/// b(i) without pairs, by the kernel of backend `ran`.
+template <class Store>
+void run_distances(backend ran, const Store& a, const Store& b, const pair_index* pairs, std::size_t count,
+                   closest_points64* out, const distance_options& options) {
+    const detail::distance64_fn kernel = distance_kernel_for(detail::contact_kernels_for(ran), a);
+    run_split(a, b, pairs, count, out, options.threads,
+              [&](const double* pa, const double* pb, const pair_index* pp, std::size_t n, closest_points64* po) {
+                  kernel(pa, record_doubles, pb, record_doubles, pp, n, po);
+              });
+}
 
 template <class Store>
 backend contacts_of(const Store& store, const pair_index* pairs, std::size_t count, contact64* out,
@@ -213,10 +210,9 @@ backend contacts_of(const Store& store, const pair_index* pairs, std::size_t cou
 template <class Store>
 backend distances_of(const Store& store, const pair_index* pairs, std::size_t count, closest_points64* out,
                      const distance_options& options) {
-    require_scalar_backend(options.use, "distances");
-    require_call(store, pairs, count, out, options.use, "distances");
-    compute_pairs(store, store, pairs, count, out, options.threads, distance_between{});
-    return backend::scalar;
+    const backend ran = require_call(store, pairs, count, out, options.use, "distances");
+    run_distances(ran, store, store, pairs, count, out, options);
+    return ran;
 }
 
 template <class Store>
@@ -229,10 +225,9 @@ backend contact_stream_of(const Store& a, const Store& b, contact64* out, const 
 
 template <class Store>
 backend distance_stream_of(const Store& a, const Store& b, closest_points64* out, const distance_options& options) {
-    require_scalar_backend(options.use, "distances");
-    require_stream(a, b, options.use);
-    compute_pairs(a, b, nullptr, a.size(), out, options.threads, distance_between{});
-    return backend::scalar;
+    const backend ran = require_stream(a, b, options.use);
+    run_distances(ran, a, b, nullptr, a.size(), out, options);
+    return ran;
 }
 
 template <class Out, class Store, class Options, class Run>

@@ -28,9 +28,9 @@ void contacts_one_by_one(const Real* a, std::size_t a_stride, const Real* b, std
     }
 }
 
-template <class Shape, Shape (*Read)(const float*)>
-void distances_one_by_one(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                          const pair_index* pairs, std::size_t count, closest_points* out) {
+template <class Shape, class Real, class Closest, Shape (*Read)(const Real*)>
+void distances_one_by_one(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                          const pair_index* pairs, std::size_t count, Closest* out) {
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
         const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
@@ -62,11 +62,13 @@ const contact_kernel_table& contact_kernels_of<scalar_backend>() {
         contacts_one_by_one<rect_pose, float, contact, pose_in>,
         contacts_one_by_one<rect_pose, float, contact, pose_in>,
         contacts_one_by_one<rect, float, contact, rect_in>,
-        distances_one_by_one<rect_pose, pose_in>,
-        distances_one_by_one<rect, rect_in>,
+        distances_one_by_one<rect_pose, float, closest_points, pose_in>,
+        distances_one_by_one<rect, float, closest_points, rect_in>,
         contacts_one_by_one<rect_pose64, double, contact64, pose64_in>,
         contacts_one_by_one<rect_pose64, double, contact64, pose64_in>,
-        contacts_one_by_one<rect64, double, contact64, rect64_in>};
+        contacts_one_by_one<rect64, double, contact64, rect64_in>,
+        distances_one_by_one<rect_pose64, double, closest_points64, pose64_in>,
+        distances_one_by_one<rect64, double, closest_points64, rect64_in>};
     return table;
 }
 

@@ -271,26 +271,30 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     }
 }
 
-/// out[i] = the distance and closest points of box a(i) and box b(i) (see distance_fn).
-template <class Arch, std::size_t Fields, bool Corners>
-void distance_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                    const pair_index* pairs, std::size_t count, closest_points* out) {
-    constexpr std::size_t width = lanes<Arch>::size;
-    for_each_vector_of_pairs<Arch, float, Fields>(
+/// The closest points of the real type: closest_points (float) or closest_points64 (double).
+template <class Real>
+using closest_points_of_real = std::conditional_t<std::is_same<Real, float>::value, closest_points, closest_points64>;
+
+/// out[i] = the distance and closest points of box a(i) and box b(i) (see distance_fn, distance64_fn).
+template <class Arch, class Real, std::size_t Fields, bool Corners>
+void distance_batch(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                    const pair_index* pairs, std::size_t count, closest_points_of_real<Real>* out) {
+    using batch = real_lanes<Arch, Real>;
+    constexpr std::size_t width = batch::size;
+    for_each_vector_of_pairs<Arch, Real, Fields>(
         a, a_stride, b, b_stride, pairs, count, count,
-        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
-            __attribute__((always_inline)) {
-                const closest_points_lanes<Arch> c = distance_lanes_of<Arch, Corners>(fa, fb);
-                alignas(64) float staged[5][width];
-                const lanes<Arch>* fields[5] = {&c.distance, &c.ax, &c.ay, &c.bx, &c.by};
-                for (int f = 0; f < 5; ++f) {
-                    fields[f]->store_aligned(staged[f]);
-                }
-                for (std::size_t lane = 0; lane < valid; ++lane) {
-                    out[i + lane] = closest_points{staged[0][lane], staged[1][lane], staged[2][lane],
-                                                   staged[3][lane], staged[4][lane]};
-                }
-            });
+        [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
+            const closest_points_lanes<Arch, Real> c = distance_lanes_of<Arch, Real, Corners>(fa, fb);
+            alignas(64) Real staged[5][width];
+            const batch* fields[5] = {&c.distance, &c.ax, &c.ay, &c.bx, &c.by};
+            for (int f = 0; f < 5; ++f) {
+                fields[f]->store_aligned(staged[f]);
+            }
+            for (std::size_t lane = 0; lane < valid; ++lane) {
+                out[i + lane] = closest_points_of_real<Real>{staged[0][lane], staged[1][lane], staged[2][lane],
+                                                             staged[3][lane], staged[4][lane]};
+            }
+        });
 }
 
 /// The contact table of this ISA.
@@ -299,11 +303,13 @@ constexpr contact_kernel_table contact_table_of() {
     return contact_kernel_table{contact_pose_batch<Arch, float, 6, pair_fetch::into_l2>,
                                 contact_pose_batch<Arch, float, 6, pair_fetch::none>,
                                 contact_batch<Arch, float, 8, true>,
-                                distance_batch<Arch, 6, false>,
-                                distance_batch<Arch, 8, true>,
+                                distance_batch<Arch, float, 6, false>,
+                                distance_batch<Arch, float, 8, true>,
                                 contact_pose_batch<Arch, double, 6, pair_fetch::into_l2>,
                                 contact_pose_batch<Arch, double, 6, pair_fetch::none>,
-                                contact_batch<Arch, double, 8, true>};
+                                contact_batch<Arch, double, 8, true>,
+                                distance_batch<Arch, double, 6, false>,
+                                distance_batch<Arch, double, 8, true>};
 }
 
 }  // namespace

@@ -404,13 +404,15 @@ TEST_P(contact_backends, reproduce_the_golden_digests) {
     EXPECT_EQ(hex_digest(contact_digest(corners)), hex_digest(golden_corner_digest));
 }
 
-// The double contacts (obbsat/contact.hpp's *64 overloads, the double
-// reference) on golden_pairs() widened to double, every float exactly: poses
+// The double contacts and distances (obbsat/contact.hpp's *64 overloads, the
+// double references) on golden_pairs() widened to double, every float exactly: poses
 // and their float corners, at margin 0 and at margin 2^-4. The double
 // reference uses correctly rounded operations only, so these digests are the
 // same on every machine; changed only with the contact steps or the generator.
 constexpr std::uint64_t golden_pose64_digest = 0x7cd99a02a6dc3b60;
 constexpr std::uint64_t golden_corner64_digest = 0x134141c53c14794a;
+/// The double distances of the same rows, poses then corners.
+constexpr std::uint64_t golden_distance64_digest = 0x70a9a089c095af62;
 
 template <class T>
 std::uint64_t bytes_digest(const std::vector<T>& values);
@@ -446,7 +448,7 @@ golden_rows64 golden_rows64_of() {
                          widened<obbsat::rect64>(corners_of(corner_pairs.b))};
 }
 
-TEST(contact_golden, the_double_reference_reproduces_the_double_golden_digests) {
+TEST(contact_golden, the_double_references_reproduce_the_double_golden_digests) {
     const golden_rows64 rows = golden_rows64_of();
     std::vector<obbsat::contact64> poses, corners;
     for (const double margin : {0.0, 0x1p-4}) {
@@ -459,6 +461,14 @@ TEST(contact_golden, the_double_reference_reproduces_the_double_golden_digests) 
     }
     EXPECT_EQ(hex_digest(bytes_digest(poses)), hex_digest(golden_pose64_digest)) << "poses";
     EXPECT_EQ(hex_digest(bytes_digest(corners)), hex_digest(golden_corner64_digest)) << "corners";
+    std::vector<obbsat::closest_points64> distances;
+    for (std::size_t i = 0; i < rows.pose_a.size(); ++i) {
+        distances.push_back(obbsat::ref::distance_of(rows.pose_a[i], rows.pose_b[i]));
+    }
+    for (std::size_t i = 0; i < rows.corner_a.size(); ++i) {
+        distances.push_back(obbsat::ref::distance_of(rows.corner_a[i], rows.corner_b[i]));
+    }
+    EXPECT_EQ(hex_digest(bytes_digest(distances)), hex_digest(golden_distance64_digest)) << "distances";
 }
 
 TEST_P(contact_backends, reproduce_the_double_golden_digests) {
@@ -479,6 +489,13 @@ TEST_P(contact_backends, reproduce_the_double_golden_digests) {
     }
     EXPECT_EQ(hex_digest(bytes_digest(poses)), hex_digest(golden_pose64_digest)) << "poses";
     EXPECT_EQ(hex_digest(bytes_digest(corners)), hex_digest(golden_corner64_digest)) << "corners";
+    obbsat::distance_options options;
+    options.use = GetParam();
+    options.threads = 2;
+    std::vector<obbsat::closest_points64> distances(a.size() + ca.size());
+    EXPECT_EQ(obbsat::distance_stream(a, b, distances.data(), options), GetParam());
+    EXPECT_EQ(obbsat::distance_stream(ca, cb, distances.data() + a.size(), options), GetParam());
+    EXPECT_EQ(hex_digest(bytes_digest(distances)), hex_digest(golden_distance64_digest)) << "distances";
 }
 
 // Distances of separated pairs (obbsat/ref/distance.hpp), bit for bit.

@@ -1,8 +1,8 @@
 // The contact and distance entry points over the double stores
 // (obbsat/contact.hpp, pose_records64 and rect_records64): every result equal,
 // byte for byte, to the double reference (obbsat/ref/contact.hpp,
-// distance.hpp) on every backend this CPU runs (contacts; distances run on
-// the scalar backend) and every thread count, pair lists and streams alike,
+// distance.hpp) on every backend this CPU runs and every thread count, pair
+// lists and streams alike,
 // stores the caches hold and larger ones; on the float contact families
 // widened to double (random pairs, contact's own hard cases, near and far
 // from the origin) and on the double families at UTM-like coordinates; and
@@ -111,8 +111,7 @@ std::size_t first_difference(const std::vector<T>& x, const std::vector<T>& y) {
 }
 
 /// Every double entry point on `rows` (poses or corners) against the
-/// reference, contacts on backend `use` (distances on the scalar backend, and
-/// only when `use` is scalar: they have no other).
+/// reference, on backend `use`.
 template <class Store, class Row>
 void expect_every_path_matches(const std::vector<Row>& a, const std::vector<Row>& b, double margin, backend use,
                                const std::string& what) {
@@ -137,15 +136,14 @@ void expect_every_path_matches(const std::vector<Row>& a, const std::vector<Row>
         std::vector<contact64> streamed(a.size());
         EXPECT_EQ(obbsat::contact_stream(store_a, store_b, streamed.data(), options), use);
         EXPECT_TRUE(same_bytes(streamed, expected)) << "pair " << first_difference(streamed, expected);
-        if (use != backend::scalar) {
-            continue;
-        }
         obbsat::distance_options distance;
         distance.threads = threads;
-        const std::vector<closest_points64> d = obbsat::distance_pairs(store, pairs, distance);
+        distance.use = use;
+        std::vector<closest_points64> d(a.size());
+        EXPECT_EQ(obbsat::distance_pairs(store, pairs.data(), pairs.size(), d.data(), distance), use);
         EXPECT_TRUE(same_bytes(d, expected_distances)) << "pair " << first_difference(d, expected_distances);
         std::vector<closest_points64> ds(a.size());
-        obbsat::distance_stream(store_a, store_b, ds.data(), distance);
+        EXPECT_EQ(obbsat::distance_stream(store_a, store_b, ds.data(), distance), use);
         EXPECT_TRUE(same_bytes(ds, expected_distances)) << "pair " << first_difference(ds, expected_distances);
     }
 }
@@ -250,11 +248,6 @@ TEST(contact64, errors_name_what_is_wrong_and_write_nothing) {
     expect_refused([&] { obbsat::contact_pairs(poses, pairs.data(), 1, out, bad_margin); }, "margin");
     bad_margin.margin = std::numeric_limits<double>::infinity();
     expect_refused([&] { obbsat::contact_pairs(poses, pairs.data(), 1, out, bad_margin); }, "margin");
-    for (const backend simd : {backend::sse2, backend::avx2, backend::avx512}) {
-        obbsat::distance_options distance;
-        distance.use = simd;
-        expect_refused([&] { obbsat::distance_pairs(poses, pairs, distance); }, "scalar backend");
-    }
     const obbsat::pose_records64 tiny(std::vector<rect_pose64>{{{0, 0}, {1, 1}, {1, 0}}, {{0, 0}, {1, 1}, {1e-200, 0}}});
     expect_refused([&] { obbsat::contact_pairs(tiny, pairs.data(), 1, out); }, "pose 1: rotation");
     const obbsat::rect_records64 crossed(std::vector<rect64>{{{0, 1}, {1, 1}, {1, 0}, {0, 0}},

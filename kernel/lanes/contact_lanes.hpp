@@ -45,8 +45,10 @@ struct contact_box_lanes {
 
 /// The pose box of the reference: fields cx, cy, hx, hy, c, s; origin (ox0, oy0).
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_pose_box(const real_lanes<Arch, Real>* f, const real_lanes<Arch, Real>& origin_x,
-                                                              const real_lanes<Arch, Real>& origin_y, const real_lanes<Arch, Real>& inv) {
+OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_pose_box(const real_lanes<Arch, Real>* f,
+                                                                  const real_lanes<Arch, Real>& origin_x,
+                                                                  const real_lanes<Arch, Real>& origin_y,
+                                                                  const real_lanes<Arch, Real>& inv) {
     using batch = real_lanes<Arch, Real>;
     const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
     const batch c = f[4], s = f[5];
@@ -79,8 +81,9 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_pose_box(const real_lan
 
 /// The corner box of the reference: fields the corners UL, UR, LR, LL (x, y each).
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_corner_box(const real_lanes<Arch, Real>* f, const real_lanes<Arch, Real>& origin_x,
-                                                                const real_lanes<Arch, Real>& origin_y) {
+OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_corner_box(const real_lanes<Arch, Real>* f,
+                                                                    const real_lanes<Arch, Real>& origin_x,
+                                                                    const real_lanes<Arch, Real>& origin_y) {
     using batch = real_lanes<Arch, Real>;
     batch ex[4], ey[4];
     for (int k = 0; k < 4; ++k) {
@@ -164,7 +167,7 @@ struct best_face_lanes {
 
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE best_face_lanes<Arch, Real> best_face_lanes_of(const contact_box_lanes<Arch, Real>& faces,
-                                                             const contact_box_lanes<Arch, Real>& other) {
+                                                                  const contact_box_lanes<Arch, Real>& other) {
     using batch = real_lanes<Arch, Real>;
     best_face_lanes<Arch, Real> best;
     for (int k = 0; k < 4; ++k) {
@@ -179,8 +182,8 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch, Real> best_face_lanes_of(const contact_
         const batch sep = least * faces.inv[k];
         const int next = (k + 1) & 3;
         if (k == 0) {
-            best = best_face_lanes<Arch, Real>{sep,         batch(Real(0)),    faces.nx[0],    faces.ny[0], faces.inv[0],
-                                         faces.vx[0], faces.vy[0], faces.vx[next], faces.vy[next]};
+            best = best_face_lanes<Arch, Real>{sep,         batch(Real(0)), faces.nx[0],    faces.ny[0],   faces.inv[0],
+                                               faces.vx[0], faces.vy[0],    faces.vx[next], faces.vy[next]};
         } else {
             const auto better = sep > best.sep;
             best.sep = xsimd::select(better, sep, best.sep);
@@ -212,8 +215,9 @@ OBBSAT_LANE_INLINE real_lanes<Arch, Real> span_lanes(const contact_box_lanes<Arc
 
 /// Box b, or box a where `pick_a`.
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> either_box(const real_mask<Arch, Real>& pick_a, const contact_box_lanes<Arch, Real>& a,
-                                                      const contact_box_lanes<Arch, Real>& b) {
+OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> either_box(const real_mask<Arch, Real>& pick_a,
+                                                            const contact_box_lanes<Arch, Real>& a,
+                                                            const contact_box_lanes<Arch, Real>& b) {
     contact_box_lanes<Arch, Real> out;
     for (int k = 0; k < 4; ++k) {
         out.vx[k] = xsimd::select(pick_a, a.vx[k], b.vx[k]);
@@ -237,24 +241,25 @@ struct reference_lanes {
 /// Steps 1 to 3 of the reference for boxes a and b (the corner rule).
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_box_lanes<Arch, Real>& a,
-                                                            const contact_box_lanes<Arch, Real>& b) {
+                                                                  const contact_box_lanes<Arch, Real>& b) {
     // Step 2 (step 1 is the boxes' inv).
     const best_face_lanes<Arch, Real> fa = best_face_lanes_of<Arch, Real>(a, b);
     const best_face_lanes<Arch, Real> fb = best_face_lanes_of<Arch, Real>(b, a);
     // Step 3.
-    const real_lanes<Arch, Real> tol = real_lanes<Arch, Real>(Real(0x1p-10)) * min_pick(span_lanes<Arch, Real>(a), span_lanes<Arch, Real>(b));
+    const real_lanes<Arch, Real> tol =
+        real_lanes<Arch, Real>(Real(0x1p-10)) * min_pick(span_lanes<Arch, Real>(a), span_lanes<Arch, Real>(b));
     const auto flip = fb.sep > (fa.sep + tol);
     return reference_lanes<Arch, Real>{flip,
-                                 xsimd::select(flip, fb.index, fa.index),
-                                 fa.sep,
-                                 fb.sep,
-                                 xsimd::select(flip, fb.nx, fa.nx),
-                                 xsimd::select(flip, fb.ny, fa.ny),
-                                 xsimd::select(flip, fb.inv, fa.inv),
-                                 xsimd::select(flip, fb.x1, fa.x1),
-                                 xsimd::select(flip, fb.y1, fa.y1),
-                                 xsimd::select(flip, fb.x2, fa.x2),
-                                 xsimd::select(flip, fb.y2, fa.y2)};
+                                       xsimd::select(flip, fb.index, fa.index),
+                                       fa.sep,
+                                       fb.sep,
+                                       xsimd::select(flip, fb.nx, fa.nx),
+                                       xsimd::select(flip, fb.ny, fa.ny),
+                                       xsimd::select(flip, fb.inv, fa.inv),
+                                       xsimd::select(flip, fb.x1, fa.x1),
+                                       xsimd::select(flip, fb.y1, fa.y1),
+                                       xsimd::select(flip, fb.x2, fa.x2),
+                                       xsimd::select(flip, fb.y2, fa.y2)};
 }
 
 /// Step 4's normal and depth, with no point (count 0, every point field
@@ -262,8 +267,10 @@ OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_
 /// the margin, and what steps 5 to 8 start from.
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_without_points(const real_mask<Arch, Real>& flip,
-                                                                  const real_lanes<Arch, Real>& ux, const real_lanes<Arch, Real>& uy,
-                                                                  const real_lanes<Arch, Real>& sa, const real_lanes<Arch, Real>& sb) {
+                                                                        const real_lanes<Arch, Real>& ux,
+                                                                        const real_lanes<Arch, Real>& uy,
+                                                                        const real_lanes<Arch, Real>& sa,
+                                                                        const real_lanes<Arch, Real>& sb) {
     const real_lanes<Arch, Real> zero(Real(0));
     contact_out_lanes<Arch, Real> out;
     out.nx = xsimd::select(flip, negated<Arch, Real>(ux), ux);
@@ -288,7 +295,8 @@ struct incident_edge_lanes {
 /// Step 5 on a box of four faces: the face most against (ux, uy).
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> incident_edge_of_box(const contact_box_lanes<Arch, Real>& inc,
-                                                                  const real_lanes<Arch, Real>& ux, const real_lanes<Arch, Real>& uy) {
+                                                                        const real_lanes<Arch, Real>& ux,
+                                                                        const real_lanes<Arch, Real>& uy) {
     using batch = real_lanes<Arch, Real>;
     incident_edge_lanes<Arch, Real> edge;
     batch most_against;
@@ -315,11 +323,10 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> incident_edge_of_box(const co
 /// Steps 6 to 8 of the reference, and step 4's outputs, from the reference
 /// face (ref), its unit normal (ux, uy) and the incident edge.
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(const reference_lanes<Arch, Real>& ref,
-                                                                  const real_lanes<Arch, Real>& ux, const real_lanes<Arch, Real>& uy,
-                                                                  const incident_edge_lanes<Arch, Real>& edge,
-                                                                  const real_lanes<Arch, Real>& origin_x,
-                                                                  const real_lanes<Arch, Real>& origin_y, Real margin_value) {
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
+    const reference_lanes<Arch, Real>& ref, const real_lanes<Arch, Real>& ux, const real_lanes<Arch, Real>& uy,
+    const incident_edge_lanes<Arch, Real>& edge, const real_lanes<Arch, Real>& origin_x,
+    const real_lanes<Arch, Real>& origin_y, Real margin_value) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0)), one(Real(1)), four(Real(4)), margin(margin_value);
     const auto flip = ref.flip;
@@ -394,12 +401,13 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(const re
 /// the incident box (B, or A where flip).
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> manifold_lanes_of(const contact_box_lanes<Arch, Real>& inc,
-                                                             const reference_lanes<Arch, Real>& ref,
-                                                             const real_lanes<Arch, Real>& origin_x,
-                                                             const real_lanes<Arch, Real>& origin_y, Real margin) {
+                                                                   const reference_lanes<Arch, Real>& ref,
+                                                                   const real_lanes<Arch, Real>& origin_x,
+                                                                   const real_lanes<Arch, Real>& origin_y,
+                                                                   Real margin) {
     const real_lanes<Arch, Real> ux = ref.nx * ref.inv, uy = ref.ny * ref.inv;
-    return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, incident_edge_of_box<Arch, Real>(inc, ux, uy), origin_x, origin_y,
-                                        margin);
+    return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, incident_edge_of_box<Arch, Real>(inc, ux, uy), origin_x,
+                                              origin_y, margin);
 }
 
 /// Face j's edge of pose boxes, per lane, without building the boxes: pose
@@ -410,8 +418,10 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> manifold_lanes_of(const contact
 /// `b` on w for k = 0 and 1 (on wy the other way round). Face j's second end,
 /// vertex j + 1, takes u's sign from the complement of b and w's from a.
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> pose_edge_lanes(const real_lanes<Arch, Real>* f, const real_lanes<Arch, Real>& origin_x,
-                                                             const real_lanes<Arch, Real>& origin_y, const real_lanes<Arch, Real>& j) {
+OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> pose_edge_lanes(const real_lanes<Arch, Real>* f,
+                                                                   const real_lanes<Arch, Real>& origin_x,
+                                                                   const real_lanes<Arch, Real>& origin_y,
+                                                                   const real_lanes<Arch, Real>& j) {
     using batch = real_lanes<Arch, Real>;
     const batch sign(Real(-0.0)), none(Real(0));
     const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
@@ -462,7 +472,8 @@ struct pose_reference_lanes {
 /// Pose steps P1 to P3 and step 4's normal for fields cx, cy, hx, hy, c, s of
 /// A and of B.
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE pose_reference_lanes<Arch, Real> pose_reference_of(const real_lanes<Arch, Real>* fa, const real_lanes<Arch, Real>* fb) {
+OBBSAT_LANE_INLINE pose_reference_lanes<Arch, Real> pose_reference_of(const real_lanes<Arch, Real>* fa,
+                                                                      const real_lanes<Arch, Real>* fb) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0)), one(Real(1)), two(Real(2)), three(Real(3));
     // Pose step 1.
@@ -513,8 +524,8 @@ OBBSAT_LANE_INLINE real_mask<Arch, Real> may_have_points(const pose_reference_la
 /// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
 /// (the reference's pose steps, then steps 4 to 8).
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const real_lanes<Arch, Real>* fa, const real_lanes<Arch, Real>* fb,
-                                                                 Real margin) {
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const real_lanes<Arch, Real>* fa,
+                                                                       const real_lanes<Arch, Real>* fb, Real margin) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0));
     const batch origin_x = fa[0], origin_y = fa[1];
@@ -545,8 +556,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const rea
     const incident_edge_lanes<Arch, Real> edge = pose_edge_lanes<Arch, Real>(inc_fields, origin_x, origin_y, k);
     const incident_edge_lanes<Arch, Real> face = pose_edge_lanes<Arch, Real>(ref_fields, origin_x, origin_y, r);
     // The normal and its reciprocal length: what steps 6 to 8 do not read again.
-    const reference_lanes<Arch, Real> ref{flip,     r,        p.sa,     p.sb,     ux,      uy,
-                                    batch(Real(1)), face.p1x, face.p1y, face.p2x, face.p2y};
+    const reference_lanes<Arch, Real> ref{flip,           r,        p.sa,     p.sb,     ux,      uy,
+                                          batch(Real(1)), face.p1x, face.p1y, face.p2x, face.p2y};
     return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, edge, origin_x, origin_y, margin);
 }
 

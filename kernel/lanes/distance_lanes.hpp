@@ -21,7 +21,7 @@ struct closest_points_lanes {
 /// separates it from `other`.
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE real_mask<Arch, Real> faces_overlap_lanes(const contact_box_lanes<Arch, Real>& faces,
-                                                       const contact_box_lanes<Arch, Real>& other) {
+                                                             const contact_box_lanes<Arch, Real>& other) {
     using batch = real_lanes<Arch, Real>;
     real_mask<Arch, Real> overlap = batch(Real(0)) == batch(Real(0));
     for (int k = 0; k < 4; ++k) {
@@ -78,7 +78,8 @@ OBBSAT_LANE_INLINE void edge_candidates_lanes(const contact_box_lanes<Arch, Real
 /// D1 to D3 for the fields of each lane's pair: poses (cx, cy, hx, hy, c, s)
 /// or corners (UL, UR, LR, LL), A's first two fields the origin.
 template <class Arch, class Real, bool Corners>
-OBBSAT_LANE_INLINE closest_points_lanes<Arch, Real> distance_lanes_of(const real_lanes<Arch, Real>* fa, const real_lanes<Arch, Real>* fb) {
+OBBSAT_LANE_INLINE closest_points_lanes<Arch, Real> distance_lanes_of(const real_lanes<Arch, Real>* fa,
+                                                                      const real_lanes<Arch, Real>* fb) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0)), one(Real(1));
     const batch origin_x = fa[0], origin_y = fa[1];
@@ -101,11 +102,10 @@ OBBSAT_LANE_INLINE closest_points_lanes<Arch, Real> distance_lanes_of(const real
     batch best[5] = {zero, zero, zero, zero, zero};  // replaced by the first candidate
     edge_candidates_lanes<Arch, Real>(a, b, true, best, true);
     edge_candidates_lanes<Arch, Real>(b, a, false, best, false);
-    return closest_points_lanes<Arch, Real>{xsimd::select(collides, zero, xsimd::sqrt(best[0])),
-                                      xsimd::select(collides, zero, origin_x + best[1]),
-                                      xsimd::select(collides, zero, origin_y + best[2]),
-                                      xsimd::select(collides, zero, origin_x + best[3]),
-                                      xsimd::select(collides, zero, origin_y + best[4])};
+    return closest_points_lanes<Arch, Real>{
+        xsimd::select(collides, zero, xsimd::sqrt(best[0])), xsimd::select(collides, zero, origin_x + best[1]),
+        xsimd::select(collides, zero, origin_y + best[2]), xsimd::select(collides, zero, origin_x + best[3]),
+        xsimd::select(collides, zero, origin_y + best[4])};
 }
 
 }  // namespace

@@ -3,10 +3,10 @@
 // contacts/local_verdicts/poses/indexed/<backend>/...: the verdict-only local
 // method on the same pairs in the same binary, and
 // distances/poses/indexed/<backend>/...: distance_pairs on them, and
-// contacts64/poses/indexed/scalar/...: contact_pairs over pose_records64
-// holding the same poses, every float taken exactly (double contacts run on
-// the scalar backend). Each row checks its answers against the reference
-// before it times anything.
+// contacts64/poses/indexed/<backend>/...: contact_pairs over pose_records64
+// holding the same poses, every float taken exactly, on the double lanes (the
+// double reference for scalar). Each row checks its answers against the
+// reference before it times anything.
 #include "bench_registry.hpp"
 #include "contact_workload.hpp"
 
@@ -85,9 +85,9 @@ void time_contacts(benchmark::State& state, obbsat::backend use, std::size_t cou
     time_contacts_of<obbsat::pose_records, obbsat::contact, obbsat::contact_options>(state, contact_workload(count).poses(), use, count);
 }
 
-void time_contacts64(benchmark::State& state, std::size_t count) {
-    time_contacts_of<obbsat::pose_records64, obbsat::contact64, obbsat::contact_options64>(
-        state, double_poses(count), obbsat::backend::scalar, count);
+void time_contacts64(benchmark::State& state, obbsat::backend use, std::size_t count) {
+    time_contacts_of<obbsat::pose_records64, obbsat::contact64, obbsat::contact_options64>(state, double_poses(count),
+                                                                                          use, count);
 }
 
 void time_distances(benchmark::State& state, obbsat::backend use, std::size_t count) {
@@ -139,12 +139,6 @@ void time_local_verdicts(benchmark::State& state, obbsat::backend use, std::size
 }  // namespace
 
 void register_contact_benchmarks() {
-    for (const std::size_t count : contact_sizes) {
-        benchmark::RegisterBenchmark(
-            ("contacts64/poses/indexed/scalar/pairs:" + std::to_string(count) + "/threads:1").c_str(),
-            [count](benchmark::State& s) { time_contacts64(s, count); })
-            ->UseRealTime();
-    }
     for (const obbsat::backend use : obbsat::compiled_backends()) {
         if (!obbsat::cpu_supports(use)) {
             continue;
@@ -154,6 +148,9 @@ void register_contact_benchmarks() {
             const std::string tail = backend + "/pairs:" + std::to_string(count) + "/threads:1";
             benchmark::RegisterBenchmark(("contacts/poses/indexed/" + tail).c_str(),
                                          [use, count](benchmark::State& s) { time_contacts(s, use, count); })
+                ->UseRealTime();
+            benchmark::RegisterBenchmark(("contacts64/poses/indexed/" + tail).c_str(),
+                                         [use, count](benchmark::State& s) { time_contacts64(s, use, count); })
                 ->UseRealTime();
             benchmark::RegisterBenchmark(("distances/poses/indexed/" + tail).c_str(),
                                          [use, count](benchmark::State& s) { time_distances(s, use, count); })

@@ -19,9 +19,18 @@ namespace obbsat::detail {
 using contact_fn = void (*)(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
                             const pair_index* pairs, std::size_t count, float margin, contact* out);
 
+/// As contact_fn on double records (pose_records64, rect_records64: eight
+/// doubles each, strides in doubles) and double contacts.
+using contact64_fn = void (*)(const double* a, std::size_t a_stride, const double* b, std::size_t b_stride,
+                              const pair_index* pairs, std::size_t count, double margin, contact64* out);
+
 /// out[i] = ref::distance_of(box a(i), box b(i)) for i < count, records read as contact_fn reads them.
 using distance_fn = void (*)(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
                              const pair_index* pairs, std::size_t count, closest_points* out);
+
+/// As distance_fn on double records (read as contact64_fn reads them) and double results.
+using distance64_fn = void (*)(const double* a, std::size_t a_stride, const double* b, std::size_t b_stride,
+                               const pair_index* pairs, std::size_t count, closest_points64* out);
 
 struct contact_kernel_table {
     /// Records of at least six floats: cx, cy, hx, hy, c, s; with pairs, the
@@ -33,6 +42,13 @@ struct contact_kernel_table {
     contact_fn corners;  ///< records of eight floats: the corners UL, UR, LR, LL
     distance_fn distance_poses;
     distance_fn distance_corners;
+    /// pose_records64 records (cx, cy, hx, hy, c, s, 0, 0); with pairs, the
+    /// records of the pairs ahead are asked into L2.
+    contact64_fn poses64;
+    contact64_fn poses64_in_l2;  ///< as poses64, for a store L2 holds
+    contact64_fn corners64;      ///< rect_records64 records: the corners UL, UR, LR, LL
+    distance64_fn distance_poses64;
+    distance64_fn distance_corners64;
 };
 
 /// The contact table of one backend of backend_catalogue.hpp: defined by

@@ -14,9 +14,13 @@ rect_pose pose_in(const float* v) { return rect_pose{{v[0], v[1]}, {v[2], v[3]},
 
 rect rect_in(const float* v) { return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}; }
 
-template <class Shape, Shape (*Read)(const float*)>
-void contacts_one_by_one(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                         const pair_index* pairs, std::size_t count, float margin, contact* out) {
+rect_pose64 pose64_in(const double* v) { return rect_pose64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}; }
+
+rect64 rect64_in(const double* v) { return rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}; }
+
+template <class Shape, class Real, class Contact, Shape (*Read)(const Real*)>
+void contacts_one_by_one(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                         const pair_index* pairs, std::size_t count, Real margin, Contact* out) {
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
         const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
@@ -24,9 +28,9 @@ void contacts_one_by_one(const float* a, std::size_t a_stride, const float* b, s
     }
 }
 
-template <class Shape, Shape (*Read)(const float*)>
-void distances_one_by_one(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                          const pair_index* pairs, std::size_t count, closest_points* out) {
+template <class Shape, class Real, class Closest, Shape (*Read)(const Real*)>
+void distances_one_by_one(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                          const pair_index* pairs, std::size_t count, Closest* out) {
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t ia = pairs != nullptr ? pairs[i].a : i;
         const std::size_t ib = pairs != nullptr ? pairs[i].b : i;
@@ -55,9 +59,16 @@ const contact_kernel_table& table_for(backend resolved, type_list<Rows...>) {
 template <>
 const contact_kernel_table& contact_kernels_of<scalar_backend>() {
     static constexpr contact_kernel_table table{
-        contacts_one_by_one<rect_pose, pose_in>, contacts_one_by_one<rect_pose, pose_in>,
-        contacts_one_by_one<rect, rect_in>,
-        distances_one_by_one<rect_pose, pose_in>, distances_one_by_one<rect, rect_in>};
+        contacts_one_by_one<rect_pose, float, contact, pose_in>,
+        contacts_one_by_one<rect_pose, float, contact, pose_in>,
+        contacts_one_by_one<rect, float, contact, rect_in>,
+        distances_one_by_one<rect_pose, float, closest_points, pose_in>,
+        distances_one_by_one<rect, float, closest_points, rect_in>,
+        contacts_one_by_one<rect_pose64, double, contact64, pose64_in>,
+        contacts_one_by_one<rect_pose64, double, contact64, pose64_in>,
+        contacts_one_by_one<rect64, double, contact64, rect64_in>,
+        distances_one_by_one<rect_pose64, double, closest_points64, pose64_in>,
+        distances_one_by_one<rect64, double, closest_points64, rect64_in>};
     return table;
 }
 

@@ -1,5 +1,5 @@
 // The batch drivers of contacts and distances: walk a batch one vector of pairs at a time,
-// load each lane's two records (whole 32-byte records transposed in registers,
+// load each lane's two records (whole 32-byte float and 64-byte double records transposed in registers,
 // other rows through a staging copy), run the contact lanes
 // (contact_lanes.hpp), write each lane's contact (transposed back in
 // registers). The last, partial vector repeats its last pair in the unused
@@ -10,72 +10,84 @@
 #include "dispatch/contact_kernel_table.hpp"
 #include "lanes/contact_lanes.hpp"
 #include "lanes/distance_lanes.hpp"
+#include "lanes/record64_transpose.hpp"
 #include "lanes/record_transpose.hpp"
 #include "support/fetch_ahead.hpp"
 
 #include <obbsat/closest_points.hpp>
 #include <obbsat/contact_manifold.hpp>
 #include <obbsat/rect.hpp>
+#include <obbsat/rect64.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #include <utility>
 
 namespace obbsat::detail {
 namespace {
 
-/// The twelve 4-byte fields of a contact, in its memory order, per lane.
-template <class Arch>
+/// The contact of the real type: contact (float) or contact64 (double).
+template <class Real>
+using contact_of_real = std::conditional_t<std::is_same<Real, float>::value, contact, contact64>;
+
+static_assert(sizeof(contact) == 12 * sizeof(float) && sizeof(contact64) == 12 * sizeof(double),
+              "a contact is twelve fields as wide as its reals (the integers' padding included)");
+
+/// The twelve fields of a contact, each as wide as a real, in its memory order, per lane.
+template <class Arch, class Real>
 struct contact_fields {
-    lanes<Arch> f[12];
+    real_lanes<Arch, Real> f[12];
 };
 
-template <class Arch>
-OBBSAT_LANE_INLINE contact_fields<Arch> fields_of(const contact_out_lanes<Arch>& c) {
-    return contact_fields<Arch>{{c.nx, c.ny, c.depth, c.count, c.x[0], c.y[0], c.separation[0], c.feature[0],
-                                 c.x[1], c.y[1], c.separation[1], c.feature[1]}};
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_fields<Arch, Real> fields_of(const contact_out_lanes<Arch, Real>& c) {
+    return contact_fields<Arch, Real>{{c.nx, c.ny, c.depth, c.count, c.x[0], c.y[0], c.separation[0], c.feature[0],
+                                       c.x[1], c.y[1], c.separation[1], c.feature[1]}};
 }
 
 /// The contacts of one vector of pairs from each lane's two records of
-/// Fields floats (fa, fb: one vector per field), A's first two fields the origin.
-template <class Arch, bool Corners>
-OBBSAT_LANE_INLINE contact_fields<Arch> contacts_of_fields(const lanes<Arch>* fa, const lanes<Arch>* fb,
-                                                           float margin) {
-    const lanes<Arch> origin_x = fa[0], origin_y = fa[1];
+/// Fields reals (fa, fb: one vector per field), A's first two fields the origin.
+template <class Arch, class Real, bool Corners>
+OBBSAT_LANE_INLINE contact_fields<Arch, Real> contacts_of_fields(const real_lanes<Arch, Real>* fa,
+                                                                 const real_lanes<Arch, Real>* fb, Real margin) {
+    const real_lanes<Arch, Real> origin_x = fa[0], origin_y = fa[1];
     if constexpr (Corners) {
-        const contact_box_lanes<Arch> a = contact_corner_box<Arch>(fa, origin_x, origin_y);
-        const contact_box_lanes<Arch> b = contact_corner_box<Arch>(fb, origin_x, origin_y);
-        const reference_lanes<Arch> ref = reference_of_boxes<Arch>(a, b);
-        const contact_box_lanes<Arch> incident = either_box<Arch>(ref.flip, a, b);
-        return fields_of<Arch>(manifold_lanes_of<Arch>(incident, ref, origin_x, origin_y, margin));
+        const contact_box_lanes<Arch, Real> a = contact_corner_box<Arch, Real>(fa, origin_x, origin_y);
+        const contact_box_lanes<Arch, Real> b = contact_corner_box<Arch, Real>(fb, origin_x, origin_y);
+        const reference_lanes<Arch, Real> ref = reference_of_boxes<Arch, Real>(a, b);
+        const contact_box_lanes<Arch, Real> incident = either_box<Arch, Real>(ref.flip, a, b);
+        return fields_of<Arch, Real>(manifold_lanes_of<Arch, Real>(incident, ref, origin_x, origin_y, margin));
     } else {
-        return fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin));
+        return fields_of<Arch, Real>(contact_pose_lanes_of<Arch, Real>(fa, fb, margin));
     }
 }
 
-/// Writes lane i of `c` to place(i), a contact*, for the first `valid`
-/// lanes: a whole vector by three 4x4 transposes (each a third of every
-/// contact), a partial one through a staging copy.
-template <class Arch, class Place>
-OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch>& c, const Place& place, std::size_t valid) {
-    using transpose = record_transpose<Arch>;
-    constexpr std::size_t width = lanes<Arch>::size;
-    static_assert(sizeof(contact) == 12 * sizeof(float), "a contact is twelve 4-byte fields");
-    if (valid == width) {
-        auto put = [&place](std::size_t lane) { return reinterpret_cast<float*>(place(lane)); };
-        using blocks = std::make_integer_sequence<unsigned, width / 4>;
-        for (unsigned third = 0; third < 3; ++third) {
-            transpose::store_half(c.f + 4 * third, third, put, blocks{});
+/// Writes lane i of `c` to place(i), a contact* (contact64* for double), for
+/// the first `valid` lanes: a whole vector of float contacts by three 4x4
+/// transposes (each a third of every contact), anything else through a
+/// staging copy.
+template <class Arch, class Real, class Place>
+OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, const Place& place,
+                                          std::size_t valid) {
+    constexpr std::size_t width = real_lanes<Arch, Real>::size;
+    if constexpr (std::is_same<Real, float>::value) {
+        if (valid == width) {
+            auto put = [&place](std::size_t lane) { return reinterpret_cast<float*>(place(lane)); };
+            using blocks = std::make_integer_sequence<unsigned, width / 4>;
+            for (unsigned third = 0; third < 3; ++third) {
+                record_transpose<Arch>::store_half(c.f + 4 * third, third, put, blocks{});
+            }
+            return;
         }
-        return;
     }
-    alignas(64) float staged[12][width];
+    alignas(64) Real staged[12][width];
     for (int f = 0; f < 12; ++f) {
         c.f[f].store_aligned(staged[f]);
     }
     for (std::size_t lane = 0; lane < valid; ++lane) {
-        float row[12];
+        Real row[12];
         for (int f = 0; f < 12; ++f) {
             row[f] = staged[f][lane];
         }
@@ -84,16 +96,18 @@ OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch>& c, const P
 }
 
 /// Writes lane i of `c` as out[i] for the first `valid` lanes.
-template <class Arch>
-OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* out, std::size_t valid) {
-    store_contacts_to<Arch>(c, [out](std::size_t lane) { return out + lane; }, valid);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch, Real>& c, contact_of_real<Real>* out,
+                                       std::size_t valid) {
+    store_contacts_to<Arch, Real>(c, [out](std::size_t lane) { return out + lane; }, valid);
 }
 
 /// Walks pairs [0, count) one vector at a time: loads each lane's two records
-/// into fa and fb (one vector per field; Fields floats read, six for a pose,
+/// into fa and fb (one vector per field; Fields reals read, six for a pose,
 /// eight for corners) and calls body(fa, fb, i, valid) for the vector of pairs
-/// i to i + valid. Records of eight floats (pose_records, corner records) are
-/// read whole and transposed in registers, other rows through a staging copy.
+/// i to i + valid. Records of eight reals (pose_records, corner records and
+/// their double stores, the only double records) are read whole and
+/// transposed in registers, other rows through a staging copy.
 /// Whole vectors take the pair indices as they are; the last, partial vector
 /// repeats its last pair in the unused lanes. A pair list's records are read
 /// at random: those of the pairs ahead, up to pair `fetchable` of the list,
@@ -101,19 +115,41 @@ OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch>& c, contact* o
 /// against a contact's hundreds and hides the reads of a store larger than
 /// the caches; records just read are not fetched again (fetchable 0), nor
 /// any with Fetch none (a store the caches hold).
-template <class Arch, std::size_t Fields, pair_fetch Fetch = pair_fetch::into_l2, class Body>
-OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_stride, const float* b,
+template <class Arch, class Real, std::size_t Fields, pair_fetch Fetch = pair_fetch::into_l2, class Body>
+OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
                                                  std::size_t b_stride, const pair_index* pairs, std::size_t count,
                                                  std::size_t fetchable, const Body& body) {
-    using batch = lanes<Arch>;
+    using batch = real_lanes<Arch, Real>;
     constexpr std::size_t width = batch::size;
     constexpr std::size_t ahead = pairs_ahead<Fetch>;
-    const bool whole_records = a_stride == 8 && b_stride == 8;
+    [[maybe_unused]] const bool whole_records = a_stride == 8 && b_stride == 8;
     auto record_a = [&](std::size_t pair) { return a + 8 * (pairs != nullptr ? pairs[pair].a : pair); };
     auto record_b = [&](std::size_t pair) { return b + 8 * (pairs != nullptr ? pairs[pair].b : pair); };
     auto vector_at = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
         batch fa[8], fb[8];
-        if (whole_records) {
+        if constexpr (std::is_same<Real, double>::value && Fields == 6) {
+            const pose64_lanes<Arch> pa = pose64_record_transpose<Arch>::load([&](std::size_t lane) {
+                return record_a(pair_of(lane));
+            });
+            const pose64_lanes<Arch> pb = pose64_record_transpose<Arch>::load([&](std::size_t lane) {
+                return record_b(pair_of(lane));
+            });
+            const batch from_a[6] = {pa.cx, pa.cy, pa.hx, pa.hy, pa.c, pa.s};
+            const batch from_b[6] = {pb.cx, pb.cy, pb.hx, pb.hy, pb.c, pb.s};
+            for (std::size_t f = 0; f < 6; ++f) {
+                fa[f] = from_a[f];
+                fb[f] = from_b[f];
+            }
+        } else if constexpr (std::is_same<Real, double>::value) {
+            const quad<batch> qa = record64_transpose<Arch>::load(
+                [&](std::size_t lane) { return reinterpret_cast<const rect64*>(record_a(pair_of(lane))); });
+            const quad<batch> qb = record64_transpose<Arch>::load(
+                [&](std::size_t lane) { return reinterpret_cast<const rect64*>(record_b(pair_of(lane))); });
+            for (std::size_t f = 0; f < 8; ++f) {
+                fa[f] = qa.c[f];
+                fb[f] = qb.c[f];
+            }
+        } else if (whole_records) {
             const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
                 [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_a(pair_of(lane))); });
             const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
@@ -123,12 +159,12 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_s
                 fb[f] = qb.c[f];
             }
         } else {
-            alignas(64) float staged_a[Fields][width];
-            alignas(64) float staged_b[Fields][width];
+            alignas(64) Real staged_a[Fields][width];
+            alignas(64) Real staged_b[Fields][width];
             for (std::size_t lane = 0; lane < width; ++lane) {
                 const std::size_t pair = pair_of(lane);
-                const float* ra = a + a_stride * (pairs != nullptr ? pairs[pair].a : pair);
-                const float* rb = b + b_stride * (pairs != nullptr ? pairs[pair].b : pair);
+                const Real* ra = a + a_stride * (pairs != nullptr ? pairs[pair].a : pair);
+                const Real* rb = b + b_stride * (pairs != nullptr ? pairs[pair].b : pair);
                 for (std::size_t f = 0; f < Fields; ++f) {
                     staged_a[f][lane] = ra[f];
                     staged_b[f][lane] = rb[f];
@@ -157,19 +193,19 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const float* a, std::size_t a_s
     }
 }
 
-/// out[i] = the contact of box a(i) and box b(i) (see contact_fn).
-template <class Arch, std::size_t Fields, bool Corners>
-void contact_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                   const pair_index* pairs, std::size_t count, float margin, contact* out) {
-    for_each_vector_of_pairs<Arch, Fields>(
+/// out[i] = the contact of box a(i) and box b(i) (see contact_fn, contact64_fn).
+template <class Arch, class Real, std::size_t Fields, bool Corners>
+void contact_batch(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                   const pair_index* pairs, std::size_t count, Real margin, contact_of_real<Real>* out) {
+    for_each_vector_of_pairs<Arch, Real, Fields>(
         a, a_stride, b, b_stride, pairs, count, count,
-        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
+        [&](const real_lanes<Arch, Real>* fa, const real_lanes<Arch, Real>* fb, std::size_t i, std::size_t valid)
             __attribute__((always_inline)) {
-                store_contacts<Arch>(contacts_of_fields<Arch, Corners>(fa, fb, margin), out + i, valid);
+                store_contacts<Arch, Real>(contacts_of_fields<Arch, Real, Corners>(fa, fb, margin), out + i, valid);
             });
 }
 
-/// out[i] = the contact of poses a(i) and b(i) (see contact_fn), in blocks
+/// out[i] = the contact of poses a(i) and b(i) (see contact_fn, contact64_fn), in blocks
 /// of pairs: first every pair's normal and depth without points (pose steps
 /// P1 to P3 and step 4), then, packed into whole vectors, only the pairs
 /// whose best faces leave them within the margin, in full. Steps 5 to 8 cost
@@ -180,12 +216,14 @@ void contact_batch(const float* a, std::size_t a_stride, const float* b, std::si
 /// none asks for nothing, for a store the caches hold: there the two
 /// prefetches a pair and their addresses cost a tenth of a contact (4K pairs
 /// over 2K poses: 16.3 against 14.7 us with AVX-512) and bring nothing.
-template <class Arch, std::size_t Fields, pair_fetch Fetch>
-void contact_pose_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                        const pair_index* pairs, std::size_t count, float margin, contact* out) {
-    constexpr std::size_t width = lanes<Arch>::size;
+template <class Arch, class Real, std::size_t Fields, pair_fetch Fetch>
+void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                        const pair_index* pairs, std::size_t count, Real margin, contact_of_real<Real>* out) {
+    using batch = real_lanes<Arch, Real>;
+    using contact_type = contact_of_real<Real>;
+    constexpr std::size_t width = batch::size;
     constexpr std::size_t block = 1024;
-    // The first pass stores 48 bytes a pair faster than the lines it writes
+    // The first pass stores 48 bytes a pair (96 in double) faster than the lines it writes
     // arrive from memory: a batch larger than the caches (256K pairs, 12 MiB
     // of contacts) took 1.9 ms against 1.3 until the lines 512 contacts ahead
     // were asked for, for writing.
@@ -196,24 +234,25 @@ void contact_pose_batch(const float* a, std::size_t a_stride, const float* b, st
         const std::size_t n = count - begin < block ? count - begin : block;
         // A stream's block starts at its own rows; a list's at its own pairs.
         const pair_index* block_pairs = pairs != nullptr ? pairs + begin : nullptr;
-        const float* block_a = pairs != nullptr ? a : a + a_stride * begin;
-        const float* block_b = pairs != nullptr ? b : b + b_stride * begin;
-        contact* block_out = out + begin;
+        const Real* block_a = pairs != nullptr ? a : a + a_stride * begin;
+        const Real* block_b = pairs != nullptr ? b : b + b_stride * begin;
+        contact_type* block_out = out + begin;
         std::size_t near_count = 0;
-        for_each_vector_of_pairs<Arch, Fields, Fetch>(
+        for_each_vector_of_pairs<Arch, Real, Fields, Fetch>(
             block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
-            [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
-                __attribute__((always_inline)) {
+            [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
                     if (begin + i + width + written_ahead <= count) {
                         const char* line = reinterpret_cast<const char*>(block_out + i + written_ahead);
-                        for (std::size_t k = 0; k < width * sizeof(contact); k += 64) {
+                        for (std::size_t k = 0; k < width * sizeof(contact_type); k += 64) {
                             __builtin_prefetch(line + k, 1, 3);
                         }
                     }
-                    const pose_reference_lanes<Arch> p = pose_reference_of<Arch>(fa, fb);
-                    store_contacts<Arch>(fields_of<Arch>(contact_without_points<Arch>(p.flip, p.ux, p.uy, p.sa, p.sb)),
-                                         block_out + i, valid);
-                    for (unsigned bits = lane_bits(may_have_points<Arch>(p, margin)); bits != 0; bits &= bits - 1) {
+                    const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
+                    store_contacts<Arch, Real>(fields_of<Arch, Real>(contact_without_points<Arch, Real>(
+                                                   p.flip, p.ux, p.uy, p.sa, p.sb)),
+                                               block_out + i, valid);
+                    for (unsigned bits = lane_bits(may_have_points<Arch, Real>(p, margin)); bits != 0;
+                         bits &= bits - 1) {
                         const std::size_t lane = static_cast<std::size_t>(__builtin_ctz(bits));
                         if (lane < valid) {
                             const auto at = static_cast<std::uint32_t>(i + lane);
@@ -222,44 +261,55 @@ void contact_pose_batch(const float* a, std::size_t a_stride, const float* b, st
                         }
                     }
                 });
-        for_each_vector_of_pairs<Arch, Fields, pair_fetch::none>(
+        for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,
-            [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
-                __attribute__((always_inline)) {
-                    store_contacts_to<Arch>(fields_of<Arch>(contact_pose_lanes_of<Arch>(fa, fb, margin)),
-                                            [&](std::size_t lane) { return block_out + near_at[i + lane]; }, valid);
+            [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
+                    store_contacts_to<Arch, Real>(
+                        fields_of<Arch, Real>(contact_pose_lanes_of<Arch, Real>(fa, fb, margin)),
+                        [&](std::size_t lane) { return block_out + near_at[i + lane]; }, valid);
                 });
     }
 }
 
-/// out[i] = the distance and closest points of box a(i) and box b(i) (see distance_fn).
-template <class Arch, std::size_t Fields, bool Corners>
-void distance_batch(const float* a, std::size_t a_stride, const float* b, std::size_t b_stride,
-                    const pair_index* pairs, std::size_t count, closest_points* out) {
-    constexpr std::size_t width = lanes<Arch>::size;
-    for_each_vector_of_pairs<Arch, Fields>(
+/// The closest points of the real type: closest_points (float) or closest_points64 (double).
+template <class Real>
+using closest_points_of_real = std::conditional_t<std::is_same<Real, float>::value, closest_points, closest_points64>;
+
+/// out[i] = the distance and closest points of box a(i) and box b(i) (see distance_fn, distance64_fn).
+template <class Arch, class Real, std::size_t Fields, bool Corners>
+void distance_batch(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
+                    const pair_index* pairs, std::size_t count, closest_points_of_real<Real>* out) {
+    using batch = real_lanes<Arch, Real>;
+    constexpr std::size_t width = batch::size;
+    for_each_vector_of_pairs<Arch, Real, Fields>(
         a, a_stride, b, b_stride, pairs, count, count,
-        [&](const lanes<Arch>* fa, const lanes<Arch>* fb, std::size_t i, std::size_t valid)
-            __attribute__((always_inline)) {
-                const closest_points_lanes<Arch> c = distance_lanes_of<Arch, Corners>(fa, fb);
-                alignas(64) float staged[5][width];
-                const lanes<Arch>* fields[5] = {&c.distance, &c.ax, &c.ay, &c.bx, &c.by};
-                for (int f = 0; f < 5; ++f) {
-                    fields[f]->store_aligned(staged[f]);
-                }
-                for (std::size_t lane = 0; lane < valid; ++lane) {
-                    out[i + lane] = closest_points{staged[0][lane], staged[1][lane], staged[2][lane],
-                                                   staged[3][lane], staged[4][lane]};
-                }
-            });
+        [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
+            const closest_points_lanes<Arch, Real> c = distance_lanes_of<Arch, Real, Corners>(fa, fb);
+            alignas(64) Real staged[5][width];
+            const batch* fields[5] = {&c.distance, &c.ax, &c.ay, &c.bx, &c.by};
+            for (int f = 0; f < 5; ++f) {
+                fields[f]->store_aligned(staged[f]);
+            }
+            for (std::size_t lane = 0; lane < valid; ++lane) {
+                out[i + lane] = closest_points_of_real<Real>{staged[0][lane], staged[1][lane], staged[2][lane],
+                                                             staged[3][lane], staged[4][lane]};
+            }
+        });
 }
 
 /// The contact table of this ISA.
 template <class Arch>
 constexpr contact_kernel_table contact_table_of() {
-    return contact_kernel_table{contact_pose_batch<Arch, 6, pair_fetch::into_l2>,
-                                contact_pose_batch<Arch, 6, pair_fetch::none>, contact_batch<Arch, 8, true>,
-                                distance_batch<Arch, 6, false>, distance_batch<Arch, 8, true>};
+    return contact_kernel_table{contact_pose_batch<Arch, float, 6, pair_fetch::into_l2>,
+                                contact_pose_batch<Arch, float, 6, pair_fetch::none>,
+                                contact_batch<Arch, float, 8, true>,
+                                distance_batch<Arch, float, 6, false>,
+                                distance_batch<Arch, float, 8, true>,
+                                contact_pose_batch<Arch, double, 6, pair_fetch::into_l2>,
+                                contact_pose_batch<Arch, double, 6, pair_fetch::none>,
+                                contact_batch<Arch, double, 8, true>,
+                                distance_batch<Arch, double, 6, false>,
+                                distance_batch<Arch, double, 8, true>};
 }
 
 }  // namespace

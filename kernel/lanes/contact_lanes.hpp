@@ -1,46 +1,60 @@
 // Contacts in lanes, one pair per lane: obbsat/ref/contact.hpp's steps written
-// once over the xsimd architecture, without branches (every choice a select,
+// once over the xsimd architecture and the real type (float for the float
+// stores, double for pose_records64 and rect_records64, every operation the
+// double reference's in double), without branches (every choice a select,
 // every argmax a fold of strict compares, so ties go to the lowest index as in
 // the reference). contact_batch.hpp drives them over a batch. Private to each
 // per-ISA object (README.md).
 #pragma once
 
 #include "lanes/lanes.hpp"
+#include "lanes/pose64_lanes.hpp"
 #include "lanes/pose_lanes.hpp"
 
 #include <obbsat/contact_manifold.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace obbsat::detail {
 namespace {
 
+/// One real per lane: float or double, 4 or 2 per SSE2 vector, 8 or 4 per
+/// AVX2, 16 or 8 per AVX-512. Every step below is written once over both.
+template <class Arch, class Real>
+using real_lanes = xsimd::batch<Real, Arch>;
+
+template <class Arch, class Real>
+using real_mask = xsimd::batch_bool<Real, Arch>;
+
 /// -x, the sign bit flipped as the reference's negation flips it. Not
 /// xsimd's unary minus: for AVX-512, xsimd 8.1 computes it as 0 - x, which
 /// turns -(+0) into +0 where the reference gives -0.
-template <class Arch>
-OBBSAT_LANE_INLINE lanes<Arch> negated(const lanes<Arch>& x) {
-    return xsimd::bitwise_xor(x, lanes<Arch>(-0.0f));
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_lanes<Arch, Real> negated(const real_lanes<Arch, Real>& x) {
+    return xsimd::bitwise_xor(x, real_lanes<Arch, Real>(Real(-0.0)));
 }
 
 /// A box per lane: vertices relative to the origin and outward face normals.
-template <class Arch>
+template <class Arch, class Real>
 struct contact_box_lanes {
-    lanes<Arch> vx[4], vy[4], nx[4], ny[4];
-    lanes<Arch> inv[4];  ///< step 1: the reciprocal length of each face normal
+    real_lanes<Arch, Real> vx[4], vy[4], nx[4], ny[4];
+    real_lanes<Arch, Real> inv[4];  ///< step 1: the reciprocal length of each face normal
 };
 
 /// The pose box of the reference: fields cx, cy, hx, hy, c, s; origin (ox0, oy0).
-template <class Arch>
-OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f, const lanes<Arch>& origin_x,
-                                                              const lanes<Arch>& origin_y, const lanes<Arch>& inv) {
-    using batch = lanes<Arch>;
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_pose_box(const real_lanes<Arch, Real>* f,
+                                                                  const real_lanes<Arch, Real>& origin_x,
+                                                                  const real_lanes<Arch, Real>& origin_y,
+                                                                  const real_lanes<Arch, Real>& inv) {
+    using batch = real_lanes<Arch, Real>;
     const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
     const batch c = f[4], s = f[5];
     const batch ux = f[2] * c, uy = f[2] * s;
     const batch wx = f[3] * s, wy = f[3] * c;
-    contact_box_lanes<Arch> box;
+    contact_box_lanes<Arch, Real> box;
     box.vx[0] = (ox - ux) - wx;
     box.vy[0] = (oy - uy) + wy;
     box.vx[1] = (ox + ux) - wx;
@@ -49,14 +63,14 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f
     box.vy[2] = (oy + uy) - wy;
     box.vx[3] = (ox - ux) + wx;
     box.vy[3] = (oy - uy) - wy;
-    box.nx[0] = negated<Arch>(s);
+    box.nx[0] = negated<Arch, Real>(s);
     box.ny[0] = c;
     box.nx[1] = c;
     box.ny[1] = s;
     box.nx[2] = s;
-    box.ny[2] = negated<Arch>(c);
-    box.nx[3] = negated<Arch>(c);
-    box.ny[3] = negated<Arch>(s);
+    box.ny[2] = negated<Arch, Real>(c);
+    box.nx[3] = negated<Arch, Real>(c);
+    box.ny[3] = negated<Arch, Real>(s);
     // The four faces' dot(n, n) are (s·s) + (c·c) in some order of the same
     // two exact squares: one inv, computed by the caller.
     for (int k = 0; k < 4; ++k) {
@@ -66,80 +80,96 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_pose_box(const lanes<Arch>* f
 }
 
 /// The corner box of the reference: fields the corners UL, UR, LR, LL (x, y each).
-template <class Arch>
-OBBSAT_LANE_INLINE contact_box_lanes<Arch> contact_corner_box(const lanes<Arch>* f, const lanes<Arch>& origin_x,
-                                                                const lanes<Arch>& origin_y) {
-    using batch = lanes<Arch>;
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_corner_box(const real_lanes<Arch, Real>* f,
+                                                                    const real_lanes<Arch, Real>& origin_x,
+                                                                    const real_lanes<Arch, Real>& origin_y) {
+    using batch = real_lanes<Arch, Real>;
     batch ex[4], ey[4];
     for (int k = 0; k < 4; ++k) {
         const int next = (k + 1) & 3;
         ex[k] = f[2 * next] - f[2 * k];
         ey[k] = f[2 * next + 1] - f[2 * k + 1];
     }
-    const auto clockwise = ((ex[0] * ey[1]) - (ey[0] * ex[1])) < batch(0.0f);
-    contact_box_lanes<Arch> box;
+    const auto clockwise = ((ex[0] * ey[1]) - (ey[0] * ex[1])) < batch(Real(0));
+    contact_box_lanes<Arch, Real> box;
     for (int k = 0; k < 4; ++k) {
         box.vx[k] = f[2 * k] - origin_x;
         box.vy[k] = f[2 * k + 1] - origin_y;
-        box.nx[k] = xsimd::select(clockwise, negated<Arch>(ey[k]), ey[k]);
-        box.ny[k] = xsimd::select(clockwise, ex[k], negated<Arch>(ex[k]));
-        box.inv[k] = batch(1.0f) / xsimd::sqrt((box.nx[k] * box.nx[k]) + (box.ny[k] * box.ny[k]));
+        box.nx[k] = xsimd::select(clockwise, negated<Arch, Real>(ey[k]), ey[k]);
+        box.ny[k] = xsimd::select(clockwise, ex[k], negated<Arch, Real>(ex[k]));
+        box.inv[k] = batch(Real(1)) / xsimd::sqrt((box.nx[k] * box.nx[k]) + (box.ny[k] * box.ny[k]));
     }
     return box;
 }
 
 // The integers of a contact (its point count, its feature keys) travel with
-// its floats as float lanes holding their bits: a whole float converted to
-// int32 (one conversion instruction on every ISA) and its bits reinterpreted.
-// Nothing else of xsimd's integer batches is used: AVX2 builds some of their
-// operations from SSE2 halves, templates that two per-ISA objects would both
-// define (README.md). Nor are the bits made as subnormal products, which a
-// caller's flush-to-zero mode would wipe out.
+// its reals as lanes holding their bits, as the 4-byte integer at the start
+// of an equally wide field (the rest of a double's eight bytes zero, as the
+// reference's zeroed padding). Nothing of xsimd's integer batches is used but
+// float's conversion to int32 (one instruction on every ISA): AVX2 builds
+// other integer operations from SSE2 halves, templates that two per-ISA
+// objects would both define (README.md). Nor are the bits made as subnormal
+// products, which a caller's flush-to-zero mode would wipe out.
 
-/// The float lanes whose bits are the int32 of the whole floats `n` (< 2^24).
-template <class Arch>
-OBBSAT_LANE_INLINE lanes<Arch> integer_bits(const lanes<Arch>& n) {
-    return xsimd::bitwise_cast<lanes<Arch>>(xsimd::batch_cast<std::int32_t>(n));
+/// The lanes whose bits are the integers `n` (whole reals below 2^24): for
+/// float the int32 conversion; for double n + 2^52, exact, which holds n in
+/// its low mantissa bits below the bits of 2^52, cleared by an xor.
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_lanes<Arch, Real> integer_bits(const real_lanes<Arch, Real>& n) {
+    using batch = real_lanes<Arch, Real>;
+    if constexpr (std::is_same<Real, float>::value) {
+        return xsimd::bitwise_cast<batch>(xsimd::batch_cast<std::int32_t>(n));
+    } else {
+        const batch two_to_52(0x1p52);
+        return xsimd::bitwise_xor(n + two_to_52, two_to_52);
+    }
 }
 
-/// The float lanes whose bits are contact_feature's four bytes (index_a,
-/// type_a, index_b, type_b; little-endian) for codes index + 4·type of A and
-/// of B. The three low bytes make a whole float below 2^24; type_b's bit,
-/// bit 24, is OR-ed in as the bits of 2^-125 (exponent field 2).
-template <class Arch>
-OBBSAT_LANE_INLINE lanes<Arch> feature_bits(const lanes<Arch>& code_a, const lanes<Arch>& code_b) {
-    using batch = lanes<Arch>;
-    const batch zero(0.0f), one(1.0f), four(4.0f);
+/// The lanes whose bits are contact_feature's four bytes (index_a, type_a,
+/// index_b, type_b; little-endian) for codes index + 4·type of A and of B.
+/// For float the three low bytes make a whole float below 2^24 and type_b's
+/// bit, bit 24, is OR-ed in as the bits of 2^-125 (exponent field 2); a
+/// double holds all four bytes as one whole number.
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_lanes<Arch, Real> feature_bits(const real_lanes<Arch, Real>& code_a,
+                                                       const real_lanes<Arch, Real>& code_b) {
+    using batch = real_lanes<Arch, Real>;
+    const batch zero(Real(0)), one(Real(1)), four(Real(4));
     const batch type_a = xsimd::select(code_a >= four, one, zero), index_a = code_a - (four * type_a);
     const auto b_is_face = code_b >= four;
     const batch index_b = code_b - xsimd::select(b_is_face, four, zero);
-    const batch low_bytes = (index_a + (batch(0x1p8f) * type_a)) + (batch(0x1p16f) * index_b);
-    static_assert(0x1p-125f == 1.17549435e-38f * 2.0f, "2^-125 has the bits 0x01000000");
-    return xsimd::bitwise_or(integer_bits<Arch>(low_bytes), xsimd::select(b_is_face, batch(0x1p-125f), zero));
+    const batch low_bytes = (index_a + (batch(Real(0x1p8)) * type_a)) + (batch(Real(0x1p16)) * index_b);
+    if constexpr (std::is_same<Real, float>::value) {
+        static_assert(0x1p-125f == 1.17549435e-38f * 2.0f, "2^-125 has the bits 0x01000000");
+        return xsimd::bitwise_or(integer_bits<Arch, Real>(low_bytes), xsimd::select(b_is_face, batch(0x1p-125f), zero));
+    } else {
+        return integer_bits<Arch, Real>(low_bytes + xsimd::select(b_is_face, batch(0x1p24), zero));
+    }
 }
 
 /// The contact of each lane's pair, as the reference's fields; the point
 /// count and the feature keys hold the bits of their integers (integer_bits,
 /// feature_bits).
-template <class Arch>
+template <class Arch, class Real>
 struct contact_out_lanes {
-    lanes<Arch> nx, ny, depth, count;
-    lanes<Arch> x[2], y[2], separation[2], feature[2];
+    real_lanes<Arch, Real> nx, ny, depth, count;
+    real_lanes<Arch, Real> x[2], y[2], separation[2], feature[2];
 };
 
 /// Step 2 for one box's faces against the other's vertices, and the argmax
 /// fold: the separation, index, normal, its reciprocal length and the face's
 /// ends of the best face.
-template <class Arch>
+template <class Arch, class Real>
 struct best_face_lanes {
-    lanes<Arch> sep, index, nx, ny, inv, x1, y1, x2, y2;
+    real_lanes<Arch, Real> sep, index, nx, ny, inv, x1, y1, x2, y2;
 };
 
-template <class Arch>
-OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_lanes<Arch>& faces,
-                                                             const contact_box_lanes<Arch>& other) {
-    using batch = lanes<Arch>;
-    best_face_lanes<Arch> best;
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE best_face_lanes<Arch, Real> best_face_lanes_of(const contact_box_lanes<Arch, Real>& faces,
+                                                                  const contact_box_lanes<Arch, Real>& other) {
+    using batch = real_lanes<Arch, Real>;
+    best_face_lanes<Arch, Real> best;
     for (int k = 0; k < 4; ++k) {
         // dot(n[k], other.v[j] - v[k]), each difference per coordinate.
         auto along = [&](int j) {
@@ -152,12 +182,12 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_la
         const batch sep = least * faces.inv[k];
         const int next = (k + 1) & 3;
         if (k == 0) {
-            best = best_face_lanes<Arch>{sep,         batch(0.0f),    faces.nx[0],    faces.ny[0], faces.inv[0],
-                                         faces.vx[0], faces.vy[0], faces.vx[next], faces.vy[next]};
+            best = best_face_lanes<Arch, Real>{sep,         batch(Real(0)), faces.nx[0],    faces.ny[0],   faces.inv[0],
+                                               faces.vx[0], faces.vy[0],    faces.vx[next], faces.vy[next]};
         } else {
             const auto better = sep > best.sep;
             best.sep = xsimd::select(better, sep, best.sep);
-            best.index = xsimd::select(better, batch(static_cast<float>(k)), best.index);
+            best.index = xsimd::select(better, batch(static_cast<Real>(k)), best.index);
             best.nx = xsimd::select(better, faces.nx[k], best.nx);
             best.ny = xsimd::select(better, faces.ny[k], best.ny);
             best.inv = xsimd::select(better, faces.inv[k], best.inv);
@@ -171,9 +201,9 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch> best_face_lanes_of(const contact_box_la
 }
 
 /// Step 3's span of a box.
-template <class Arch>
-OBBSAT_LANE_INLINE lanes<Arch> span_lanes(const contact_box_lanes<Arch>& box) {
-    lanes<Arch> lo_x = box.vx[0], hi_x = box.vx[0], lo_y = box.vy[0], hi_y = box.vy[0];
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_lanes<Arch, Real> span_lanes(const contact_box_lanes<Arch, Real>& box) {
+    real_lanes<Arch, Real> lo_x = box.vx[0], hi_x = box.vx[0], lo_y = box.vy[0], hi_y = box.vy[0];
     for (int j = 1; j < 4; ++j) {
         lo_x = min_pick(box.vx[j], lo_x);
         hi_x = max_pick(box.vx[j], hi_x);
@@ -184,10 +214,11 @@ OBBSAT_LANE_INLINE lanes<Arch> span_lanes(const contact_box_lanes<Arch>& box) {
 }
 
 /// Box b, or box a where `pick_a`.
-template <class Arch>
-OBBSAT_LANE_INLINE contact_box_lanes<Arch> either_box(const lane_mask<Arch>& pick_a, const contact_box_lanes<Arch>& a,
-                                                      const contact_box_lanes<Arch>& b) {
-    contact_box_lanes<Arch> out;
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> either_box(const real_mask<Arch, Real>& pick_a,
+                                                            const contact_box_lanes<Arch, Real>& a,
+                                                            const contact_box_lanes<Arch, Real>& b) {
+    contact_box_lanes<Arch, Real> out;
     for (int k = 0; k < 4; ++k) {
         out.vx[k] = xsimd::select(pick_a, a.vx[k], b.vx[k]);
         out.vy[k] = xsimd::select(pick_a, a.vy[k], b.vy[k]);
@@ -201,46 +232,49 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch> either_box(const lane_mask<Arch>& pic
 /// What steps 1 to 3 choose, per lane: the reference box (B where flip), its
 /// face r with its normal, that normal's reciprocal length and the face's
 /// ends, and the best separations of A's and of B's faces.
-template <class Arch>
+template <class Arch, class Real>
 struct reference_lanes {
-    lane_mask<Arch> flip;
-    lanes<Arch> r, sa, sb, nx, ny, inv, q1x, q1y, q2x, q2y;
+    real_mask<Arch, Real> flip;
+    real_lanes<Arch, Real> r, sa, sb, nx, ny, inv, q1x, q1y, q2x, q2y;
 };
 
 /// Steps 1 to 3 of the reference for boxes a and b (the corner rule).
-template <class Arch>
-OBBSAT_LANE_INLINE reference_lanes<Arch> reference_of_boxes(const contact_box_lanes<Arch>& a,
-                                                            const contact_box_lanes<Arch>& b) {
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_box_lanes<Arch, Real>& a,
+                                                                  const contact_box_lanes<Arch, Real>& b) {
     // Step 2 (step 1 is the boxes' inv).
-    const best_face_lanes<Arch> fa = best_face_lanes_of<Arch>(a, b);
-    const best_face_lanes<Arch> fb = best_face_lanes_of<Arch>(b, a);
+    const best_face_lanes<Arch, Real> fa = best_face_lanes_of<Arch, Real>(a, b);
+    const best_face_lanes<Arch, Real> fb = best_face_lanes_of<Arch, Real>(b, a);
     // Step 3.
-    const lanes<Arch> tol = lanes<Arch>(0x1p-10f) * min_pick(span_lanes<Arch>(a), span_lanes<Arch>(b));
+    const real_lanes<Arch, Real> tol =
+        real_lanes<Arch, Real>(Real(0x1p-10)) * min_pick(span_lanes<Arch, Real>(a), span_lanes<Arch, Real>(b));
     const auto flip = fb.sep > (fa.sep + tol);
-    return reference_lanes<Arch>{flip,
-                                 xsimd::select(flip, fb.index, fa.index),
-                                 fa.sep,
-                                 fb.sep,
-                                 xsimd::select(flip, fb.nx, fa.nx),
-                                 xsimd::select(flip, fb.ny, fa.ny),
-                                 xsimd::select(flip, fb.inv, fa.inv),
-                                 xsimd::select(flip, fb.x1, fa.x1),
-                                 xsimd::select(flip, fb.y1, fa.y1),
-                                 xsimd::select(flip, fb.x2, fa.x2),
-                                 xsimd::select(flip, fb.y2, fa.y2)};
+    return reference_lanes<Arch, Real>{flip,
+                                       xsimd::select(flip, fb.index, fa.index),
+                                       fa.sep,
+                                       fb.sep,
+                                       xsimd::select(flip, fb.nx, fa.nx),
+                                       xsimd::select(flip, fb.ny, fa.ny),
+                                       xsimd::select(flip, fb.inv, fa.inv),
+                                       xsimd::select(flip, fb.x1, fa.x1),
+                                       xsimd::select(flip, fb.y1, fa.y1),
+                                       xsimd::select(flip, fb.x2, fa.x2),
+                                       xsimd::select(flip, fb.y2, fa.y2)};
 }
 
 /// Step 4's normal and depth, with no point (count 0, every point field
 /// zero): the contact of a pair whose best faces separate it by more than
 /// the margin, and what steps 5 to 8 start from.
-template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_without_points(const lane_mask<Arch>& flip,
-                                                                  const lanes<Arch>& ux, const lanes<Arch>& uy,
-                                                                  const lanes<Arch>& sa, const lanes<Arch>& sb) {
-    const lanes<Arch> zero(0.0f);
-    contact_out_lanes<Arch> out;
-    out.nx = xsimd::select(flip, negated<Arch>(ux), ux);
-    out.ny = xsimd::select(flip, negated<Arch>(uy), uy);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_without_points(const real_mask<Arch, Real>& flip,
+                                                                        const real_lanes<Arch, Real>& ux,
+                                                                        const real_lanes<Arch, Real>& uy,
+                                                                        const real_lanes<Arch, Real>& sa,
+                                                                        const real_lanes<Arch, Real>& sb) {
+    const real_lanes<Arch, Real> zero(Real(0));
+    contact_out_lanes<Arch, Real> out;
+    out.nx = xsimd::select(flip, negated<Arch, Real>(ux), ux);
+    out.ny = xsimd::select(flip, negated<Arch, Real>(uy), uy);
     out.depth = zero - xsimd::select(flip, sb, sa);
     out.count = zero;
     for (int e = 0; e < 2; ++e) {
@@ -253,17 +287,18 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_without_points(const lane_mas
 }
 
 /// Step 5's choice, per lane: the incident face k and its edge's ends p1, p2.
-template <class Arch>
+template <class Arch, class Real>
 struct incident_edge_lanes {
-    lanes<Arch> k, p1x, p1y, p2x, p2y;
+    real_lanes<Arch, Real> k, p1x, p1y, p2x, p2y;
 };
 
 /// Step 5 on a box of four faces: the face most against (ux, uy).
-template <class Arch>
-OBBSAT_LANE_INLINE incident_edge_lanes<Arch> incident_edge_of_box(const contact_box_lanes<Arch>& inc,
-                                                                  const lanes<Arch>& ux, const lanes<Arch>& uy) {
-    using batch = lanes<Arch>;
-    incident_edge_lanes<Arch> edge;
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> incident_edge_of_box(const contact_box_lanes<Arch, Real>& inc,
+                                                                        const real_lanes<Arch, Real>& ux,
+                                                                        const real_lanes<Arch, Real>& uy) {
+    using batch = real_lanes<Arch, Real>;
+    incident_edge_lanes<Arch, Real> edge;
     batch most_against;
     for (int f = 0; f < 4; ++f) {
         const int next = (f + 1) & 3;
@@ -271,11 +306,11 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch> incident_edge_of_box(const contact_
         const batch x1 = inc.vx[f], y1 = inc.vy[f], x2 = inc.vx[next], y2 = inc.vy[next];
         if (f == 0) {
             most_against = along;
-            edge = incident_edge_lanes<Arch>{batch(0.0f), x1, y1, x2, y2};
+            edge = incident_edge_lanes<Arch, Real>{batch(Real(0)), x1, y1, x2, y2};
         } else {
             const auto better = along < most_against;
             most_against = xsimd::select(better, along, most_against);
-            edge.k = xsimd::select(better, batch(static_cast<float>(f)), edge.k);
+            edge.k = xsimd::select(better, batch(static_cast<Real>(f)), edge.k);
             edge.p1x = xsimd::select(better, x1, edge.p1x);
             edge.p1y = xsimd::select(better, y1, edge.p1y);
             edge.p2x = xsimd::select(better, x2, edge.p2x);
@@ -287,19 +322,18 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch> incident_edge_of_box(const contact_
 
 /// Steps 6 to 8 of the reference, and step 4's outputs, from the reference
 /// face (ref), its unit normal (ux, uy) and the incident edge.
-template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> clipped_manifold_lanes(const reference_lanes<Arch>& ref,
-                                                                  const lanes<Arch>& ux, const lanes<Arch>& uy,
-                                                                  const incident_edge_lanes<Arch>& edge,
-                                                                  const lanes<Arch>& origin_x,
-                                                                  const lanes<Arch>& origin_y, float margin_value) {
-    using batch = lanes<Arch>;
-    const batch zero(0.0f), one(1.0f), four(4.0f), margin(margin_value);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
+    const reference_lanes<Arch, Real>& ref, const real_lanes<Arch, Real>& ux, const real_lanes<Arch, Real>& uy,
+    const incident_edge_lanes<Arch, Real>& edge, const real_lanes<Arch, Real>& origin_x,
+    const real_lanes<Arch, Real>& origin_y, Real margin_value) {
+    using batch = real_lanes<Arch, Real>;
+    const batch zero(Real(0)), one(Real(1)), four(Real(4)), margin(margin_value);
     const auto flip = ref.flip;
     const batch r = ref.r, q1x = ref.q1x, q1y = ref.q1y, q2x = ref.q2x, q2y = ref.q2y;
     const batch k = edge.k, p1x = edge.p1x, p1y = edge.p1y, p2x = edge.p2x, p2y = edge.p2y;
 
-    contact_out_lanes<Arch> out = contact_without_points<Arch>(flip, ux, uy, ref.sa, ref.sb);
+    contact_out_lanes<Arch, Real> out = contact_without_points<Arch, Real>(flip, ux, uy, ref.sa, ref.sb);
 
     // Step 6: clip to the side planes.
     const batch tx = q2x - q1x, ty = q2y - q1y;
@@ -319,7 +353,7 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> clipped_manifold_lanes(const referenc
     const batch vertex_of_incident[2] = {k, k_next};
 
     batch px[2], py[2], sep[2], feature[2];
-    lane_mask<Arch> keep[2];
+    real_mask<Arch, Real> keep[2];
     for (int e = 0; e < 2; ++e) {
         const auto below = tau[e] < zero;
         const auto moved = below | (tau[e] > T);
@@ -330,7 +364,7 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> clipped_manifold_lanes(const referenc
         const batch ref_code = xsimd::select(moved, xsimd::select(below, r, r_next), r + four);
         const batch inc_code = xsimd::select(moved, k + four, vertex_of_incident[e]);
         feature[e] =
-            feature_bits<Arch>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
+            feature_bits<Arch, Real>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
         sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
     }
     // Step 7: within the margin, or the nearer point of a touching or
@@ -359,20 +393,21 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> clipped_manifold_lanes(const referenc
     out.y[1] = xsimd::select(second_kept, py[1], zero);
     out.separation[1] = xsimd::select(second_kept, sep[1], zero);
     out.feature[1] = xsimd::select(second_kept, feature[1], zero);
-    out.count = integer_bits<Arch>(xsimd::select(keep[0], one, zero) + xsimd::select(keep[1], one, zero));
+    out.count = integer_bits<Arch, Real>(xsimd::select(keep[0], one, zero) + xsimd::select(keep[1], one, zero));
     return out;
 }
 
 /// Steps 4 to 8 of the reference from the choice of the reference face and
 /// the incident box (B, or A where flip).
-template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_lanes<Arch>& inc,
-                                                             const reference_lanes<Arch>& ref,
-                                                             const lanes<Arch>& origin_x,
-                                                             const lanes<Arch>& origin_y, float margin) {
-    const lanes<Arch> ux = ref.nx * ref.inv, uy = ref.ny * ref.inv;
-    return clipped_manifold_lanes<Arch>(ref, ux, uy, incident_edge_of_box<Arch>(inc, ux, uy), origin_x, origin_y,
-                                        margin);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> manifold_lanes_of(const contact_box_lanes<Arch, Real>& inc,
+                                                                   const reference_lanes<Arch, Real>& ref,
+                                                                   const real_lanes<Arch, Real>& origin_x,
+                                                                   const real_lanes<Arch, Real>& origin_y,
+                                                                   Real margin) {
+    const real_lanes<Arch, Real> ux = ref.nx * ref.inv, uy = ref.ny * ref.inv;
+    return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, incident_edge_of_box<Arch, Real>(inc, ux, uy), origin_x,
+                                              origin_y, margin);
 }
 
 /// Face j's edge of pose boxes, per lane, without building the boxes: pose
@@ -382,20 +417,22 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> manifold_lanes_of(const contact_box_l
 /// as sums of the terms with their sign bits set: `a` on u for k = 0 and 3,
 /// `b` on w for k = 0 and 1 (on wy the other way round). Face j's second end,
 /// vertex j + 1, takes u's sign from the complement of b and w's from a.
-template <class Arch>
-OBBSAT_LANE_INLINE incident_edge_lanes<Arch> pose_edge_lanes(const lanes<Arch>* f, const lanes<Arch>& origin_x,
-                                                             const lanes<Arch>& origin_y, const lanes<Arch>& j) {
-    using batch = lanes<Arch>;
-    const batch sign(-0.0f), none(0.0f);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> pose_edge_lanes(const real_lanes<Arch, Real>* f,
+                                                                   const real_lanes<Arch, Real>& origin_x,
+                                                                   const real_lanes<Arch, Real>& origin_y,
+                                                                   const real_lanes<Arch, Real>& j) {
+    using batch = real_lanes<Arch, Real>;
+    const batch sign(Real(-0.0)), none(Real(0));
     const batch ox = f[0] - origin_x, oy = f[1] - origin_y;
     const batch c = f[4], s = f[5];
     const batch ux = f[2] * c, uy = f[2] * s;
     const batch wx = f[3] * s, wy = f[3] * c;
-    const batch a = xsimd::select((j == batch(0.0f)) | (j == batch(3.0f)), sign, none);
-    const batch b = xsimd::select(j < batch(2.0f), sign, none);
+    const batch a = xsimd::select((j == batch(Real(0))) | (j == batch(Real(3))), sign, none);
+    const batch b = xsimd::select(j < batch(Real(2)), sign, none);
     const batch not_a = xsimd::bitwise_xor(a, sign), not_b = xsimd::bitwise_xor(b, sign);
     auto signed_by = [](const batch& x, const batch& bit) { return xsimd::bitwise_xor(x, bit); };
-    incident_edge_lanes<Arch> edge;
+    incident_edge_lanes<Arch, Real> edge;
     edge.k = j;
     edge.p1x = (ox + signed_by(ux, a)) + signed_by(wx, b);
     edge.p1y = (oy + signed_by(uy, a)) + signed_by(wy, not_b);
@@ -404,33 +441,48 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch> pose_edge_lanes(const lanes<Arch>* 
     return edge;
 }
 
+/// Method local's offsets and reaches (steps 1 to 4) for pose fields cx, cy,
+/// hx, hy, c, s of A and of B: the float pose lanes' steps on float, the
+/// double ones' on double (the references local and local64).
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE auto local_axes_lanes(const real_lanes<Arch, Real>* fa, const real_lanes<Arch, Real>* fb) {
+    if constexpr (std::is_same<Real, float>::value) {
+        const pose_lanes<Arch> pa{fa[0], fa[1], fa[2], fa[3], fa[4], fa[5]};
+        const pose_lanes<Arch> pb{fb[0], fb[1], fb[2], fb[3], fb[4], fb[5]};
+        typename pose_steps<Arch>::axes axes;
+        real_lanes<Arch, Real> P, Q;
+        pose_steps<Arch>::first_axes(pa, pb, axes, P, Q);
+        pose_steps<Arch>::second_axes(pa, pb, axes, P, Q);
+        return axes;
+    } else {
+        return pose64_steps<Arch>::axes_of(pose64_lanes<Arch>{fa[0], fa[1], fa[2], fa[3], fa[4], fa[5]},
+                                           pose64_lanes<Arch>{fb[0], fb[1], fb[2], fb[3], fb[4], fb[5]});
+    }
+}
+
 /// What the pose steps P1 to P3 and step 4 choose, per lane: the reference
 /// pose (B where flip), its face r, the best separations of A's and of B's
 /// faces, the boxes' reciprocal lengths and the unit normal u of face r.
-template <class Arch>
+template <class Arch, class Real>
 struct pose_reference_lanes {
-    lane_mask<Arch> flip;
-    lanes<Arch> r, sa, sb, inv_a, inv_b, ux, uy;
+    real_mask<Arch, Real> flip;
+    real_lanes<Arch, Real> r, sa, sb, inv_a, inv_b, ux, uy;
 };
 
 /// Pose steps P1 to P3 and step 4's normal for fields cx, cy, hx, hy, c, s of
 /// A and of B.
-template <class Arch>
-OBBSAT_LANE_INLINE pose_reference_lanes<Arch> pose_reference_of(const lanes<Arch>* fa, const lanes<Arch>* fb) {
-    using batch = lanes<Arch>;
-    const batch zero(0.0f), one(1.0f), two(2.0f), three(3.0f);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE pose_reference_lanes<Arch, Real> pose_reference_of(const real_lanes<Arch, Real>* fa,
+                                                                      const real_lanes<Arch, Real>* fb) {
+    using batch = real_lanes<Arch, Real>;
+    const batch zero(Real(0)), one(Real(1)), two(Real(2)), three(Real(3));
     // Pose step 1.
     const batch len_a = xsimd::sqrt((fa[4] * fa[4]) + (fa[5] * fa[5]));
     const batch len_b = xsimd::sqrt((fb[4] * fb[4]) + (fb[5] * fb[5]));
     const batch inv_a = one / len_a, inv_b = one / len_b;
 
     // Pose step 2: method local's offsets and reaches.
-    const pose_lanes<Arch> pa{fa[0], fa[1], fa[2], fa[3], fa[4], fa[5]};
-    const pose_lanes<Arch> pb{fb[0], fb[1], fb[2], fb[3], fb[4], fb[5]};
-    typename pose_steps<Arch>::axes axes;
-    batch P, Q;
-    pose_steps<Arch>::first_axes(pa, pb, axes, P, Q);
-    pose_steps<Arch>::second_axes(pa, pb, axes, P, Q);
+    const auto axes = local_axes_lanes<Arch, Real>(fa, fb);
     batch sep[4];
     for (int k = 0; k < 4; ++k) {
         sep[k] = (xsimd::abs(axes.offset[k]) - axes.reach[k]) * (k < 2 ? inv_a : inv_b);
@@ -440,7 +492,7 @@ OBBSAT_LANE_INLINE pose_reference_lanes<Arch> pose_reference_of(const lanes<Arch
 
     // Pose step 3.
     const batch size_a = (fa[2] + fa[3]) * len_a, size_b = (fb[2] + fb[3]) * len_b;
-    const batch tol = batch(0x1p-10f) * min_pick(size_a, size_b);
+    const batch tol = batch(Real(0x1p-10)) * min_pick(size_a, size_b);
     const auto flip = sb > (sa + tol);
 
     // The face of the chosen axis that faces the other box.
@@ -451,33 +503,33 @@ OBBSAT_LANE_INLINE pose_reference_lanes<Arch> pose_reference_of(const lanes<Arch
     const batch r = xsimd::select(flip, r_b, r_a);
     // Step 4's normal: face r's of the reference pose, n = (−s, c), (c, s),
     // (s, −c), (−c, −s) for r = 0 to 3, only signs and places changing.
-    const batch sign(-0.0f);
+    const batch sign(Real(-0.0));
     const batch ref_c = xsimd::select(flip, fb[4], fa[4]), ref_s = xsimd::select(flip, fb[5], fa[5]);
     const auto odd = (r == one) | (r == three);
     const batch nx = xsimd::bitwise_xor(xsimd::select(odd, ref_c, ref_s),
                                         xsimd::select((r == zero) | (r == three), sign, zero));
     const batch ny = xsimd::bitwise_xor(xsimd::select(odd, ref_s, ref_c), xsimd::select(r >= two, sign, zero));
     const batch inv = xsimd::select(flip, inv_b, inv_a);
-    return pose_reference_lanes<Arch>{flip, r, sa, sb, inv_a, inv_b, nx * inv, ny * inv};
+    return pose_reference_lanes<Arch, Real>{flip, r, sa, sb, inv_a, inv_b, nx * inv, ny * inv};
 }
 
 /// Whether a lane's best faces leave its pair within the margin: only those
 /// lanes can have points (step 7), the others are contact_without_points.
-template <class Arch>
-OBBSAT_LANE_INLINE lane_mask<Arch> may_have_points(const pose_reference_lanes<Arch>& p, float margin) {
-    const lanes<Arch> limit(margin);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_mask<Arch, Real> may_have_points(const pose_reference_lanes<Arch, Real>& p, Real margin) {
+    const real_lanes<Arch, Real> limit(margin);
     return (p.sa <= limit) & (p.sb <= limit);
 }
 
 /// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
 /// (the reference's pose steps, then steps 4 to 8).
-template <class Arch>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arch>* fa, const lanes<Arch>* fb,
-                                                                 float margin) {
-    using batch = lanes<Arch>;
-    const batch zero(0.0f);
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const real_lanes<Arch, Real>* fa,
+                                                                       const real_lanes<Arch, Real>* fb, Real margin) {
+    using batch = real_lanes<Arch, Real>;
+    const batch zero(Real(0));
     const batch origin_x = fa[0], origin_y = fa[1];
-    const pose_reference_lanes<Arch> p = pose_reference_of<Arch>(fa, fb);
+    const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
     const auto flip = p.flip;
     const batch r = p.r, ux = p.ux, uy = p.uy, inv_a = p.inv_a, inv_b = p.inv_b;
 
@@ -492,21 +544,21 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch> contact_pose_lanes_of(const lanes<Arc
     }
     const batch inc_inv = xsimd::select(flip, inv_a, inv_b);
     const batch inc_c = inc_fields[4], inc_s = inc_fields[5];
-    const batch along_0 = ((negated<Arch>(inc_s) * ux) + (inc_c * uy)) * inc_inv;
+    const batch along_0 = ((negated<Arch, Real>(inc_s) * ux) + (inc_c * uy)) * inc_inv;
     const batch along_1 = ((inc_c * ux) + (inc_s * uy)) * inc_inv;
-    const batch along[4] = {along_0, along_1, negated<Arch>(along_0), negated<Arch>(along_1)};
+    const batch along[4] = {along_0, along_1, negated<Arch, Real>(along_0), negated<Arch, Real>(along_1)};
     batch k = zero, most_against = along[0];
     for (int f = 1; f < 4; ++f) {
         const auto better = along[f] < most_against;
         most_against = xsimd::select(better, along[f], most_against);
-        k = xsimd::select(better, batch(static_cast<float>(f)), k);
+        k = xsimd::select(better, batch(static_cast<Real>(f)), k);
     }
-    const incident_edge_lanes<Arch> edge = pose_edge_lanes<Arch>(inc_fields, origin_x, origin_y, k);
-    const incident_edge_lanes<Arch> face = pose_edge_lanes<Arch>(ref_fields, origin_x, origin_y, r);
+    const incident_edge_lanes<Arch, Real> edge = pose_edge_lanes<Arch, Real>(inc_fields, origin_x, origin_y, k);
+    const incident_edge_lanes<Arch, Real> face = pose_edge_lanes<Arch, Real>(ref_fields, origin_x, origin_y, r);
     // The normal and its reciprocal length: what steps 6 to 8 do not read again.
-    const reference_lanes<Arch> ref{flip,     r,        p.sa,     p.sb,     ux,      uy,
-                                    batch(1.0f), face.p1x, face.p1y, face.p2x, face.p2y};
-    return clipped_manifold_lanes<Arch>(ref, ux, uy, edge, origin_x, origin_y, margin);
+    const reference_lanes<Arch, Real> ref{flip,           r,        p.sa,     p.sb,     ux,      uy,
+                                          batch(Real(1)), face.p1x, face.p1y, face.p2x, face.p2y};
+    return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, edge, origin_x, origin_y, margin);
 }
 
 }  // namespace

@@ -1088,9 +1088,8 @@ def contacts(boxes, pairs, *, margin=0.0, backend="auto", threads=1, precision=N
     apart by at most this much get points too. Float64 boxes are computed in
     double (``obbsat/ref/contact.hpp`` states how), never rounded, and give
     float64 columns; ``precision="float32"`` rounds them to float32 instead,
-    ``precision="float64"`` widens float32 data. Double contacts run on the
-    scalar backend only: another explicit backend raises ValueError. The GIL
-    is released.
+    ``precision="float64"`` widens float32 data. Double contacts run on every
+    backend, bit for bit the same. The GIL is released.
 
     Returns a :class:`Contacts`, one row per pair. Raises ``IndexError`` for an
     index out of range (naming the pair), ``ValueError`` for a bad box (naming

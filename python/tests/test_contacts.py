@@ -174,6 +174,24 @@ def test_every_backend_thread_count_store_and_layout_gives_the_same_bits(scene):
     assert dc.distance.tobytes() == obbsat.distances(obbsat.records(corners), pairs).distance.tobytes()
 
 
+def test_float64_contacts_and_distances_are_the_same_bits_on_every_backend(scene):
+    poses, pairs = scene
+    wide = poses.astype(np.float64)
+    wide[:, :2] += 4.0e5  # centers far from the origin, as UTM coordinates are
+    first = obbsat.contacts(wide, pairs, margin=0.05, backend="scalar")
+    assert first.depths.dtype == np.float64
+    d = obbsat.distances(wide, pairs, backend="scalar")
+    corners = obbsat.corners_of_poses(wide)
+    on_corners = obbsat.contacts(corners, pairs, backend="scalar")
+    for backend in obbsat.backends():
+        for threads in (1, 2):
+            same_contacts(obbsat.contacts(wide, pairs, margin=0.05, backend=backend, threads=threads), first)
+            same_contacts(obbsat.contacts(corners, pairs, backend=backend, threads=threads), on_corners)
+            other = obbsat.distances(wide, pairs, backend=backend, threads=threads)
+            assert other.distance.tobytes() == d.distance.tobytes() and other.a.tobytes() == d.a.tobytes()
+            assert other.b.tobytes() == d.b.tobytes()
+
+
 def test_find_contacts_equals_contacts_on_its_pairs(scene):
     poses, _ = scene
     for margin in (0.0, 0.05):
@@ -370,7 +388,7 @@ def test_float64_contacts_are_the_same_on_every_thread_count_and_stream():
     assert cc.depths.dtype == np.float64 and cc.counts.tolist() == [2] and cc.depths.tolist() == [0.5]
 
 
-def test_float64_errors_name_the_row_and_refuse_simd_backends():
+def test_float64_errors_name_the_row():
     poses = np.array([square(0, 0), square(1.5, 0), [0, 0, 1, 1, 0, 0]], dtype=np.float64)
     with pytest.raises(ValueError, match="pose 2"):
         obbsat.contacts(poses, [[0, 1]])
@@ -378,7 +396,3 @@ def test_float64_errors_name_the_row_and_refuse_simd_backends():
         obbsat.contacts(poses[:2], [[0, 1], [0, 5]])
     with pytest.raises(ValueError, match="margin"):
         obbsat.contacts(poses[:2], [[0, 1]], margin=-1.0)
-    for backend in obbsat.backends():
-        if backend != "scalar":
-            with pytest.raises(ValueError, match="scalar backend"):
-                obbsat.distances(poses[:2], [[0, 1]], backend=backend)

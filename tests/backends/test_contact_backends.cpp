@@ -4,7 +4,7 @@
 // a speculative margin; on the pose families of the suites, on plain random
 // pairs, on families of contact's own hard cases and on convex quads that are
 // not rectangles; and the golden digests of the reference's contacts, which
-// every backend reproduces.
+// every backend reproduces, in float and in double.
 #include "test_support/contact_cases.hpp"
 #include "test_support/float_text.hpp"
 
@@ -12,7 +12,9 @@
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/pose_records.hpp>
+#include <obbsat/pose_records64.hpp>
 #include <obbsat/rect_records.hpp>
+#include <obbsat/rect_records64.hpp>
 #include <obbsat/ref/contact.hpp>
 #include <obbsat/ref/distance.hpp>
 #include <obbsat/ref/pose_corners.hpp>
@@ -400,6 +402,100 @@ TEST_P(contact_backends, reproduce_the_golden_digests) {
     }
     EXPECT_EQ(hex_digest(contact_digest(poses)), hex_digest(golden_pose_digest));
     EXPECT_EQ(hex_digest(contact_digest(corners)), hex_digest(golden_corner_digest));
+}
+
+// The double contacts and distances (obbsat/contact.hpp's *64 overloads, the
+// double references) on golden_pairs() widened to double, every float exactly: poses
+// and their float corners, at margin 0 and at margin 2^-4. The double
+// reference uses correctly rounded operations only, so these digests are the
+// same on every machine; changed only with the contact steps or the generator.
+constexpr std::uint64_t golden_pose64_digest = 0x7cd99a02a6dc3b60;
+constexpr std::uint64_t golden_corner64_digest = 0x134141c53c14794a;
+/// The double distances of the same rows, poses then corners.
+constexpr std::uint64_t golden_distance64_digest = 0x70a9a089c095af62;
+
+template <class T>
+std::uint64_t bytes_digest(const std::vector<T>& values);
+
+obbsat::rect_pose64 widened(const rect_pose& p) {
+    return {{p.center.x, p.center.y}, {p.half_extents.x, p.half_extents.y}, {p.rotation.x, p.rotation.y}};
+}
+
+obbsat::rect64 widened(const rect& r) {
+    return {{r.ul.x, r.ul.y}, {r.ur.x, r.ur.y}, {r.lr.x, r.lr.y}, {r.ll.x, r.ll.y}};
+}
+
+template <class Wide, class Narrow>
+std::vector<Wide> widened(const std::vector<Narrow>& rows) {
+    std::vector<Wide> out;
+    for (const Narrow& row : rows) {
+        out.push_back(widened(row));
+    }
+    return out;
+}
+
+/// The golden pairs in double: poses (first) and corners (second), each as A's and B's rows.
+struct golden_rows64 {
+    std::vector<obbsat::rect_pose64> pose_a, pose_b;
+    std::vector<obbsat::rect64> corner_a, corner_b;
+};
+
+golden_rows64 golden_rows64_of() {
+    const pose_pairs pairs = golden_pairs();
+    const pose_pairs corner_pairs = corners_accepted(pairs);
+    return golden_rows64{widened<obbsat::rect_pose64>(pairs.a), widened<obbsat::rect_pose64>(pairs.b),
+                         widened<obbsat::rect64>(corners_of(corner_pairs.a)),
+                         widened<obbsat::rect64>(corners_of(corner_pairs.b))};
+}
+
+TEST(contact_golden, the_double_references_reproduce_the_double_golden_digests) {
+    const golden_rows64 rows = golden_rows64_of();
+    std::vector<obbsat::contact64> poses, corners;
+    for (const double margin : {0.0, 0x1p-4}) {
+        for (std::size_t i = 0; i < rows.pose_a.size(); ++i) {
+            poses.push_back(obbsat::ref::contact_of(rows.pose_a[i], rows.pose_b[i], margin));
+        }
+        for (std::size_t i = 0; i < rows.corner_a.size(); ++i) {
+            corners.push_back(obbsat::ref::contact_of(rows.corner_a[i], rows.corner_b[i], margin));
+        }
+    }
+    EXPECT_EQ(hex_digest(bytes_digest(poses)), hex_digest(golden_pose64_digest)) << "poses";
+    EXPECT_EQ(hex_digest(bytes_digest(corners)), hex_digest(golden_corner64_digest)) << "corners";
+    std::vector<obbsat::closest_points64> distances;
+    for (std::size_t i = 0; i < rows.pose_a.size(); ++i) {
+        distances.push_back(obbsat::ref::distance_of(rows.pose_a[i], rows.pose_b[i]));
+    }
+    for (std::size_t i = 0; i < rows.corner_a.size(); ++i) {
+        distances.push_back(obbsat::ref::distance_of(rows.corner_a[i], rows.corner_b[i]));
+    }
+    EXPECT_EQ(hex_digest(bytes_digest(distances)), hex_digest(golden_distance64_digest)) << "distances";
+}
+
+TEST_P(contact_backends, reproduce_the_double_golden_digests) {
+    const golden_rows64 rows = golden_rows64_of();
+    const obbsat::pose_records64 a(rows.pose_a), b(rows.pose_b);
+    const obbsat::rect_records64 ca(rows.corner_a), cb(rows.corner_b);
+    std::vector<obbsat::contact64> poses, corners;
+    for (const double margin : {0.0, 0x1p-4}) {
+        obbsat::contact_options64 options;
+        options.use = GetParam();
+        options.threads = 2;
+        options.margin = margin;
+        std::vector<obbsat::contact64> p(a.size()), c(ca.size());
+        EXPECT_EQ(obbsat::contact_stream(a, b, p.data(), options), GetParam());
+        EXPECT_EQ(obbsat::contact_stream(ca, cb, c.data(), options), GetParam());
+        poses.insert(poses.end(), p.begin(), p.end());
+        corners.insert(corners.end(), c.begin(), c.end());
+    }
+    EXPECT_EQ(hex_digest(bytes_digest(poses)), hex_digest(golden_pose64_digest)) << "poses";
+    EXPECT_EQ(hex_digest(bytes_digest(corners)), hex_digest(golden_corner64_digest)) << "corners";
+    obbsat::distance_options options;
+    options.use = GetParam();
+    options.threads = 2;
+    std::vector<obbsat::closest_points64> distances(a.size() + ca.size());
+    EXPECT_EQ(obbsat::distance_stream(a, b, distances.data(), options), GetParam());
+    EXPECT_EQ(obbsat::distance_stream(ca, cb, distances.data() + a.size(), options), GetParam());
+    EXPECT_EQ(hex_digest(bytes_digest(distances)), hex_digest(golden_distance64_digest)) << "distances";
 }
 
 // Distances of separated pairs (obbsat/ref/distance.hpp), bit for bit.

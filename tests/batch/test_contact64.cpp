@@ -1,10 +1,12 @@
 // The contact and distance entry points over the double stores
 // (obbsat/contact.hpp, pose_records64 and rect_records64): every result equal,
 // byte for byte, to the double reference (obbsat/ref/contact.hpp,
-// distance.hpp) on every thread count, pair lists and streams alike; on the
-// float contact families widened to double (random pairs, contact's own hard
-// cases, near and far from the origin) and on the double families at UTM-like
-// coordinates; and every error, before anything is written.
+// distance.hpp) on every backend this CPU runs and every thread count, pair
+// lists and streams alike,
+// stores the caches hold and larger ones; on the float contact families
+// widened to double (random pairs, contact's own hard cases, near and far
+// from the origin) and on the double families at UTM-like coordinates; and
+// every error, before anything is written.
 #include "test_support/contact_cases.hpp"
 #include "test_support/pose_cases64.hpp"
 
@@ -108,9 +110,10 @@ std::size_t first_difference(const std::vector<T>& x, const std::vector<T>& y) {
     return x.size();
 }
 
-/// Every double entry point on `rows` (poses or corners) against the reference.
+/// Every double entry point on `rows` (poses or corners) against the
+/// reference, on backend `use`.
 template <class Store, class Row>
-void expect_every_path_matches(const std::vector<Row>& a, const std::vector<Row>& b, double margin,
+void expect_every_path_matches(const std::vector<Row>& a, const std::vector<Row>& b, double margin, backend use,
                                const std::string& what) {
     std::vector<Row> rows;
     const std::vector<pair_index> pairs = stacked(a, b, rows);
@@ -126,38 +129,84 @@ void expect_every_path_matches(const std::vector<Row>& a, const std::vector<Row>
         obbsat::contact_options64 options;
         options.threads = threads;
         options.margin = margin;
-        const std::vector<contact64> got = obbsat::contact_pairs(store, pairs, options);
+        options.use = use;
+        std::vector<contact64> got(a.size());
+        EXPECT_EQ(obbsat::contact_pairs(store, pairs.data(), pairs.size(), got.data(), options), use);
         EXPECT_TRUE(same_bytes(got, expected)) << "pair " << first_difference(got, expected);
         std::vector<contact64> streamed(a.size());
-        EXPECT_EQ(obbsat::contact_stream(store_a, store_b, streamed.data(), options), backend::scalar);
+        EXPECT_EQ(obbsat::contact_stream(store_a, store_b, streamed.data(), options), use);
         EXPECT_TRUE(same_bytes(streamed, expected)) << "pair " << first_difference(streamed, expected);
         obbsat::distance_options distance;
         distance.threads = threads;
-        const std::vector<closest_points64> d = obbsat::distance_pairs(store, pairs, distance);
+        distance.use = use;
+        std::vector<closest_points64> d(a.size());
+        EXPECT_EQ(obbsat::distance_pairs(store, pairs.data(), pairs.size(), d.data(), distance), use);
         EXPECT_TRUE(same_bytes(d, expected_distances)) << "pair " << first_difference(d, expected_distances);
         std::vector<closest_points64> ds(a.size());
-        obbsat::distance_stream(store_a, store_b, ds.data(), distance);
+        EXPECT_EQ(obbsat::distance_stream(store_a, store_b, ds.data(), distance), use);
         EXPECT_TRUE(same_bytes(ds, expected_distances)) << "pair " << first_difference(ds, expected_distances);
     }
 }
 
-TEST(contact64, every_entry_point_is_the_double_reference_on_every_family_and_thread_count) {
-    for (const auto& [name, pairs] : families()) {
-        ASSERT_GT(pairs.a.size(), 500u) << name;
-        for (const double margin : {0.0, 0x1p-4}) {
-            expect_every_path_matches<obbsat::pose_records64>(pairs.a, pairs.b, margin, name + " (poses)");
-            std::vector<rect64> qa, qb;
-            for (std::size_t i = 0; i < pairs.a.size(); ++i) {
-                const rect64 ca = obbsat::test::corners64(pairs.a[i]), cb = obbsat::test::corners64(pairs.b[i]);
-                if (obbsat::ref::corners_accepted(ca) && obbsat::ref::corners_accepted(cb)) {
-                    qa.push_back(ca);
-                    qb.push_back(cb);
-                }
-            }
-            expect_every_path_matches<obbsat::rect_records64>(qa, qb, margin, name + " (corners)");
+/// The corners of the pairs, those whose corners contacts accept.
+void corners_of(const pairs64& pairs, std::vector<rect64>& qa, std::vector<rect64>& qb) {
+    for (std::size_t i = 0; i < pairs.a.size(); ++i) {
+        const rect64 ca = obbsat::test::corners64(pairs.a[i]), cb = obbsat::test::corners64(pairs.b[i]);
+        if (obbsat::ref::corners_accepted(ca) && obbsat::ref::corners_accepted(cb)) {
+            qa.push_back(ca);
+            qb.push_back(cb);
         }
     }
 }
+
+class contact64_backends : public testing::TestWithParam<backend> {
+protected:
+    void SetUp() override {
+        if (!obbsat::cpu_supports(GetParam())) {
+            GTEST_SKIP() << "backend " << obbsat::backend_name(GetParam())
+                         << " is not compiled in or this CPU cannot run it: not tested here";
+        }
+    }
+};
+
+TEST_P(contact64_backends, every_entry_point_is_the_double_reference_on_every_family_and_thread_count) {
+    for (const auto& [name, pairs] : families()) {
+        ASSERT_GT(pairs.a.size(), 500u) << name;
+        for (const double margin : {0.0, 0x1p-4}) {
+            expect_every_path_matches<obbsat::pose_records64>(pairs.a, pairs.b, margin, GetParam(),
+                                                              name + " (poses)");
+            std::vector<rect64> qa, qb;
+            corners_of(pairs, qa, qb);
+            expect_every_path_matches<obbsat::rect_records64>(qa, qb, margin, GetParam(), name + " (corners)");
+        }
+    }
+}
+
+// A pose store larger than L2 (fetch_ahead.hpp's store_bytes_in_l2: 2 MiB,
+// 32768 double poses) takes the kernel that fetches the records ahead; the
+// families' stores take the one that does not.
+TEST_P(contact64_backends, a_store_larger_than_l2_gives_the_reference_too) {
+    const pairs64 pairs = widened(obbsat::test::random_pairs(41, 20000));
+    ASSERT_GT(2 * pairs.a.size() * sizeof(double) * obbsat::pose_records64::record_doubles, std::size_t{2} << 20);
+    expect_every_path_matches<obbsat::pose_records64>(pairs.a, pairs.b, 0x1p-4, GetParam(), "large store");
+}
+
+// Every partial last vector (1 to 15 pairs past whole vectors of every
+// width) and every split of a few pairs over threads.
+TEST_P(contact64_backends, every_length_of_a_batch_gives_the_reference) {
+    const pairs64 all = widened(obbsat::test::hard_pairs(42, 80, 1.0f, 0.0f));
+    for (std::size_t n = 1; n <= all.a.size(); ++n) {
+        const std::vector<rect_pose64> a(all.a.begin(), all.a.begin() + static_cast<std::ptrdiff_t>(n));
+        const std::vector<rect_pose64> b(all.b.begin(), all.b.begin() + static_cast<std::ptrdiff_t>(n));
+        expect_every_path_matches<obbsat::pose_records64>(a, b, 0.0, GetParam(), std::to_string(n) + " pairs");
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(every_backend, contact64_backends,
+                         testing::Values(backend::scalar, backend::sse2, backend::avx2, backend::avx512),
+                         [](const testing::TestParamInfo<backend>& param_info) {
+                             return std::string(obbsat::backend_name(param_info.param));
+                         });
 
 TEST(contact64, the_families_reach_every_kind_of_answer) {
     std::size_t counts[3] = {}, flipped = 0, separated = 0;
@@ -199,14 +248,6 @@ TEST(contact64, errors_name_what_is_wrong_and_write_nothing) {
     expect_refused([&] { obbsat::contact_pairs(poses, pairs.data(), 1, out, bad_margin); }, "margin");
     bad_margin.margin = std::numeric_limits<double>::infinity();
     expect_refused([&] { obbsat::contact_pairs(poses, pairs.data(), 1, out, bad_margin); }, "margin");
-    for (const backend simd : {backend::sse2, backend::avx2, backend::avx512}) {
-        obbsat::contact_options64 options;
-        options.use = simd;
-        expect_refused([&] { obbsat::contact_pairs(poses, pairs.data(), 1, out, options); }, "scalar backend");
-        obbsat::distance_options distance;
-        distance.use = simd;
-        expect_refused([&] { obbsat::distance_pairs(poses, pairs, distance); }, "scalar backend");
-    }
     const obbsat::pose_records64 tiny(std::vector<rect_pose64>{{{0, 0}, {1, 1}, {1, 0}}, {{0, 0}, {1, 1}, {1e-200, 0}}});
     expect_refused([&] { obbsat::contact_pairs(tiny, pairs.data(), 1, out); }, "pose 1: rotation");
     const obbsat::rect_records64 crossed(std::vector<rect64>{{{0, 1}, {1, 1}, {1, 0}, {0, 0}},
@@ -219,7 +260,9 @@ TEST(contact64, errors_name_what_is_wrong_and_write_nothing) {
     std::vector<pair_index> shared(64, pair_index{0, 1});
     EXPECT_THROW(obbsat::contact_pairs(poses, shared.data(), 1, reinterpret_cast<contact64*>(shared.data())),
                  obbsat::invalid_input);
-    EXPECT_EQ(obbsat::contact_pairs(poses, pairs.data(), 1, out), backend::scalar);
+    obbsat::contact_options64 on_scalar;
+    on_scalar.use = backend::scalar;
+    EXPECT_EQ(obbsat::contact_pairs(poses, pairs.data(), 1, out, on_scalar), backend::scalar);
     EXPECT_EQ(out[0].point_count, 2u);
 }
 

@@ -38,20 +38,9 @@ std::unique_ptr<const io::input_file> opened_pairs(const parsed_options& options
     return pairs;
 }
 
-/// The backend a run uses: --backend resolved, or the scalar backend for
-/// doubles, which have no contact lanes (an explicit other one is refused
-/// rather than quietly not used).
-backend backend_for(const parsed_options& options, precision digits) {
-    const backend asked = backend_option(options);
-    if (digits != precision::double_) {
-        return resolve_backend(asked);
-    }
-    if (asked != backend::automatic && asked != backend::scalar) {
-        throw usage_error(std::string("--backend ") + backend_name(asked) +
-                          ": contacts and distances in double (--precision double) run on the scalar backend only");
-    }
-    return backend::scalar;
-}
+/// The backend a run uses: --backend resolved (contacts and distances have
+/// lanes in float and in double alike).
+backend backend_for(const parsed_options& options) { return resolve_backend(backend_option(options)); }
 
 }  // namespace
 
@@ -79,7 +68,7 @@ box_pair_run::box_pair_run(const parsed_options& given, bool pairs_required, con
       input(checked_input(options, pairs_required)),
       digits(precision_option(options)),
       threads(threads_option(options)),
-      use(backend_for(options, digits)),
+      use(backend_for(options)),
       header(options.has("header")),
       rects_file(input.path),
       pairs_file(opened_pairs(options, input, rects_file)),

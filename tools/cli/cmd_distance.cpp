@@ -98,7 +98,7 @@ void print_distance_help(std::FILE* out) {
                  "\n"
                  "--precision double reads every number as a double and computes in double\n"
                  "(the same steps; nothing rounded to float), printing the shortest text that\n"
-                 "reads back as the same double; it runs on the scalar backend only.\n"
+                 "reads back as the same double, on every backend.\n"
                  "\n"
                  "options:\n");
     print_options(out, distance_option_specs());

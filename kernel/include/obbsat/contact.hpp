@@ -136,22 +136,21 @@ backend distance_stream(const rect_records& a, const rect_records& b, closest_po
 // double: a pose's c·c + s·s must be a normal double, a quad strictly convex
 // in double, the margin finite and >= 0.
 //
-// Double contacts and distances have no SIMD lanes yet: they run on the scalar
-// backend (split over options.threads cores; the results never depend on the
-// thread count), and return backend::scalar. backend::automatic and
-// backend::scalar are accepted; any other backend is refused with
-// invalid_input, before anything is written.
+// Double contacts and distances run on every backend, as the float ones (the
+// SIMD lanes compute the double references' operations in their order), split
+// over options.threads cores; the results never depend on the backend or the
+// thread count.
 
 struct contact_options64 {
-    backend use = backend::automatic;  ///< automatic or scalar (see above)
+    backend use = backend::automatic;  ///< the backend, as contact_options.use
     unsigned threads = 1;              ///< cores to split one batch over; 0 means all
     /// Speculative margin (finite, >= 0), as contact_options.margin, in double.
     double margin = 0.0;
 };
 
 /// out[i] = the contact of poses[pairs[i].a] and poses[pairs[i].b] in double
-/// for i < count; returns backend::scalar. Throws invalid_input for a bad
-/// margin, a SIMD backend, a pose whose rotation is too short or too long, the
+/// for i < count; returns the backend that ran. Throws invalid_input for a bad
+/// margin, a backend this CPU cannot run, a pose whose rotation is too short or too long, the
 /// first pair with an index >= poses.size(), or an output that overlaps the pairs.
 backend contact_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count, contact64* out,
                       const contact_options64& options = {});
@@ -180,7 +179,7 @@ backend contact_stream(const rect_records64& a, const rect_records64& b, contact
                        const contact_options64& options = {});
 
 /// out[i] = the distance and closest points of double poses[pairs[i].a] and
-/// poses[pairs[i].b] for i < count, in double; returns backend::scalar. Throws
+/// poses[pairs[i].b] for i < count, in double; returns the backend that ran. Throws
 /// as contact_pairs over double poses (there is no margin).
 backend distance_pairs(const pose_records64& poses, const pair_index* pairs, std::size_t count,
                        closest_points64* out, const distance_options& options = {});

@@ -9,6 +9,7 @@
 #include "scene/query_contacts.hpp"
 #include "scene/query_input.hpp"
 #include "scene/search_common.hpp"
+#include "scene/spare_search.hpp"
 #include "support/executor_scope.hpp"
 #include "support/huge_pages.hpp"
 #include "support/work_shares.hpp"
@@ -248,6 +249,12 @@ public:
     kept_contacts& operator=(const kept_contacts&) = delete;
 
     detail::query_contacts& get() { return *held_; }
+    /// Frees the blocks kept for the next call.
+    static void release() {
+        std::unique_ptr<detail::query_contacts> released;
+        const std::lock_guard<std::mutex> lock(mutex());
+        released = std::move(spare());
+    }
 
 private:
     static std::mutex& mutex() {
@@ -262,6 +269,8 @@ private:
 };
 
 }  // namespace
+
+void detail::release_kept_contacts() { kept_contacts::release(); }
 
 scene_contacts find_contacts(box_view boxes, const collide_options& options, float margin) {
     scene_contacts found;

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <thread>
@@ -39,15 +40,8 @@ obbsat::collide_options options_of(unsigned threads) {
 }
 
 bool same(const std::vector<pair_index>& x, const std::vector<pair_index>& y) {
-    if (x.size() != y.size()) {
-        return false;
-    }
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        if (x[i].a != y[i].a || x[i].b != y[i].b) {
-            return false;
-        }
-    }
-    return true;
+    return std::equal(x.begin(), x.end(), y.begin(), y.end(),
+                      [](const pair_index& p, const pair_index& q) { return p.a == q.a && p.b == q.b; });
 }
 
 /// The answer of a query that finds no memory kept.

@@ -1,6 +1,8 @@
 // The engine of the scene queries (obbsat/find_pairs.hpp): bounds, order,
 // sweep, the method's kernels, the answer in the caller's indices. It keeps
-// every buffer and the last order between calls. Internal to the library.
+// every buffer and the last order between calls; find_pairs and
+// find_pairs_each, which make one per call, borrow the buffers of the last
+// one (spare_search.hpp). Internal to the library.
 // Each step has a file of its own, named below; nothing of it is compiled
 // with ISA flags (the backends' kernels are reached through kernels_for).
 //

@@ -60,37 +60,49 @@ std::size_t strip_sweep_of(const strip_view& strip, sweep_cursor& cursor, pair_i
     using floats = xsimd::batch<float, Arch>;
     constexpr std::size_t width = floats::size;
     static_assert(width <= strip_padding, "a vector never reads past the sentinels");
+    // The arrays held apart from `strip`: a candidate written to `out` might
+    // otherwise, for all the compiler knows, change them, and they would be
+    // read again from the view after every store.
+    const float* const q_lo = strip.q_lo;
+    const float* const q_hi = strip.q_hi;
+    const std::int32_t* const ids = strip.id;
+    const float* const starts = strip.starts;
+    const float* const store = strip.store;
+    const float* const lo_x = strip.lo_x;
+    const float* const lo_y = strip.lo_y;
+    const float* const hi_x = strip.hi_x;
+    const float* const hi_y = strip.hi_y;
     const std::size_t m = strip.size;
     std::size_t count = 0;
     std::size_t e = cursor.e;
     std::size_t f = cursor.f;
     for (; e + 1 < m; ++e, f = e + 1) {
-        const float e_q_hi = strip.q_hi[e];
-        const floats e_lo_x(strip.lo_x[e]);
-        const floats e_hi_x(strip.hi_x[e]);
-        const floats e_lo_y(strip.lo_y[e]);
-        const floats e_hi_y(strip.hi_y[e]);
+        const float e_q_hi = q_hi[e];
+        const floats e_lo_x(lo_x[e]);
+        const floats e_hi_x(hi_x[e]);
+        const floats e_lo_y(lo_y[e]);
+        const floats e_hi_y(hi_y[e]);
         // Not two visitors: a visitor e needs an f that starts here.
-        const floats starts_needed(strip.starts[e] > 0.0f ? 0.0f : 1.0f);
-        const floats e_store(strip.store[e]);
-        const std::int32_t e_id = strip.id[e];
+        const floats starts_needed(starts[e] > 0.0f ? 0.0f : 1.0f);
+        const floats e_store(store[e]);
+        const std::int32_t e_id = ids[e];
         for (;;) {
             if (capacity - count < width) {
                 cursor = sweep_cursor{e, f};
                 return count;
             }
-            auto take = (floats::load_unaligned(strip.lo_x + f) <= e_hi_x) &
-                        (floats::load_unaligned(strip.hi_x + f) >= e_lo_x) &
-                        (floats::load_unaligned(strip.lo_y + f) <= e_hi_y) &
-                        (floats::load_unaligned(strip.hi_y + f) >= e_lo_y) &
-                        (floats::load_unaligned(strip.starts + f) >= starts_needed);
+            auto take = (floats::load_unaligned(lo_x + f) <= e_hi_x) &
+                        (floats::load_unaligned(hi_x + f) >= e_lo_x) &
+                        (floats::load_unaligned(lo_y + f) <= e_hi_y) &
+                        (floats::load_unaligned(hi_y + f) >= e_lo_y) &
+                        (floats::load_unaligned(starts + f) >= starts_needed);
             if constexpr (Cross) {
-                take = take & (floats::load_unaligned(strip.store + f) != e_store);
+                take = take & (floats::load_unaligned(store + f) != e_store);
             }
-            count += emit_candidates<Arch>(lane_bits(take), e_id, strip.id + f, out + count);
+            count += emit_candidates<Arch>(lane_bits(take), e_id, ids + f, out + count);
             f += width;
             // q_lo ascends: once the last lane is out of reach, so is the rest.
-            if (!(strip.q_lo[f - 1] <= e_q_hi)) {
+            if (!(q_lo[f - 1] <= e_q_hi)) {
                 break;
             }
         }

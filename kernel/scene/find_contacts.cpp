@@ -10,6 +10,7 @@
 #include "scene/query_contacts.hpp"
 #include "scene/query_input.hpp"
 #include "scene/search_common.hpp"
+#include "scene/spare_search.hpp"
 #include "support/executor_scope.hpp"
 
 #include <obbsat/contact.hpp>
@@ -181,6 +182,12 @@ public:
     kept_near_contacts& operator=(const kept_near_contacts&) = delete;
 
     detail::near_contacts& get() { return *held_; }
+    /// Frees the memory kept for the next call.
+    static void release() {
+        std::unique_ptr<detail::near_contacts> released;
+        const std::lock_guard<std::mutex> lock(mutex());
+        released = std::move(spare());
+    }
 
 private:
     static std::mutex& mutex() {
@@ -198,7 +205,8 @@ private:
 /// sorted straight into found.pairs, then their contacts into found.contacts.
 void touching_contacts(const box_view& boxes, const collide_options& options, detail::contact_fn kernel,
                        scene_contacts& found) {
-    detail::pair_search search(options);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
     search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), found.pairs);
     detail::contacts_of_answer(rows_of(kernel, boxes, 0.0f), found.pairs, found.contacts, options.threads);
 }
@@ -213,7 +221,8 @@ void near_contacts_of(const box_view& boxes, const collide_options& options, det
     detail::near_contacts& near = kept.get();
     // The method's pairs first: this query also checks every box.
     {
-        detail::pair_search search(options);
+        detail::spare_search spare(options);
+        detail::pair_search& search = spare.get();
         search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), near.reported);
     }
     near.stand_ins.resize(boxes.size());
@@ -223,7 +232,8 @@ void near_contacts_of(const box_view& boxes, const collide_options& options, det
     collide_options near_options = options;
     near_options.test = method::exact;
     {
-        detail::pair_search search(near_options);
+        detail::spare_search spare(near_options);
+        detail::pair_search& search = spare.get();
         search.collect_into(
             search.bound_doubles(detail::input_of(box_view(near.stand_ins).with_filters(boxes.filters()), nullptr)),
             near.candidates);
@@ -232,6 +242,8 @@ void near_contacts_of(const box_view& boxes, const collide_options& options, det
 }
 
 }  // namespace
+
+void detail::release_kept_contacts() { kept_near_contacts::release(); }
 
 scene_contacts find_contacts(box_view boxes, const collide_options& options, float margin) {
     scene_contacts found;

@@ -1,5 +1,6 @@
 #include "scene/pair_events.hpp"
 #include "scene/pair_search.hpp"
+#include "scene/spare_search.hpp"
 #include "support/executor_scope.hpp"
 
 #include <obbsat/error.hpp>
@@ -133,26 +134,35 @@ using detail::input_of;
 
 std::vector<pair_index> find_pairs(box_view boxes, const collide_options& options) {
     const detail::executor_scope scope(options.executor);
-    detail::pair_search search(options);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
     return search.collect_once(search.bound_doubles(input_of(boxes, nullptr)));
 }
 
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options) {
     const detail::executor_scope scope(options.executor);
-    detail::pair_search search(options);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
     return search.collect_once(search.bound_doubles(input_of(a, &b)));
 }
 
 void find_pairs_each(box_view boxes, const collide_options& options, const pair_chunk_sink& sink) {
     const detail::executor_scope scope(options.executor);
-    detail::pair_search search(options);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
     search.run(search.bound_doubles(input_of(boxes, nullptr)), sink);
 }
 
 void find_pairs_each(box_view a, box_view b, const collide_options& options, const pair_chunk_sink& sink) {
     const detail::executor_scope scope(options.executor);
-    detail::pair_search search(options);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
     search.run(search.bound_doubles(input_of(a, &b)), sink);
+}
+
+void release_scratch() {
+    detail::release_spare_search();
+    detail::release_kept_contacts();
 }
 
 pair_finder::pair_finder(const collide_options& options)

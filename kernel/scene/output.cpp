@@ -53,19 +53,11 @@ std::vector<pair_index> pair_search::collect_once(const query_input& input) {
     one_shot_ = true;
     run(input, pair_chunk_sink{});
     // The scene's working memory goes before the sorted copy of the pairs is
-    // made: the peak is the larger of the two, not their sum.
-    decltype(records_)().swap(records_);
-    decltype(records64_)().swap(records64_);
-    decltype(double_bounds_)().swap(double_bounds_);
-    for (auto* v : {&in_lo_x_, &in_lo_y_, &in_hi_x_, &in_hi_y_}) {
-        scratch_vector<float>().swap(*v);
+    // made, so that the peak is the larger of the two, not their sum; unless
+    // it is kept for a next query (keep_working_memory_up_to).
+    if (working_bytes() > keep_memory_up_to_) {
+        free_working_memory();
     }
-    for (auto* v : {&keys_, &order_, &key_by_id_, &q_lo_, &q_hi_, &strip_hi_, &visit_keys_, &visit_ids_, &far_keys_,
-                    &far_ids_, &near_keys_, &near_ids_}) {
-        scratch_vector<std::uint32_t>().swap(*v);
-    }
-    radix_buffer().swap(packed_);
-    radix_buffer().swap(spare_);
     sort_found();
     return std::move(pairs_);
 }

@@ -55,6 +55,14 @@ public:
         current_ = 0;
         size_ = 0;
     }
+    /// Bytes the blocks hold.
+    std::size_t bytes() const {
+        std::size_t sum = 0;
+        for (const auto& block : blocks_) {
+            sum += block.capacity() * sizeof(pair_index);
+        }
+        return sum;
+    }
     /// The pairs in the order they were added, block by block.
     pair_source<pair_index> spans() const {
         pair_source<pair_index> out;

@@ -11,10 +11,74 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace obbsat::detail {
 
 pair_search::pair_search(const collide_options& options) : options_(options) {}
+
+template <class F>
+void pair_search::each_buffer(pair_search& other, const F& f) {
+    f(key_by_id_, other.key_by_id_);
+    f(keys_, other.keys_);
+    f(order_, other.order_);
+    f(changed_strip_, other.changed_strip_);
+    for (auto [mine, others] : {std::pair{&stay_keys_, &other.stay_keys_}, {&stay_ids_, &other.stay_ids_},
+                                {&moved_keys_, &other.moved_keys_}, {&moved_ids_, &other.moved_ids_},
+                                {&q_lo_, &other.q_lo_}, {&q_hi_, &other.q_hi_}, {&strip_hi_, &other.strip_hi_},
+                                {&visit_keys_, &other.visit_keys_}, {&visit_ids_, &other.visit_ids_},
+                                {&far_keys_, &other.far_keys_}, {&far_ids_, &other.far_ids_},
+                                {&near_keys_, &other.near_keys_}, {&near_ids_, &other.near_ids_}}) {
+        f(*mine, *others);
+    }
+    f(packed_, other.packed_);
+    f(spare_, other.spare_);
+    f(records_, other.records_);
+    f(records64_, other.records64_);
+    f(double_bounds_, other.double_bounds_);
+    for (auto [mine, others] : {std::pair{&in_lo_x_, &other.in_lo_x_}, {&in_lo_y_, &other.in_lo_y_},
+                                {&in_hi_x_, &other.in_hi_x_}, {&in_hi_y_, &other.in_hi_y_}}) {
+        f(*mine, *others);
+    }
+    f(side_, other.side_);
+    f(filters_, other.filters_);
+    f(own_begin_, other.own_begin_);
+    f(visit_begin_, other.visit_begin_);
+}
+
+void pair_search::swap_working_memory(pair_search& other) {
+    each_buffer(other, [](auto& mine, auto& others) { mine.swap(others); });
+    // Each query sets every field of a unit it sweeps (sweep) and clears
+    // what the unit found; its blocks of pairs and strip arrays stay.
+    parts_.swap(other.parts_);
+    sort_scratch_.swap(other.sort_scratch_);
+}
+
+std::size_t pair_search::working_bytes() {
+    std::size_t bytes = 0;
+    const auto add = [&bytes](const auto& v) { bytes += v.capacity() * sizeof(v[0]); };
+    each_buffer(*this, [&add](const auto& mine, const auto&) { add(mine); });
+    for (const part& p : parts_) {
+        for (const auto* v : {&p.q_lo, &p.q_hi, &p.starts, &p.store, &p.lo_x, &p.lo_y, &p.hi_x, &p.hi_y}) {
+            add(*v);
+        }
+        add(p.id);
+        add(p.candidates);
+        add(p.verdicts);
+        bytes += p.found.bytes();
+    }
+    for (const pair_sort_scratch<pair_index>& s : sort_scratch_) {
+        add(s.spare);
+        add(s.counts);
+    }
+    return bytes;
+}
+
+void pair_search::free_working_memory() {
+    // The units' pairs stay: they are the answer still to be sorted.
+    pair_search empty(options_);
+    each_buffer(empty, [](auto& mine, auto& others) { mine.swap(others); });
+}
 
 void pair_search::set_query(const query_input& input) {
     if (!input.doubles) {

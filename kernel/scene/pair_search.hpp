@@ -1,6 +1,8 @@
 // The engine of the scene queries (obbsat/find_pairs.hpp): bounds, order,
 // sweep, the method's kernels, the answer in the caller's indices. It keeps
-// every buffer and the last order between calls. Internal to the library.
+// every buffer and the last order between calls; find_pairs and
+// find_pairs_each, which make one per call, borrow the buffers of the last
+// one (spare_search.hpp). Internal to the library.
 // Each step has a file of its own, named below; nothing of it is compiled
 // with ISA flags (the backends' kernels are reached through kernels_for).
 //
@@ -121,11 +123,27 @@ public:
     const executor* caller_executor() const { return options_.executor; }
     const collide_options& options() const { return options_; }
 
+    /// Swaps this query's working memory (its per-rectangle and per-unit
+    /// buffers, not what they mean: every one is sized and written anew by
+    /// each query) with `other`'s. A query that keeps nothing between calls
+    /// borrows the memory of an earlier one this way (spare_search.hpp).
+    void swap_working_memory(pair_search& other);
+    /// Bytes of working memory held (the buffers swap_working_memory swaps).
+    std::size_t working_bytes();
+    /// collect_once frees its working memory before the sorted copy of the
+    /// pairs is made unless it holds at most `bytes` (kept for a next query).
+    void keep_working_memory_up_to(std::size_t bytes) { keep_memory_up_to_ = bytes; }
+
 private:
     /// collect() once the rows' ids (if any) are matched and taken.
     const std::vector<pair_index>& collect_matched(const query_input& input);
     /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
     friend struct pair_search_test_access;
+    /// Calls f(mine, others) on each buffer of working memory, this query's and `other`'s.
+    template <class F>
+    void each_buffer(pair_search& other, const F& f);
+    /// Frees the per-rectangle working memory, not the units' pairs (collect_once).
+    void free_working_memory();
 
     struct record {
         float v[8];
@@ -322,6 +340,7 @@ private:
     /// collect_once: nothing of this query serves a next one, so a double
     /// query's float rows (double_bounds_) go once the order is made.
     bool one_shot_ = false;
+    std::size_t keep_memory_up_to_ = 0;  ///< keep_working_memory_up_to
     scratch_vector<float> in_lo_x_, in_lo_y_, in_hi_x_, in_hi_y_;
     scratch_vector<std::uint32_t> q_lo_, q_hi_, strip_hi_;
     scratch_vector<std::uint8_t> side_;  ///< 1 for a rectangle of the second store

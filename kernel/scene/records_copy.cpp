@@ -13,15 +13,27 @@
 namespace obbsat::detail {
 
 void pair_search::store_sweep_bounds(const bounds_run& b, std::size_t run_begin, std::size_t run_end) {
-    for (std::size_t k = run_begin; k < run_end; ++k) {
-        const std::size_t r = k - run_begin;
-        in_lo_x_[k] = b.lo_x[r];
-        in_lo_y_[k] = b.lo_y[r];
-        in_hi_x_[k] = b.hi_x[r];
-        in_hi_y_[k] = b.hi_y[r];
-        q_lo_[k] = grid_.q_of(b.lo_x[r]);
-        q_hi_[k] = grid_.q_of(b.hi_x[r]);
-        strip_hi_[k] = grid_.strip_of(b.hi_y[r]);
+    // The grid's maps (strip_grid::q_of, strip_of) written out on locals and
+    // pointers that alias nothing, so that the loop runs with no branch and
+    // reads nothing again after each store.
+    const double x_low = grid_.x_low, x_scale = grid_.x_scale, y_low = grid_.y_low, y_scale = grid_.y_scale;
+    const std::uint32_t q_top = grid_.q_max, strip_top = grid_.strips - 1;
+    const std::size_t count = run_end - run_begin;
+    float* __restrict const lo_x = in_lo_x_.data() + run_begin;
+    float* __restrict const lo_y = in_lo_y_.data() + run_begin;
+    float* __restrict const hi_x = in_hi_x_.data() + run_begin;
+    float* __restrict const hi_y = in_hi_y_.data() + run_begin;
+    std::uint32_t* __restrict const q_lo = q_lo_.data() + run_begin;
+    std::uint32_t* __restrict const q_hi = q_hi_.data() + run_begin;
+    std::uint32_t* __restrict const strip_hi = strip_hi_.data() + run_begin;
+    for (std::size_t r = 0; r < count; ++r) {
+        lo_x[r] = b.lo_x[r];
+        lo_y[r] = b.lo_y[r];
+        hi_x[r] = b.hi_x[r];
+        hi_y[r] = b.hi_y[r];
+        q_lo[r] = strip_grid::clamped_floor((static_cast<double>(b.lo_x[r]) - x_low) * x_scale, q_top);
+        q_hi[r] = strip_grid::clamped_floor((static_cast<double>(b.hi_x[r]) - x_low) * x_scale, q_top);
+        strip_hi[r] = strip_grid::clamped_floor((static_cast<double>(b.hi_y[r]) - y_low) * y_scale, strip_top);
     }
 }
 

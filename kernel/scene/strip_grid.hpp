@@ -24,21 +24,20 @@ struct strip_grid {
     std::uint32_t q_max = (1u << 24) - 1;
 
     /// x quantized: floor((x - x_low) * x_scale), clamped to [0, q_max].
-    std::uint32_t q_of(float x) const {
-        const double t = (static_cast<double>(x) - x_low) * x_scale;
-        if (!(t > 0)) {
-            return 0;
-        }
-        return t < static_cast<double>(q_max) ? static_cast<std::uint32_t>(t) : q_max;
-    }
+    std::uint32_t q_of(float x) const { return clamped_floor((static_cast<double>(x) - x_low) * x_scale, q_max); }
 
     /// The strip holding y: floor((y - y_low) * y_scale), clamped to [0, strips - 1].
     std::uint32_t strip_of(float y) const {
-        const double t = (static_cast<double>(y) - y_low) * y_scale;
-        if (!(t > 0)) {
-            return 0;
-        }
-        return t < static_cast<double>(strips - 1) ? static_cast<std::uint32_t>(t) : strips - 1;
+        return clamped_floor((static_cast<double>(y) - y_low) * y_scale, strips - 1);
+    }
+
+    /// floor(t) clamped to [0, top], 0 for a NaN; top < 2^31. Written as
+    /// selects (max then min, which a NaN leaves at 0) and a conversion to
+    /// int32, so that a loop over many boxes (store_sweep_bounds) takes no branch.
+    static std::uint32_t clamped_floor(double t, std::uint32_t top) {
+        const double above = 0.0 < t ? t : 0.0;
+        const double inside = static_cast<double>(top) < above ? static_cast<double>(top) : above;
+        return static_cast<std::uint32_t>(static_cast<std::int32_t>(inside));
     }
 
     /// The sort key of a rectangle: its lowest strip, then its quantized lo_x.

@@ -46,12 +46,23 @@
 // of the records in the query's own order, its bounds, order and strips;
 // about 200 for double rows: their outward bounds as a 32-byte float row in
 // the caller's order and a 64-byte double record in the query's order)
-// and 8 bytes per reported pair; find_pairs releases the per-rectangle
-// memory before it sorts the pairs, which takes 8 more bytes per pair, so
-// its peak is the larger of the two phases. find_pairs_each holds no pairs
-// beyond 4096 per thread, however crowded the scene (a strip's candidates
-// are tested in blocks of 2048 and the pairs found handed on as they come).
-// A pair_finder keeps all of it for the next call.
+// and 8 bytes per reported pair; sorting the pairs takes 8 more bytes per
+// pair. find_pairs_each holds no pairs beyond 4096 per thread, however
+// crowded the scene (a strip's candidates are tested in blocks of 2048 and
+// the pairs found handed on as they come). A pair_finder keeps all of it for
+// the next call.
+//
+// Memory kept between calls: find_pairs and find_pairs_each keep their
+// working memory (all of the above but the returned pairs) for the next
+// call, which then skips the page faults of fresh memory (about a tenth of
+// a cold query of a million boxes). Only one query's memory is kept, that of
+// the last one to end while none was kept; a query that finds it held by
+// another running at the same time works in memory of its own. A query
+// whose working memory passes 1 GiB (some ten million boxes) keeps none,
+// and frees its per-rectangle memory before it sorts the pairs, so that its
+// peak is the larger of the two phases. find_contacts keeps the same working
+// memory, and with a margin its candidates and stand-ins too.
+// release_scratch() frees all of it.
 #pragma once
 
 #include <obbsat/collide.hpp>
@@ -195,6 +206,14 @@ std::vector<pair_index> find_pairs(box_view boxes, const collide_options& option
 /// Every pair (i, j), i in `a` and j in `b`, that collides, sorted by i then
 /// j; `a` and `b` hold the same kind (invalid_input otherwise).
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options);
+
+/// Frees the memory find_pairs, find_pairs_each and find_contacts keep
+/// between calls (see "Memory kept between calls" above): after it returns,
+/// the library holds none of it until the next such call. Safe to call from
+/// any thread at any time; a query running meanwhile keeps its own memory
+/// until it ends (and may then leave it for the next call). A pair_finder's
+/// memory is its own: destroy it to free it.
+void release_scratch();
 
 /// Receives the colliding pairs in chunks of at most 4096 pairs, never from
 /// two threads at once, in no particular order (each pair once, i < j for

@@ -1,0 +1,138 @@
+// The one-shot scene queries' working memory kept between calls
+// (kernel/scene/spare_search.hpp, obbsat::release_scratch): it is kept after
+// a query and freed by release_scratch, and a query in borrowed memory
+// answers as one in fresh memory, whatever ran before it, whatever runs
+// beside it.
+#include "scene/spare_search.hpp"
+
+#include <obbsat/collide.hpp>
+#include <obbsat/find_contacts.hpp>
+#include <obbsat/find_pairs.hpp>
+#include <obbsat/pose_scene.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using obbsat::pair_index;
+using obbsat::rect_pose;
+
+std::vector<rect_pose> scene_of(std::size_t boxes, obbsat::scene_sizes sizes, std::uint64_t seed) {
+    obbsat::pose_scene_spec spec;
+    spec.boxes = boxes;
+    spec.sizes = sizes;
+    spec.seed = seed;
+    spec.pairs_per_box = 3.0;
+    return obbsat::make_pose_scene(spec);
+}
+
+obbsat::collide_options options_of(unsigned threads) {
+    obbsat::collide_options options;
+    options.test = obbsat::method::exact;
+    options.threads = threads;
+    return options;
+}
+
+bool same(const std::vector<pair_index>& x, const std::vector<pair_index>& y) {
+    return std::equal(x.begin(), x.end(), y.begin(), y.end(),
+                      [](const pair_index& p, const pair_index& q) { return p.a == q.a && p.b == q.b; });
+}
+
+/// The answer of a query that finds no memory kept.
+std::vector<pair_index> fresh_answer(obbsat::box_view boxes, const obbsat::collide_options& options) {
+    obbsat::release_scratch();
+    return obbsat::find_pairs(boxes, options);
+}
+
+TEST(SpareSearch, KeptAfterAQueryAndFreedByReleaseScratch) {
+    const std::vector<rect_pose> boxes = scene_of(20000, obbsat::scene_sizes::uniform, 3);
+    obbsat::release_scratch();
+    EXPECT_EQ(obbsat::detail::spare_search_bytes(), 0u);
+    const std::vector<pair_index> pairs = obbsat::find_pairs(boxes, options_of(1));
+    ASSERT_FALSE(pairs.empty());
+    // At least the records in the query's order (32 bytes a box) and its order.
+    EXPECT_GE(obbsat::detail::spare_search_bytes(), 36u * boxes.size());
+    obbsat::release_scratch();
+    EXPECT_EQ(obbsat::detail::spare_search_bytes(), 0u);
+}
+
+TEST(SpareSearch, StreamingQueriesKeepTheirMemoryToo) {
+    const std::vector<rect_pose> boxes = scene_of(20000, obbsat::scene_sizes::mixed, 4);
+    obbsat::release_scratch();
+    std::size_t streamed = 0;
+    obbsat::find_pairs_each(boxes, options_of(2), [&](const pair_index*, std::size_t count) { streamed += count; });
+    EXPECT_GT(streamed, 0u);
+    EXPECT_GE(obbsat::detail::spare_search_bytes(), 36u * boxes.size());
+    obbsat::release_scratch();
+}
+
+TEST(SpareSearch, BorrowedMemoryAnswersAsFreshMemory) {
+    // Scenes of other sizes and kinds one after the other, each query
+    // borrowing the last one's memory: larger buffers, a last order and
+    // strips of another scene in them, the pairs of another query.
+    const std::vector<rect_pose> large = scene_of(30000, obbsat::scene_sizes::mixed, 5);
+    const std::vector<rect_pose> small = scene_of(3000, obbsat::scene_sizes::uniform, 6);
+    const std::vector<rect_pose> other = scene_of(30000, obbsat::scene_sizes::uniform, 7);
+    const std::vector<rect_pose> b_side(other.begin(), other.begin() + 5000);
+    for (const unsigned threads : {1u, 2u}) {
+        const obbsat::collide_options options = options_of(threads);
+        const std::vector<pair_index> want_large = fresh_answer(large, options);
+        const std::vector<pair_index> want_small = fresh_answer(small, options);
+        const std::vector<pair_index> want_other = fresh_answer(other, options);
+        obbsat::release_scratch();
+        const std::vector<pair_index> want_cross = obbsat::find_pairs(small, b_side, options);
+        for (int round = 0; round < 2; ++round) {
+            EXPECT_TRUE(same(obbsat::find_pairs(large, options), want_large)) << "threads " << threads;
+            EXPECT_TRUE(same(obbsat::find_pairs(small, options), want_small)) << "threads " << threads;
+            EXPECT_TRUE(same(obbsat::find_pairs(small, b_side, options), want_cross)) << "threads " << threads;
+            EXPECT_TRUE(same(obbsat::find_pairs(other, options), want_other)) << "threads " << threads;
+            EXPECT_GT(obbsat::detail::spare_search_bytes(), 0u);
+        }
+    }
+    obbsat::release_scratch();
+}
+
+TEST(SpareSearch, QueriesAtOnceEachAnswerTheirOwn) {
+    const std::vector<rect_pose> first = scene_of(20000, obbsat::scene_sizes::uniform, 8);
+    const std::vector<rect_pose> second = scene_of(12000, obbsat::scene_sizes::mixed, 9);
+    const obbsat::collide_options options = options_of(1);
+    const std::vector<pair_index> want_first = fresh_answer(first, options);
+    const std::vector<pair_index> want_second = fresh_answer(second, options);
+    constexpr int rounds = 8;
+    int wrong_first = 0;
+    int wrong_second = 0;
+    std::thread other([&] {
+        for (int i = 0; i < rounds; ++i) {
+            wrong_second += same(obbsat::find_pairs(second, options), want_second) ? 0 : 1;
+        }
+    });
+    for (int i = 0; i < rounds; ++i) {
+        wrong_first += same(obbsat::find_pairs(first, options), want_first) ? 0 : 1;
+        if (i == rounds / 2) {
+            obbsat::release_scratch();  // while the other thread may be querying
+        }
+    }
+    other.join();
+    EXPECT_EQ(wrong_first, 0);
+    EXPECT_EQ(wrong_second, 0);
+    obbsat::release_scratch();
+    EXPECT_EQ(obbsat::detail::spare_search_bytes(), 0u);
+}
+
+TEST(SpareSearch, ReleaseScratchLeavesFindContactsAnswering) {
+    const std::vector<rect_pose> boxes = scene_of(5000, obbsat::scene_sizes::uniform, 10);
+    const obbsat::collide_options options = options_of(1);
+    const obbsat::scene_contacts before = obbsat::find_contacts(boxes, options, 0.0f);
+    obbsat::release_scratch();
+    const obbsat::scene_contacts after = obbsat::find_contacts(boxes, options, 0.0f);
+    EXPECT_TRUE(same(before.pairs, after.pairs));
+    EXPECT_FALSE(after.pairs.empty());
+}
+
+}  // namespace

@@ -36,7 +36,7 @@
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
-#include "scene/kept_pair_order.hpp"
+#include "sort/few_pairs_sort.hpp"
 #include "scene/out_of_order.hpp"
 #include "scene/search_common.hpp"
 #include "sort/pair_sort.hpp"
@@ -486,9 +486,9 @@ void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
         }
     }
     // Sorted by a sort that costs passes over these few pairs, not over the
-    // rows (kept_pair_order.hpp): the answer's sort counted a table the
+    // rows (sort/few_pairs_sort.hpp): the answer's sort counted a table the
     // size of the rows for a few thousand pairs.
-    sort_kept_pairs(kept_.moved_pairs, kept_.moved_order);
+    sort_few_pairs(kept_.moved_pairs, kept_.moved_order);
     kept_.remap_pending = true;
     kept_.remap_any_moved = any_moved;
     kept_.remap_last_a = last_a_count;

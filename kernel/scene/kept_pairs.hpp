@@ -4,7 +4,7 @@
 // are in kept_pairs.cpp and kept_answer.cpp. Internal to the library.
 #pragma once
 
-#include "scene/kept_pair_order.hpp"
+#include "sort/few_pairs_sort.hpp"
 #include "sort/pair_sort.hpp"
 #include "support/scratch_vector.hpp"
 
@@ -135,7 +135,7 @@ struct kept_pairs {
     scratch_vector<signed_bounds> widened;
     std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
-    kept_pair_order_scratch moved_order;       ///< working memory of moved_pairs' sort
+    few_pairs_sort_scratch moved_order;        ///< working memory of moved_pairs' sort
     /// Set while by_caller is in the last call's rows, to be carried to this
     /// call's as the answer is read (pair_search::answer_by_id).
     bool remap_pending = false;

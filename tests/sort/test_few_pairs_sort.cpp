@@ -1,7 +1,7 @@
-// sort_kept_pairs against std::sort of the same pairs: keys that need one,
+// sort_few_pairs against std::sort of the same pairs: keys that need one,
 // two, three and four passes, an empty and a one-pair list, equal pairs
 // with different tags, and scratch reused from a larger sort.
-#include "scene/kept_pair_order.hpp"
+#include "sort/few_pairs_sort.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 
 namespace {
 
-using obbsat::detail::kept_pair_order_scratch;
-using obbsat::detail::sort_kept_pairs;
+using obbsat::detail::few_pairs_sort_scratch;
+using obbsat::detail::sort_few_pairs;
 using obbsat::detail::tagged_pair;
 
 bool by_pair_then_tag(const tagged_pair& x, const tagged_pair& y) {
@@ -22,10 +22,10 @@ bool by_pair_then_tag(const tagged_pair& x, const tagged_pair& y) {
 
 /// Sorts `pairs` both ways and compares: the same pairs in (a, b) order, and
 /// the same set of tags under each (a, b) (equal pairs keep no particular order).
-void expect_sorted_like_std(std::vector<tagged_pair> pairs, kept_pair_order_scratch& scratch) {
+void expect_sorted_like_std(std::vector<tagged_pair> pairs, few_pairs_sort_scratch& scratch) {
     std::vector<tagged_pair> want = pairs;
     std::sort(want.begin(), want.end(), by_pair_then_tag);
-    sort_kept_pairs(pairs, scratch);
+    sort_few_pairs(pairs, scratch);
     ASSERT_EQ(pairs.size(), want.size());
     for (std::size_t i = 0; i < want.size(); ++i) {
         ASSERT_TRUE(pairs[i].a == want[i].a && pairs[i].b == want[i].b) << "pair " << i;
@@ -59,8 +59,8 @@ std::vector<tagged_pair> random_pairs(std::size_t count, std::uint32_t a_below, 
 
 }  // namespace
 
-TEST(kept_pair_order, sorts_like_std_sort_for_every_count_of_passes) {
-    kept_pair_order_scratch scratch;
+TEST(few_pairs_sort, sorts_like_std_sort_for_every_count_of_passes) {
+    few_pairs_sort_scratch scratch;
     // Keys of 6, 21, 24, 34 and 64 bits: one, two, three, four and six passes.
     expect_sorted_like_std(random_pairs(1000, 8, 8, 1), scratch);
     expect_sorted_like_std(random_pairs(5000, 2048, 1024, 2), scratch);
@@ -71,8 +71,8 @@ TEST(kept_pair_order, sorts_like_std_sort_for_every_count_of_passes) {
     expect_sorted_like_std(random_pairs(2000, 64, 64, 5), scratch);
 }
 
-TEST(kept_pair_order, keeps_equal_pairs_and_handles_tiny_lists) {
-    kept_pair_order_scratch scratch;
+TEST(few_pairs_sort, keeps_equal_pairs_and_handles_tiny_lists) {
+    few_pairs_sort_scratch scratch;
     expect_sorted_like_std({}, scratch);
     expect_sorted_like_std({tagged_pair{5, 9, 0}}, scratch);
     expect_sorted_like_std({tagged_pair{5, 9, 0}, tagged_pair{5, 2, 1}}, scratch);

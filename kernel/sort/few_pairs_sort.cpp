@@ -1,5 +1,5 @@
-// The sort of a call's few added or moved kept pairs (kept_pair_order.hpp).
-#include "scene/kept_pair_order.hpp"
+// A sort of a few pairs by (a, b) (sort/few_pairs_sort.hpp).
+#include "sort/few_pairs_sort.hpp"
 
 #include "support/bit_width.hpp"
 
@@ -14,7 +14,7 @@ constexpr unsigned digit_bits = 11;
 
 }  // namespace
 
-void sort_kept_pairs(std::vector<tagged_pair>& pairs, kept_pair_order_scratch& scratch) {
+void sort_few_pairs(std::vector<tagged_pair>& pairs, few_pairs_sort_scratch& scratch) {
     const std::size_t n = pairs.size();
     if (n < 2) {
         return;

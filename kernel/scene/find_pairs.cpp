@@ -1,5 +1,6 @@
 #include "scene/pair_events.hpp"
 #include "scene/pair_search.hpp"
+#include "scene/query_contacts.hpp"
 #include "scene/spare_search.hpp"
 #include "support/executor_scope.hpp"
 

@@ -70,4 +70,8 @@ private:
     scratch_records<contact> contacts_;  ///< the candidates' contacts
 };
 
+/// Frees the near_contacts find_contacts keeps for its next call with a
+/// margin (find_contacts.cpp); a call running now keeps its own until it ends.
+void release_kept_contacts();
+
 }  // namespace obbsat::detail

@@ -44,7 +44,4 @@ std::size_t spare_search_bytes();
 /// Frees the working memory kept for the next query; a query running now keeps its own until it ends.
 void release_spare_search();
 
-/// Frees what find_contacts keeps for its next call with a margin (find_contacts.cpp).
-void release_kept_contacts();
-
 }  // namespace obbsat::detail

@@ -138,7 +138,14 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         float height_sum = 0;
         double total = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
-        std::array<std::uint32_t, 256>& exponents = partials[unit].exponents;
+        // Boxes of one scene mostly share their extent's exponent: counted
+        // in one histogram, each count would wait for the one before it (a
+        // store, then a load of the same place); in exponent_lanes of them,
+        // box r counting in the (r % exponent_lanes)th, that many chains run
+        // side by side. They are summed into the unit's partial at its end.
+        constexpr std::size_t exponent_lanes = 4;
+        std::array<std::array<std::uint32_t, 256>, exponent_lanes> exponents{};
+        const bool keys_on_grid = with_keys;
         // Heights are summed in float over runs and in double across them.
         bounds_run b;
         std::uint32_t extent_exponent[bounds_run::size];
@@ -162,8 +169,8 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
                     continue;
                 }
                 const std::size_t r = i - run_begin;
-                ++exponents[extent_exponent[r]];
-                if (with_keys) {
+                ++exponents[r % exponent_lanes][extent_exponent[r]];
+                if (keys_on_grid) {
                     key_by_id_[i] = grid_.key_of(b.lo_x[r], b.lo_y[r]);
                 } else {
                     std::memcpy(&keys_[i], &b.lo_x[r], sizeof(float));
@@ -180,6 +187,11 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         }
         inside_all[unit] = static_cast<unsigned char>(probe_inside);
         partial& p = partials[unit];
+        for (std::size_t e = 0; e < p.exponents.size(); ++e) {
+            for (const std::array<std::uint32_t, 256>& lane : exponents) {
+                p.exponents[e] += lane[e];
+            }
+        }
         p.x_low = clamp_finite(x_low);
         p.x_high = clamp_finite(x_high);
         p.y_low = clamp_finite(y_low);

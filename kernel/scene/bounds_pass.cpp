@@ -145,6 +145,9 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         // side by side. They are summed into the unit's partial at its end.
         constexpr std::size_t exponent_lanes = 4;
         std::array<std::array<std::uint32_t, 256>, exponent_lanes> exponents{};
+        // A local copy: read through the lambda's capture, the stores below
+        // (which might alias it, for all the compiler knows) made the loop
+        // read it again for every box.
         const bool keys_on_grid = with_keys;
         // Heights are summed in float over runs and in double across them.
         bounds_run b;

@@ -49,6 +49,14 @@ struct pair_search_test_access {
 
     static std::size_t strips(const pair_search& search) { return search.grid_.strips; }
 
+    /// The typical extent the extent pass of `input` measures (one thread),
+    /// which the next query that keeps candidates widens by.
+    static float measured_typical_extent(pair_search& search, const query_input& input) {
+        search.set_query(input);
+        search.measure_extent(input, 1, false);
+        return search.kept_.measured_typical_extent;
+    }
+
     /// The largest candidate buffer of any part, in pairs.
     static std::size_t largest_candidate_buffer(const pair_search& search) {
         std::size_t largest = 0;
@@ -138,6 +146,30 @@ std::vector<rect_pose> column(std::size_t count) {
         out.push_back(rect_pose{{0.0f, 0.5f * static_cast<float>(i)}, {0.5f, 0.5f}, {1.0f, 0.0f}});
     }
     return out;
+}
+
+TEST(pair_search, the_typical_extent_counts_every_box_wherever_it_lies_in_a_run) {
+    // The larger extent of each box's bounds, axis-aligned: 3 for five boxes
+    // (exponent 1), 40 for four (exponent 5); the median is 3, the typical
+    // extent the power of two below it. The small boxes sit at positions of
+    // every remainder modulo 2, 3 and 4, so a count that missed the boxes of
+    // some positions would find no median (or the large one).
+    std::vector<rect_pose> poses;
+    for (const float half : {20.0f, 1.5f, 20.0f, 1.5f, 1.5f, 20.0f, 1.5f, 20.0f, 1.5f}) {
+        const float x = static_cast<float>(poses.size()) * 50.0f;
+        poses.push_back(rect_pose{{x, 0.0f}, {half, half}, {1.0f, 0.0f}});
+    }
+    collide_options options;
+    options.test = method::exact;
+    pair_search search(options);
+    EXPECT_EQ(pair_search_test_access::measured_typical_extent(search, rows_of(poses)), 2.0f);
+    // Past one run of bounds (256 boxes): 300 boxes, two of every three of extent 6 (typical 4).
+    std::vector<rect_pose> many;
+    for (std::size_t i = 0; i < 300; ++i) {
+        const float half = i % 3 == 0 ? 20.0f : 3.0f;
+        many.push_back(rect_pose{{static_cast<float>(i) * 50.0f, 0.0f}, {half, half}, {1.0f, 0.0f}});
+    }
+    EXPECT_EQ(pair_search_test_access::measured_typical_extent(search, rows_of(many)), 4.0f);
 }
 
 TEST(pair_search, rows_moved_down_between_passes_make_no_count_underflow) {

@@ -183,19 +183,23 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
         b_any |= b;
     }
     const unsigned b_bits = bits_for(b_any);
+    // slots[share * buckets + k]: where the share's first pair of bucket k
+    // goes. A table of their own, not written over the counts: a count the
+    // other thread wrote is read from its core, where writing it would wait
+    // for each cache line to leave that core.
     std::vector<std::size_t> begin(buckets + 1, 0);
+    std::vector<std::size_t> slots(shares * buckets);
     std::size_t sum = 0;
     for (std::size_t k = 0; k < buckets; ++k) {
         begin[k] = sum;
         for (std::size_t share = 0; share < shares; ++share) {
-            const std::size_t here = next[share][k];
-            next[share][k] = sum;
-            sum += here;
+            slots[share * buckets + k] = sum;
+            sum += next[share][k];
         }
     }
     begin[buckets] = sum;
     run(shares, [&](std::size_t share) {
-        std::vector<std::size_t>& slot = next[share];
+        std::size_t* const slot = slots.data() + share * buckets;
         Pair* const to = out.data();
         for_share(share, [&](const Pair& p) { to[slot[p.a >> high_shift]++] = p; });
     });

@@ -157,7 +157,9 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
             }
         }
     };
-    std::vector<std::vector<std::size_t>> next(shares, std::vector<std::size_t>(buckets, 0));
+    // Each share's counts are made and cleared by the unit that counts it,
+    // on its own thread, rather than here for all of them.
+    std::vector<std::vector<std::size_t>> counts(shares);
     std::vector<std::uint32_t> b_seen(shares, 0);  ///< every b of a share, or'ed: the bits b takes
     // Unit 0 sizes the answer (value-initialising n pairs: 2M pairs of a
     // cold query of 1M boxes took 2-6 ms, page faults and zeroing) while the
@@ -170,7 +172,8 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
             return;
         }
         const std::size_t share = unit - 1;
-        std::vector<std::size_t>& count = next[share];
+        std::vector<std::size_t>& count = counts[share];
+        count.assign(buckets, 0);
         std::uint32_t b_any = 0;
         for_share(share, [&](const Pair& p) {
             ++count[p.a >> high_shift];
@@ -194,7 +197,7 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
         begin[k] = sum;
         for (std::size_t share = 0; share < shares; ++share) {
             slots[share * buckets + k] = sum;
-            sum += next[share][k];
+            sum += counts[share][k];
         }
     }
     begin[buckets] = sum;

@@ -134,7 +134,9 @@ void sort_lent(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsign
     // makes both threads wait for equal shares.
     const std::size_t units = units_for(n, threads, min_per_unit);
     const auto begin_of = [n, units](std::size_t unit) { return n * unit / units; };
-    std::vector<all_digit_counts> counts(units);
+    // Each unit clears its own counts: cleared here, the cache lines of the
+    // units the other thread takes would each have to leave this core first.
+    scratch_vector<all_digit_counts> counts(units);
     run_units(units, threads, [&](std::size_t unit) {
         const std::size_t begin = begin_of(unit);
         counts[unit] = all_digit_counts{};

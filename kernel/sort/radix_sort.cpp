@@ -169,7 +169,8 @@ void sort_lent(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsign
     // v. The slots go to a table of their own rather than over the counts:
     // half of these were written by the other thread, and writing over each
     // of its cache lines would wait for the line to leave the other core
-    // (80 us a sort of 1M keys on two threads, against 12 to read them).
+    // (this step took 0.10 ms between the passes of a 1M-box query on two
+    // threads, 0.04 ms with the table).
     std::vector<std::size_t> bucket_begin(digit_values + 1, 0);
     std::vector<digit_counts> slots(units);
     std::size_t sum = 0;

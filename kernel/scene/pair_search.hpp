@@ -224,6 +224,12 @@ private:
 
     // Step 3, visits (visits.cpp).
     void collect_visits(std::size_t parts);
+    /// Makes room for the visit counts of `units` units of the order, which
+    /// copy_records takes as it copies (count_visits), so that collect_visits
+    /// needs no pass of its own to count them.
+    void start_visit_counts(std::size_t units);
+    /// Counts the visits of rectangles [begin, end) of the order, unit `unit` of start_visit_counts'.
+    void count_visits(std::size_t unit, std::size_t begin, std::size_t end);
 
     // Steps 4 and 5, the sweep and the method's kernels (sweep.cpp).
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
@@ -355,6 +361,13 @@ private:
     scratch_vector<std::uint32_t> visit_keys_, visit_ids_;
     scratch_vector<std::uint32_t> far_keys_, far_ids_;  ///< visits beyond the strip above a rectangle's lowest, before the merge
     scratch_vector<std::uint32_t> near_keys_, near_ids_;  ///< visits to the strip above, before the merge (when there are far ones)
+    /// Visits of the rectangles of one unit of the order: to the strip just above its lowest, and beyond.
+    struct visit_counts {
+        std::size_t near = 0;
+        std::size_t far = 0;
+    };
+    std::vector<visit_counts> unit_visits_;  ///< per unit (start_visit_counts), while visits_counted_
+    bool visits_counted_ = false;            ///< copy_records counted this query's visits
 
     std::vector<part> parts_;
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer

@@ -64,7 +64,7 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
     }
     const bounds_fn bounds = kernels_for(ran_).bounds;
     const std::size_t units = units_for(n_, parts, min_boxes_per_unit);  // taken as they come
-    run_units(units, parts, [&](std::size_t unit) {
+    const auto copy_unit = [&](std::size_t unit) {
         const auto [begin, end] = share_of(n_, unit, units);
         constexpr std::size_t ahead = random_rows_ahead;
         bounds_run b;
@@ -108,6 +108,13 @@ void pair_search::copy_records(const query_input& input, std::size_t parts) {
             }
             store_sweep_bounds(b, run_begin, run_end);
         }
+    };
+    start_visit_counts(units);
+    run_units(units, parts, [&](std::size_t unit) {
+        copy_unit(unit);
+        // The visits' first pass, over the strips the unit has just written (visits.cpp).
+        const auto [begin, end] = share_of(n_, unit, units);
+        count_visits(unit, begin, end);
     });
 }
 

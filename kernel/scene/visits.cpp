@@ -11,6 +11,24 @@
 
 namespace obbsat::detail {
 
+void pair_search::start_visit_counts(std::size_t units) {
+    unit_visits_.assign(units, visit_counts{});
+    visits_counted_ = true;
+}
+
+void pair_search::count_visits(std::size_t unit, std::size_t begin, std::size_t end) {
+    const unsigned q_bits = grid_.q_bits;
+    std::size_t near = 0, far = 0;
+    for (std::size_t k = begin; k < end; ++k) {
+        const std::uint32_t low = keys_[k] >> q_bits;
+        const std::uint32_t hops = std::max(strip_hi_[k], low) - low;
+        const std::uint32_t is_near = hops != 0 ? 1 : 0;
+        near += is_near;
+        far += hops - is_near;
+    }
+    unit_visits_[unit] = visit_counts{near, far};
+}
+
 void pair_search::collect_visits(std::size_t parts) {
     // A rectangle taller than its strip visits each strip above its lowest
     // up to its highest; the visits are wanted sorted by key, ties by
@@ -19,7 +37,10 @@ void pair_search::collect_visits(std::size_t parts) {
     // that order already; only the others ("far" visits, of rectangles taller
     // than a strip) are radix sorted, and then merged in. Each unit counts
     // its visits, then writes them after the units before it; the units are
-    // taken as they come (work_shares.hpp), and the same in both passes.
+    // taken as they come (work_shares.hpp), and the same in both passes. The
+    // count is taken by copy_records' units as they write each rectangle's
+    // highest strip: no pass of its own, no wait for every unit between the
+    // copy and the count, and strip_hi_ read while it is in the cache.
     //
     // A rectangle's lowest strip (its key) comes from the order's read of the
     // rows, its highest (strip_hi_) from the copy's. Rows the caller changes
@@ -30,23 +51,20 @@ void pair_search::collect_visits(std::size_t parts) {
     const std::uint32_t strips = grid_.strips;
     const unsigned q_bits = grid_.q_bits;
     const std::size_t units = units_for(n_, parts, min_boxes_per_unit);
+    // The counts come from copy_records, which takes them over the same
+    // units as it writes strip_hi_; a query that did not, counts here.
+    if (!visits_counted_ || unit_visits_.size() != units) {
+        start_visit_counts(units);
+        run_units(units, parts, [&](std::size_t share) {
+            const auto [begin, end] = share_of(n_, share, units);
+            count_visits(share, begin, end);
+        });
+    }
+    visits_counted_ = false;
     std::vector<std::size_t> first_near(units + 1, 0), first_far(units + 1, 0);
-    run_units(units, parts, [&](std::size_t share) {
-        const auto [begin, end] = share_of(n_, share, units);
-        std::size_t near = 0, far = 0;
-        for (std::size_t k = begin; k < end; ++k) {
-            const std::uint32_t low = keys_[k] >> q_bits;
-            const std::uint32_t hops = std::max(strip_hi_[k], low) - low;
-            const std::uint32_t is_near = hops != 0 ? 1 : 0;
-            near += is_near;
-            far += hops - is_near;
-        }
-        first_near[share + 1] = near;
-        first_far[share + 1] = far;
-    });
     for (std::size_t share = 0; share < units; ++share) {
-        first_near[share + 1] += first_near[share];
-        first_far[share + 1] += first_far[share];
+        first_near[share + 1] = first_near[share] + unit_visits_[share].near;
+        first_far[share + 1] = first_far[share] + unit_visits_[share].far;
     }
     const std::size_t far_count = first_far[units];
     const std::size_t near_count = first_near[units];

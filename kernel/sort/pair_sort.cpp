@@ -157,7 +157,9 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
             }
         }
     };
-    std::vector<std::vector<std::size_t>> next(shares, std::vector<std::size_t>(buckets, 0));
+    // Each share's counts are made and cleared by the unit that counts it,
+    // on its own thread, rather than here for all of them.
+    std::vector<std::vector<std::size_t>> counts(shares);
     std::vector<std::uint32_t> b_seen(shares, 0);  ///< every b of a share, or'ed: the bits b takes
     // Unit 0 sizes the answer (value-initialising n pairs: 2M pairs of a
     // cold query of 1M boxes took 2-6 ms, page faults and zeroing) while the
@@ -170,7 +172,8 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
             return;
         }
         const std::size_t share = unit - 1;
-        std::vector<std::size_t>& count = next[share];
+        std::vector<std::size_t>& count = counts[share];
+        count.assign(buckets, 0);
         std::uint32_t b_any = 0;
         for_share(share, [&](const Pair& p) {
             ++count[p.a >> high_shift];
@@ -183,19 +186,23 @@ void sort_pairs(const std::vector<pair_source<Pair>>& sources, std::size_t a_cou
         b_any |= b;
     }
     const unsigned b_bits = bits_for(b_any);
+    // slots[share * buckets + k]: where the share's first pair of bucket k
+    // goes. A table of their own, not written over the counts: a count the
+    // other thread wrote is read from its core, where writing it would wait
+    // for each cache line to leave that core.
     std::vector<std::size_t> begin(buckets + 1, 0);
+    std::vector<std::size_t> slots(shares * buckets);
     std::size_t sum = 0;
     for (std::size_t k = 0; k < buckets; ++k) {
         begin[k] = sum;
         for (std::size_t share = 0; share < shares; ++share) {
-            const std::size_t here = next[share][k];
-            next[share][k] = sum;
-            sum += here;
+            slots[share * buckets + k] = sum;
+            sum += counts[share][k];
         }
     }
     begin[buckets] = sum;
     run(shares, [&](std::size_t share) {
-        std::vector<std::size_t>& slot = next[share];
+        std::size_t* const slot = slots.data() + share * buckets;
         Pair* const to = out.data();
         for_share(share, [&](const Pair& p) { to[slot[p.a >> high_shift]++] = p; });
     });

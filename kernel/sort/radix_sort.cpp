@@ -134,7 +134,9 @@ void sort_lent(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsign
     // makes both threads wait for equal shares.
     const std::size_t units = units_for(n, threads, min_per_unit);
     const auto begin_of = [n, units](std::size_t unit) { return n * unit / units; };
-    std::vector<all_digit_counts> counts(units);
+    // Each unit clears its own counts: cleared here, the cache lines of the
+    // units the other thread takes would each have to leave this core first.
+    scratch_vector<all_digit_counts> counts(units);
     run_units(units, threads, [&](std::size_t unit) {
         const std::size_t begin = begin_of(unit);
         counts[unit] = all_digit_counts{};
@@ -162,20 +164,26 @@ void sort_lent(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsign
         return;  // every key the same: the input is its own stable order
     }
     const unsigned first = top - 1;
-    // bucket_begin[v]: the first slot of the keys whose first digit is v.
+    // bucket_begin[v]: the first slot of the keys whose first digit is v;
+    // slots[unit][v]: the first slot of the unit's keys whose first digit is
+    // v. The slots go to a table of their own rather than over the counts:
+    // half of these were written by the other thread, and writing over each
+    // of its cache lines would wait for the line to leave the other core
+    // (this step took 0.10 ms between the passes of a 1M-box query on two
+    // threads, 0.04 ms with the table).
     std::vector<std::size_t> bucket_begin(digit_values + 1, 0);
+    std::vector<digit_counts> slots(units);
     std::size_t sum = 0;
     for (std::size_t v = 0; v < digit_values; ++v) {
         bucket_begin[v] = sum;
-        for (all_digit_counts& c : counts) {
-            const std::size_t here = c[first][v];
-            c[first][v] = sum;
-            sum += here;
+        for (std::size_t unit = 0; unit < units; ++unit) {
+            slots[unit][v] = sum;
+            sum += counts[unit][first][v];
         }
     }
     bucket_begin[digit_values] = n;
     run_units(units, threads, [&](std::size_t unit) {
-        digit_counts next = counts[unit][first];  // a copy of its own, as in sort_words
+        digit_counts next = slots[unit];  // a copy of its own, as in sort_words
         const std::uint64_t* const from = packed;
         std::uint64_t* const to = spare;
         const std::size_t end = begin_of(unit + 1);  // read once: the stores might alias what it reads

@@ -91,26 +91,30 @@ struct carry_count {
 /// (at most at out[out_last]) and counted if it collides: no branch on the verdicts.
 carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t end, const tagged_pair* side,
                         const tagged_pair* side_end, tagged_pair* into, pair_index* out, std::size_t out_last) {
-    carry_count count;
-    const std::uint64_t* const verdicts = in.verdicts;
-    const auto take = [&](const tagged_pair& p) {
-        into[count.written++] = p;
-        out[std::min(count.found, out_last)] = pair_index{p.a, p.b};
-        count.found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
+    // Plain locals: the stores below may alias anything the loop reads.
+    const carry_input local = in;
+    const tagged_pair* const kept = local.kept;
+    const std::uint64_t* const verdicts = local.verdicts;
+    std::size_t written = 0;
+    std::size_t found = 0;
+    const auto take = [&](const tagged_pair& p) __attribute__((always_inline)) {
+        into[written++] = p;
+        out[std::min(found, out_last)] = pair_index{p.a, p.b};
+        found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
     };
     constexpr std::size_t ahead = 32;
     for (std::size_t j = begin; j < end; ++j) {
-        if (j + ahead < end && !kept_pairs::is_gap(in.kept[j + ahead])) {
+        if (j + ahead < end && !kept_pairs::is_gap(kept[j + ahead])) {
             // The second rows and the verdicts are in no order: fetched ahead, they arrive in parallel.
-            __builtin_prefetch(in.now_of + in.kept[j + ahead].b + in.b_last);
-            __builtin_prefetch(verdicts + in.kept[j + ahead].tag / 64);
+            __builtin_prefetch(local.now_of + kept[j + ahead].b + local.b_last);
+            __builtin_prefetch(verdicts + kept[j + ahead].tag / 64);
         }
-        const tagged_pair& p = in.kept[j];
+        const tagged_pair& p = kept[j];
         tagged_pair mapped{};
-        switch (fate_of(in, p, mapped)) {
+        switch (fate_of(local, p, mapped)) {
             case kept_fate::gone:
                 // A gone row's pair: dropped for good, and never answers again.
-                __atomic_fetch_or(in.dropped + p.tag / 64, std::uint64_t{1} << (p.tag % 64), __ATOMIC_RELAXED);
+                __atomic_fetch_or(local.dropped + p.tag / 64, std::uint64_t{1} << (p.tag % 64), __ATOMIC_RELAXED);
                 continue;
             case kept_fate::gap:
             case kept_fate::moved:
@@ -129,7 +133,7 @@ carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t en
     while (side != side_end) {
         take(*side++);
     }
-    return count;
+    return carry_count{written, found};
 }
 
 }  // namespace

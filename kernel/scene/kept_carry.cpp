@@ -44,7 +44,6 @@ struct carry_input {
     const std::uint32_t* now_of;  ///< each last row's row now, or no_row
     const std::uint8_t* moved;    ///< rows of the last call that changed places; null when none did
     const std::uint64_t* verdicts;
-    std::uint64_t* dropped;       ///< kept_pairs::dropped, set by several units at once
     std::uint32_t b_last;         ///< the first b row among the last call's rows (0 for one set)
     std::uint32_t b_now;          ///< the same among this call's rows
 };
@@ -83,20 +82,26 @@ std::uint64_t first_key_from(const carry_input& in, std::size_t from, std::size_
 struct carry_count {
     std::size_t written = 0;  ///< pairs written to `into`
     std::size_t found = 0;    ///< of those, the colliding ones, written to `out`
+    std::size_t gone = 0;     ///< pairs of gone rows, their tags written to `gone`
 };
 
 /// The carry of kept[begin, end) with the sorted moved pairs [side, side_end)
 /// merged in: every pair taken is written to `into`, and the colliding ones
 /// to out[0, found). Each pair is written where the next colliding one goes
-/// (at most at out[out_last]) and counted if it collides: no branch on the verdicts.
+/// (at most at out[out_last]) and counted if it collides: no branch on the
+/// verdicts. The tags of pairs of gone rows are written to gone[0, gone_count), to be
+/// marked dropped once the units have ended (an atomic mark here, shared
+/// between units, stalled the loop at each).
 carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t end, const tagged_pair* side,
-                        const tagged_pair* side_end, tagged_pair* into, pair_index* out, std::size_t out_last) {
+                        const tagged_pair* side_end, tagged_pair* into, pair_index* out, std::size_t out_last,
+                        std::uint32_t* gone) {
     // Plain locals: the stores below may alias anything the loop reads.
     const carry_input local = in;
     const tagged_pair* const kept = local.kept;
     const std::uint64_t* const verdicts = local.verdicts;
     std::size_t written = 0;
     std::size_t found = 0;
+    std::size_t gone_count = 0;
     const auto take = [&](const tagged_pair& p) __attribute__((always_inline)) {
         into[written++] = p;
         out[std::min(found, out_last)] = pair_index{p.a, p.b};
@@ -114,7 +119,7 @@ carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t en
         switch (fate_of(local, p, mapped)) {
             case kept_fate::gone:
                 // A gone row's pair: dropped for good, and never answers again.
-                __atomic_fetch_or(local.dropped + p.tag / 64, std::uint64_t{1} << (p.tag % 64), __ATOMIC_RELAXED);
+                gone[gone_count++] = p.tag;
                 continue;
             case kept_fate::gap:
             case kept_fate::moved:
@@ -133,7 +138,7 @@ carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t en
     while (side != side_end) {
         take(*side++);
     }
-    return carry_count{written, found};
+    return carry_count{written, found, gone_count};
 }
 
 }  // namespace
@@ -163,7 +168,6 @@ void pair_search::answer_by_id() {
                          now_of_last_.data(),
                          kept_.remap_any_moved ? kept_.row_moved.data() : nullptr,
                          kept_.verdicts.data(),
-                         kept_.dropped.data(),
                          self_ ? 0u : static_cast<std::uint32_t>(kept_.remap_last_a),
                          self_ ? 0u : static_cast<std::uint32_t>(a_count_)};
 
@@ -187,6 +191,12 @@ void pair_search::answer_by_id() {
     std::vector<tagged_pair>& next = kept_.by_caller_spare;
     next.resize(place[units]);
     std::vector<carry_count> counts(units);
+    if (kept_.unit_gone.size() < units) {
+        kept_.unit_gone.resize(units);
+    }
+    for (std::size_t u = 0; u < units; ++u) {
+        kept_.unit_gone[u].resize(kept_begin[u + 1] - kept_begin[u]);  // at most one a kept pair, left unwritten
+    }
     if (units == 1) {
         // The answer is written in place: sized for the colliding pairs and
         // one more place, where every pair after the last colliding one is
@@ -194,7 +204,7 @@ void pair_search::answer_by_id() {
         // kept pair filled the growth with zeros on each call.
         pairs_.resize(colliding + 1);
         counts[0] = carry_range(in, 0, kept_count, side.data(), side.data() + side.size(), next.data(),
-                                pairs_.data(), colliding);
+                                pairs_.data(), colliding, kept_.unit_gone[0].data());
     } else {
         if (kept_.unit_answers.size() < units) {
             kept_.unit_answers.resize(units);
@@ -208,7 +218,7 @@ void pair_search::answer_by_id() {
                 answer.resize(most + 1);
             }
             counts[u] = carry_range(in, kept_begin[u], kept_begin[u + 1], side.data() + side_begin[u],
-                                    side.data() + side_begin[u + 1], next.data() + place[u], answer.data(), most);
+                                    side.data() + side_begin[u + 1], next.data() + place[u], answer.data(), most, kept_.unit_gone[u].data());
             std::fill(next.begin() + static_cast<std::ptrdiff_t>(place[u] + counts[u].written),
                       next.begin() + static_cast<std::ptrdiff_t>(place[u + 1]), gap);
         });
@@ -218,6 +228,12 @@ void pair_search::answer_by_id() {
     for (std::size_t u = 0; u < units; ++u) {
         found += counts[u].found;
         answer_at[u + 1] = found;
+    }
+    for (std::size_t u = 0; u < units; ++u) {
+        for (std::size_t i = 0; i < counts[u].gone; ++i) {
+            const std::uint32_t tag = kept_.unit_gone[u][i];
+            kept_.dropped[tag / 64] |= std::uint64_t{1} << (tag % 64);
+        }
     }
     if (found > colliding) {
         throw std::logic_error("obbsat: the answer from kept candidates carried over found " + std::to_string(found) +

@@ -160,6 +160,8 @@ struct kept_pairs {
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
     /// Each unit's share of the answer while by_caller is carried on several threads (kept_carry.cpp).
     std::vector<std::vector<pair_index>> unit_answers;
+    /// Each unit's tags of kept pairs of gone rows, marked in `dropped` once the units have ended.
+    std::vector<scratch_vector<std::uint32_t>> unit_gone;
     few_pairs_sort_scratch moved_order;        ///< working memory of moved_pairs' sort
     /// Set while by_caller is in the last call's rows, to be carried to this
     /// call's as the answer is read (pair_search::answer_by_id).

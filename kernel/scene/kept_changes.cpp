@@ -57,6 +57,22 @@ namespace {
 /// hand to another thread than it saves (a slot's search takes some 0.6 µs).
 constexpr std::size_t min_new_slots_per_unit = 64;
 
+/// Fetches row `id`'s pair filters into the cache, where its set gives them.
+void fetch_filters(const query_input& input, std::size_t id) {
+    const bool in_a = id < input.a_count;
+    const pair_filters& f = in_a ? input.a_filters : input.b_filters;
+    const std::size_t i = in_a ? id : id - input.a_count;
+    if (f.categories != nullptr) {
+        __builtin_prefetch(f.categories + i);
+    }
+    if (f.masks != nullptr) {
+        __builtin_prefetch(f.masks + i);
+    }
+    if (f.groups != nullptr) {
+        __builtin_prefetch(f.groups + i);
+    }
+}
+
 /// std::lower_bound over one strip's sorted keys, started where `key` would
 /// lie if the keys were spread evenly between the first and the last (they
 /// are quantized x positions), then galloping to the answer: a probe or two
@@ -380,11 +396,13 @@ void pair_search::find_new_candidates(const query_input& input, std::size_t firs
     if (kept_.unit_near.size() < units) {
         kept_.unit_near.resize(units);
         kept_.unit_found.resize(units);
+        kept_.unit_flags.resize(units);
     }
     run_units(units, threads, [&](std::size_t unit) {
         const auto [unit_begin, unit_end] = share_of(new_slots, unit, units);
         std::vector<std::uint32_t>& near = kept_.unit_near[unit];
         std::vector<pair_index>& found_pairs = kept_.unit_found[unit];
+        std::vector<std::uint8_t>& flags = kept_.unit_flags[unit];
         found_pairs.clear();
         std::size_t near_end[batch];
         const auto consider = [&](std::uint32_t y) {
@@ -440,34 +458,52 @@ void pair_search::find_new_candidates(const query_input& input, std::size_t firs
                 }
                 near_end[xs - batch_begin] = near.size();
             }
+            // First the widened bounds, the sweep's test; and not an empty
+            // slot, x itself, a new slot that finds x itself, or one of the
+            // same set. With filters, the rows of the pairs that pass have
+            // their filters fetched here, to arrive while the others are
+            // tested: three random reads a pair, read only for these.
+            flags.resize(near.size());
             std::size_t from = 0;
             for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
                 const auto x = static_cast<std::uint32_t>(xs);
-                // The widened bounds, the sweep's test; and not an empty slot, x
-                // itself, a new slot that finds x itself, or one of the same set.
-                // Each pair is put in the caller's order, as the sweep puts its
-                // candidates (flush_candidates).
+                const signed_bounds bx = widened[x];
+                const std::uint8_t x_side = side_[x];
+                for (std::size_t i = from; i < near_end[xs - batch_begin]; ++i) {
+                    const std::uint32_t y = near[i];
+                    const signed_bounds& by = widened[y];
+                    const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
+                                         (bx.v[1] <= -by.v[3]);
+                    const bool other = (y != x) & !((y >= first_new) & (y < x)) & (order[y] != no_row) &
+                                       (self_ || side_[y] != x_side);
+                    flags[i] = (overlap & other) ? 1 : 0;
+                    if (filtered && flags[i] != 0) {
+                        fetch_filters(input, order[y]);
+                    }
+                }
+                from = near_end[xs - batch_begin];
+            }
+            // Then the filters, as the sweep drops a filtered pair before it
+            // keeps it. Each pair is put in the caller's order, as the sweep
+            // puts its candidates (flush_candidates).
+            from = 0;
+            for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+                const auto x = static_cast<std::uint32_t>(xs);
                 const std::size_t at = found_pairs.size();
                 found_pairs.resize(at + (near_end[xs - batch_begin] - from));
                 pair_index* const out = found_pairs.data() + at;
                 std::size_t found = 0;
-                const signed_bounds bx = widened[x];
                 const std::uint32_t x_row = order[x];
-                const std::uint8_t x_side = side_[x];
                 const filter_values x_filters = filtered ? filter_of(input, x_row) : filter_values{};
                 for (std::size_t i = from; i < near_end[xs - batch_begin]; ++i) {
                     const std::uint32_t y = near[i];
-                    const signed_bounds& by = widened[y];
                     const std::uint32_t y_row = order[y];
-                    const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
-                                         (bx.v[1] <= -by.v[3]);
-                    const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
-                                       (self_ | (side_[y] != x_side));
-                    // The filters, as the sweep drops a filtered pair before it keeps it.
-                    const bool passes = !filtered || (y_row != no_row && filters_pass(x_filters, filter_of(input, y_row)) != 0);
+                    const bool candidate = flags[i] != 0;
+                    const bool passes =
+                        !filtered || !candidate || filters_pass(x_filters, filter_of(input, y_row)) != 0;
                     const bool swap = self_ ? x_row > y_row : x_row >= offset;
                     out[found] = swap ? pair_index{y, x} : pair_index{x, y};
-                    found += (overlap & other & passes) ? 1u : 0u;
+                    found += (candidate & passes) ? 1u : 0u;
                 }
                 found_pairs.resize(at + found);
                 from = near_end[xs - batch_begin];

@@ -147,6 +147,7 @@ struct kept_pairs {
     /// test, and the new candidates it found (kept_changes.cpp).
     std::vector<std::vector<std::uint32_t>> unit_near;
     std::vector<std::vector<pair_index>> unit_found;
+    std::vector<std::vector<std::uint8_t>> unit_flags;  ///< of each slot within reach, whether its bounds meet
     /// Rows of the last call whose place in the order of rows changed
     /// against the others (kept_changes.cpp): their pairs are sorted apart.
     std::vector<std::uint8_t> row_moved;

@@ -21,7 +21,8 @@
 //      strip (seek). A pair is taken in the strip holding the larger of the
 //      two lowest strips, as the sweep takes it, so it is found once; a pair
 //      of two new slots is taken from the earlier slot. The widened bounds
-//      decide, exactly as in the sweep.
+//      decide, exactly as in the sweep. The new slots are cut into units
+//      for the pool (work_shares.hpp), their pairs appended in unit order.
 //   4. by_caller, the kept candidates sorted in the caller's rows, is
 //      carried to this call's rows: the pairs of rows that changed places
 //      against the others (out_of_order.hpp: none when rows are appended or
@@ -29,7 +30,8 @@
 //      apart with the new slots' pairs, and the kept pairs are tested; then
 //      one pass over by_caller maps each pair to this call's rows (their
 //      order is kept), merges the sorted ones in, drops those of gone rows,
-//      and reads the answer on the way (answer_by_id, kept_carry.cpp).
+//      and reads the answer on the way (answer_by_id, kept_carry.cpp, in
+//      units for the pool too).
 // A change of more than an eighth of the rows, or empty and added slots
 // passing a quarter of the slots, makes the call a full query instead, which
 // lays the slots out anew (and keeps again: the scene is the same by id).

@@ -62,7 +62,7 @@ void pair_search::mark_answer_shares(std::size_t parts) {
     if (kept_.answer_parts == parts) {
         return;
     }
-    const std::size_t words = kept_.verdicts.size();  // test_kept sized it for kept_.pairs
+    const std::size_t words = (kept_.pairs.size() + 63) / 64;
     kept_.answer_marks.resize(words * (parts - 1));
     run_parts(parts, [&](std::size_t share) {
         if (share == 0) {
@@ -73,7 +73,9 @@ void pair_search::mark_answer_shares(std::size_t parts) {
         const auto [begin, end] = share_of(kept_.by_caller.size(), share, parts);
         const tagged_pair* const kept = kept_.by_caller.data();
         for (std::size_t j = begin; j < end; ++j) {
-            marks[kept[j].tag / 64] |= std::uint64_t{1} << (kept[j].tag % 64);
+            if (!kept_pairs::is_gap(kept[j])) {
+                marks[kept[j].tag / 64] |= std::uint64_t{1} << (kept[j].tag % 64);
+            }
         }
     });
     kept_.answer_parts = parts;
@@ -87,9 +89,10 @@ void pair_search::test_kept(std::size_t parts, bool unfiltered, std::size_t shar
     if (parts_.size() < parts) {
         parts_.resize(parts);
     }
-    kept_.verdicts.resize((kept_.pairs.size() + 63) / 64);
+    const std::size_t words = (kept_.pairs.size() + 63) / 64;
+    kept_.verdicts.resize(words + 1);
+    kept_.verdicts[words] = 0;  // the verdict of gap entries (kept_pairs::gap_pair)
     mark_answer_shares(shares);
-    const std::size_t words = kept_.verdicts.size();
     const signed_bounds* const now = kept_.now.data();
     run_parts(parts, [&](std::size_t share) {
         part& p = parts_[share];

@@ -21,7 +21,8 @@
 //      strip (seek). A pair is taken in the strip holding the larger of the
 //      two lowest strips, as the sweep takes it, so it is found once; a pair
 //      of two new slots is taken from the earlier slot. The widened bounds
-//      decide, exactly as in the sweep.
+//      decide, exactly as in the sweep. The new slots are cut into units
+//      for the pool (work_shares.hpp), their pairs appended in unit order.
 //   4. by_caller, the kept candidates sorted in the caller's rows, is
 //      carried to this call's rows: the pairs of rows that changed places
 //      against the others (out_of_order.hpp: none when rows are appended or
@@ -29,7 +30,8 @@
 //      apart with the new slots' pairs, and the kept pairs are tested; then
 //      one pass over by_caller maps each pair to this call's rows (their
 //      order is kept), merges the sorted ones in, drops those of gone rows,
-//      and reads the answer on the way (answer_by_id).
+//      and reads the answer on the way (answer_by_id, kept_carry.cpp, in
+//      units for the pool too).
 // A change of more than an eighth of the rows, or empty and added slots
 // passing a quarter of the slots, makes the call a full query instead, which
 // lays the slots out anew (and keeps again: the scene is the same by id).
@@ -40,6 +42,7 @@
 #include "scene/out_of_order.hpp"
 #include "scene/search_common.hpp"
 #include "sort/pair_sort.hpp"
+#include "support/work_shares.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +54,26 @@
 namespace obbsat::detail {
 
 namespace {
+
+/// New slots below which a unit of their candidates' search costs more to
+/// hand to another thread than it saves (a slot's search takes some 0.6 µs).
+constexpr std::size_t min_new_slots_per_unit = 64;
+
+/// Fetches row `id`'s pair filters into the cache, where its set gives them.
+void fetch_filters(const query_input& input, std::size_t id) {
+    const bool in_a = id < input.a_count;
+    const pair_filters& f = in_a ? input.a_filters : input.b_filters;
+    const std::size_t i = in_a ? id : id - input.a_count;
+    if (f.categories != nullptr) {
+        __builtin_prefetch(f.categories + i);
+    }
+    if (f.masks != nullptr) {
+        __builtin_prefetch(f.masks + i);
+    }
+    if (f.groups != nullptr) {
+        __builtin_prefetch(f.groups + i);
+    }
+}
 
 /// std::lower_bound over one strip's sorted keys, started where `key` would
 /// lie if the keys were spread evenly between the first and the last (they
@@ -89,8 +112,6 @@ const Key* seek(const Key* begin, const Key* end, Key key) {
     }
     return std::lower_bound(begin + (high >= step ? high - step : 0), begin + high, key);
 }
-
-std::uint64_t order_key(const tagged_pair& p) { return (std::uint64_t{p.a} << 32) | p.b; }
 
 }  // namespace
 
@@ -367,94 +388,132 @@ void pair_search::find_new_candidates(const query_input& input, std::size_t firs
     // (sequential reads of the strips' sorted keys), each one's widened
     // bounds and row fetched ahead, and tested after, with no branch on the
     // outcome: the random reads of a whole batch overlap (they are most of
-    // this step's cost).
+    // this step's cost). The new slots are cut into units taken as they come
+    // (work_shares.hpp), each finding its pairs apart; the units' pairs are
+    // appended in unit order, so the kept list does not depend on the threads.
     constexpr std::size_t batch = 32;
-    std::size_t near_end[batch];
-    std::vector<std::uint32_t>& near = kept_.near;
-    const auto consider = [&](std::uint32_t y) {
-        __builtin_prefetch(widened + y);
-        __builtin_prefetch(order + y);
-        near.push_back(y);
-    };
-    for (std::size_t batch_begin = first_new; batch_begin < kept_.slots; batch_begin += batch) {
-        const std::size_t batch_end = std::min(kept_.slots, batch_begin + batch);
-        near.clear();
-        for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
-            const auto x = static_cast<std::uint32_t>(xs);
-            const std::uint32_t low = keys[x] >> q_bits;
-            const std::uint32_t high = strip_hi_[x];
-            const std::uint32_t q_lo = q_lo_[x];
-            const std::uint32_t q_hi = q_hi_[x];
-            for (std::uint32_t t = low; t <= high; ++t) {
-                const std::uint32_t strip_key = t << q_bits;
-                const std::uint32_t hi_key = strip_key | q_hi;
-                // The full query's entries of strip t: its own, and on x's lowest strip its visitors.
-                {
-                    const std::uint32_t reach = kept_.full_reach[t];
-                    const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
-                    const std::uint32_t* const begin = keys + own_begin_[t];
-                    const std::uint32_t* const end = keys + own_begin_[t + 1];
-                    for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
-                        consider(static_cast<std::uint32_t>(k - keys));
+    const std::size_t new_slots = kept_.slots - first_new;
+    const std::size_t threads = parts_for(n_, options_.threads, min_boxes_per_part);
+    const std::size_t units = units_for(new_slots, threads, min_new_slots_per_unit);
+    if (kept_.unit_near.size() < units) {
+        kept_.unit_near.resize(units);
+        kept_.unit_found.resize(units);
+        kept_.unit_flags.resize(units);
+    }
+    run_units(units, threads, [&](std::size_t unit) {
+        const auto [unit_begin, unit_end] = share_of(new_slots, unit, units);
+        std::vector<std::uint32_t>& near = kept_.unit_near[unit];
+        std::vector<pair_index>& found_pairs = kept_.unit_found[unit];
+        std::vector<std::uint8_t>& flags = kept_.unit_flags[unit];
+        found_pairs.clear();
+        std::size_t near_end[batch];
+        const auto consider = [&](std::uint32_t y) {
+            __builtin_prefetch(widened + y);
+            __builtin_prefetch(order + y);
+            near.push_back(y);
+        };
+        for (std::size_t batch_begin = first_new + unit_begin; batch_begin < first_new + unit_end;
+             batch_begin += batch) {
+            const std::size_t batch_end = std::min(first_new + unit_end, batch_begin + batch);
+            near.clear();
+            for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+                const auto x = static_cast<std::uint32_t>(xs);
+                const std::uint32_t low = keys[x] >> q_bits;
+                const std::uint32_t high = strip_hi_[x];
+                const std::uint32_t q_lo = q_lo_[x];
+                const std::uint32_t q_hi = q_hi_[x];
+                for (std::uint32_t t = low; t <= high; ++t) {
+                    const std::uint32_t strip_key = t << q_bits;
+                    const std::uint32_t hi_key = strip_key | q_hi;
+                    // The full query's entries of strip t: its own, and on x's lowest strip its visitors.
+                    {
+                        const std::uint32_t reach = kept_.full_reach[t];
+                        const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
+                        const std::uint32_t* const begin = keys + own_begin_[t];
+                        const std::uint32_t* const end = keys + own_begin_[t + 1];
+                        for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
+                            consider(static_cast<std::uint32_t>(k - keys));
+                        }
+                        if (t == low) {
+                            const std::uint32_t* const vbegin = visit_keys_.data() + visit_begin_[t];
+                            const std::uint32_t* const vend = visit_keys_.data() + visit_begin_[t + 1];
+                            for (const std::uint32_t* v = seek(vbegin, vend, lo_key); v != vend && *v <= hi_key;
+                                 ++v) {
+                                consider(visit_ids_[static_cast<std::size_t>(v - visit_keys_.data())]);
+                            }
+                        }
                     }
-                    if (t == low) {
-                        const std::uint32_t* const vbegin = visit_keys_.data() + visit_begin_[t];
-                        const std::uint32_t* const vend = visit_keys_.data() + visit_begin_[t + 1];
-                        for (const std::uint32_t* v = seek(vbegin, vend, lo_key); v != vend && *v <= hi_key;
-                             ++v) {
-                            consider(visit_ids_[static_cast<std::size_t>(v - visit_keys_.data())]);
+                    // The slots added since, in the strip holding the larger of the two lowest strips.
+                    {
+                        const std::uint32_t reach = kept_.added_reach[t];
+                        const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
+                        const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
+                        const std::uint64_t* const strip_end = added + added_begin[t + 1];
+                        for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);
+                             e != strip_end && *e <= hi_entry; ++e) {
+                            const auto y = static_cast<std::uint32_t>(*e & 0xffffffffu);
+                            if (t == std::max(low, keys[y] >> q_bits)) {
+                                consider(y);
+                            }
                         }
                     }
                 }
-                // The slots added since, in the strip holding the larger of the two lowest strips.
-                {
-                    const std::uint32_t reach = kept_.added_reach[t];
-                    const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
-                    const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
-                    const std::uint64_t* const strip_end = added + added_begin[t + 1];
-                    for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);
-                         e != strip_end && *e <= hi_entry; ++e) {
-                        const auto y = static_cast<std::uint32_t>(*e & 0xffffffffu);
-                        if (t == std::max(low, keys[y] >> q_bits)) {
-                            consider(y);
-                        }
+                near_end[xs - batch_begin] = near.size();
+            }
+            // First the widened bounds, the sweep's test; and not an empty
+            // slot, x itself, a new slot that finds x itself, or one of the
+            // same set. With filters, the rows of the pairs that pass have
+            // their filters fetched here, to arrive while the others are
+            // tested: three random reads a pair, read only for these.
+            flags.resize(near.size());
+            std::size_t from = 0;
+            for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+                const auto x = static_cast<std::uint32_t>(xs);
+                const signed_bounds bx = widened[x];
+                const std::uint8_t x_side = side_[x];
+                for (std::size_t i = from; i < near_end[xs - batch_begin]; ++i) {
+                    const std::uint32_t y = near[i];
+                    const signed_bounds& by = widened[y];
+                    const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
+                                         (bx.v[1] <= -by.v[3]);
+                    const bool other = (y != x) & !((y >= first_new) & (y < x)) & (order[y] != no_row) &
+                                       (self_ || side_[y] != x_side);
+                    flags[i] = (overlap & other) ? 1 : 0;
+                    if (filtered && flags[i] != 0) {
+                        fetch_filters(input, order[y]);
                     }
                 }
+                from = near_end[xs - batch_begin];
             }
-            near_end[xs - batch_begin] = near.size();
-        }
-        std::size_t from = 0;
-        for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
-            const auto x = static_cast<std::uint32_t>(xs);
-            // The widened bounds, the sweep's test; and not an empty slot, x
-            // itself, a new slot that finds x itself, or one of the same set.
-            // Each pair is put in the caller's order, as the sweep puts its
-            // candidates (flush_candidates).
-            const std::size_t at = kept_.pairs.size();
-            kept_.pairs.resize(at + (near_end[xs - batch_begin] - from));
-            pair_index* const out = kept_.pairs.data() + at;
-            std::size_t found = 0;
-            const signed_bounds bx = widened[x];
-            const std::uint32_t x_row = order[x];
-            const std::uint8_t x_side = side_[x];
-            const filter_values x_filters = filtered ? filter_of(input, x_row) : filter_values{};
-            for (std::size_t i = from; i < near_end[xs - batch_begin]; ++i) {
-                const std::uint32_t y = near[i];
-                const signed_bounds& by = widened[y];
-                const std::uint32_t y_row = order[y];
-                const bool overlap = (by.v[0] <= -bx.v[2]) & (bx.v[0] <= -by.v[2]) & (by.v[1] <= -bx.v[3]) &
-                                     (bx.v[1] <= -by.v[3]);
-                const bool other = (y != x) & !((y >= first_new) & (y < x)) & (y_row != no_row) &
-                                   (self_ | (side_[y] != x_side));
-                // The filters, as the sweep drops a filtered pair before it keeps it.
-                const bool passes = !filtered || (y_row != no_row && filters_pass(x_filters, filter_of(input, y_row)) != 0);
-                const bool swap = self_ ? x_row > y_row : x_row >= offset;
-                out[found] = swap ? pair_index{y, x} : pair_index{x, y};
-                found += (overlap & other & passes) ? 1u : 0u;
+            // Then the filters, as the sweep drops a filtered pair before it
+            // keeps it. Each pair is put in the caller's order, as the sweep
+            // puts its candidates (flush_candidates).
+            from = 0;
+            for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+                const auto x = static_cast<std::uint32_t>(xs);
+                const std::size_t at = found_pairs.size();
+                found_pairs.resize(at + (near_end[xs - batch_begin] - from));
+                pair_index* const out = found_pairs.data() + at;
+                std::size_t found = 0;
+                const std::uint32_t x_row = order[x];
+                const filter_values x_filters = filtered ? filter_of(input, x_row) : filter_values{};
+                for (std::size_t i = from; i < near_end[xs - batch_begin]; ++i) {
+                    const std::uint32_t y = near[i];
+                    const std::uint32_t y_row = order[y];
+                    const bool candidate = flags[i] != 0;
+                    const bool passes =
+                        !filtered || !candidate || filters_pass(x_filters, filter_of(input, y_row)) != 0;
+                    const bool swap = self_ ? x_row > y_row : x_row >= offset;
+                    out[found] = swap ? pair_index{y, x} : pair_index{x, y};
+                    found += (candidate & passes) ? 1u : 0u;
+                }
+                found_pairs.resize(at + found);
+                from = near_end[xs - batch_begin];
             }
-            kept_.pairs.resize(at + found);
-            from = near_end[xs - batch_begin];
         }
+    });
+    for (std::size_t unit = 0; unit < units; ++unit) {
+        kept_.pairs.insert(kept_.pairs.end(), kept_.unit_found[unit].begin(), kept_.unit_found[unit].end());
     }
 }
 
@@ -469,6 +528,9 @@ void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
     const std::uint8_t* const moved = kept_.row_moved.data();
     if (any_moved) {
         for (const tagged_pair& p : kept_.by_caller) {
+            if (kept_pairs::is_gap(p)) {
+                continue;
+            }
             const std::uint32_t la = p.a;
             const std::uint32_t lb = p.b + b_last;
             if ((moved[la] | moved[lb]) == 0 || now_of[la] == no_row || now_of[lb] == no_row) {
@@ -492,93 +554,6 @@ void pair_search::sort_moved_pairs(std::size_t last_a_count, bool any_moved) {
     kept_.remap_pending = true;
     kept_.remap_any_moved = any_moved;
     kept_.remap_last_a = last_a_count;
-}
-
-void pair_search::answer_by_id() {
-    // One pass over the kept pairs in the last call's rows: each is mapped
-    // to this call's rows (dropped for good when a row is gone, left to
-    // moved_pairs when a row moved), the sorted moved and new pairs merged
-    // in; the result is by_caller for the next call, and the pairs the method
-    // called colliding, read on the way, are the answer.
-    const auto start = clock_type::now();
-    const std::uint32_t b_last = self_ ? 0u : static_cast<std::uint32_t>(kept_.remap_last_a);
-    const std::uint32_t b_now = self_ ? 0u : static_cast<std::uint32_t>(a_count_);
-    const bool any_moved = kept_.remap_any_moved;
-    const std::uint32_t* const now_of = now_of_last_.data();
-    const std::uint8_t* const moved = kept_.row_moved.data();
-    const std::uint64_t* const verdicts = kept_.verdicts.data();
-    const std::size_t most = kept_.by_caller.size() + kept_.moved_pairs.size();
-    std::vector<tagged_pair>& next = kept_.by_caller_spare;
-    next.resize(most);
-    // The answer holds at most the pairs the test called colliding (those of
-    // gone rows are not taken): sized for them and one more place, where
-    // every pair after the last colliding one is written, it grows by a few
-    // places a call, where sizing it for every kept pair filled the growth
-    // with zeros on each call.
-    std::size_t colliding = 0;
-    for (std::size_t i = 0; i < used_parts_; ++i) {
-        colliding += parts_[i].keep.colliding;
-    }
-    pairs_.resize(colliding + 1);
-    kept_.dropped.resize((kept_.pairs.size() + 63) / 64, 0);
-    std::uint64_t* const dropped = kept_.dropped.data();
-    tagged_pair* const into = next.data();
-    pair_index* const out = pairs_.data();
-    std::size_t written = 0;
-    std::size_t found = 0;
-    // Each pair is written where the next colliding one goes, and counted
-    // if it collides: no branch on the verdicts.
-    const auto take = [&](const tagged_pair& p) {
-        into[written++] = p;
-        out[std::min(found, colliding)] = pair_index{p.a, p.b};
-        found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
-    };
-    const tagged_pair* side = kept_.moved_pairs.data();
-    const tagged_pair* const side_end = side + kept_.moved_pairs.size();
-    const tagged_pair* const kept = kept_.by_caller.data();
-    const std::size_t kept_count = kept_.by_caller.size();
-    constexpr std::size_t ahead = 32;
-    for (std::size_t j = 0; j < kept_count; ++j) {
-        const tagged_pair& p = kept[j];
-        if (j + ahead < kept_count) {
-            // The second rows and the verdicts are in no order: fetched ahead, they arrive in parallel.
-            __builtin_prefetch(now_of + kept[j + ahead].b + b_last);
-            __builtin_prefetch(verdicts + kept[j + ahead].tag / 64);
-        }
-        const std::uint32_t a = now_of[p.a];
-        const std::uint32_t b = now_of[p.b + b_last];
-        if ((a == no_row) | (b == no_row)) {
-            // A gone row's pair: dropped for good, and never answers again.
-            dropped[p.tag / 64] |= std::uint64_t{1} << (p.tag % 64);
-            continue;
-        }
-        if (any_moved && (moved[p.a] | moved[p.b + b_last]) != 0) {
-            continue;  // in moved_pairs
-        }
-        const tagged_pair mapped{a, b - b_now, p.tag};
-        if (side != side_end) {
-            const std::uint64_t key = order_key(mapped);
-            while (side != side_end && order_key(*side) < key) {
-                take(*side++);
-            }
-        }
-        take(mapped);
-    }
-    while (side != side_end) {
-        take(*side++);
-    }
-    if (found > colliding) {
-        throw std::logic_error("obbsat: the answer from kept candidates carried over found " + std::to_string(found) +
-                               " colliding pairs where the test counted " + std::to_string(colliding));
-    }
-    next.resize(written);
-    kept_.by_caller.swap(next);
-    pairs_.resize(found);
-    kept_.remap_pending = false;
-    kept_.answer_parts = 0;  // by_caller changed: the shares of an answer are marked anew
-    stats_.pairs = found;
-    stats_.kept_candidates = written;
-    stats_.output_seconds += seconds_since(start);
 }
 
 }  // namespace obbsat::detail

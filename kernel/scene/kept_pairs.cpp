@@ -109,7 +109,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
             ++kept_.calls;
             stats_.reused_order = true;
             stats_.reused_candidates = true;
-            stats_.kept_candidates = kept_.by_caller.size();
+            stats_.kept_candidates = kept_.by_caller.size() - kept_.gap_entries;
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
@@ -329,6 +329,8 @@ void pair_search::keep_candidates(std::size_t parts) {
         parts_[i].keep.tagged.clear();
     }
     stats_.kept_candidates = kept_.pairs.size();
+    kept_.gaps.clear();
+    kept_.gap_entries = 0;
     kept_.answer_parts = 0;
     kept_.dropped.clear();
     stats_.output_seconds += seconds_since(start);

@@ -4,6 +4,7 @@
 // are in kept_pairs.cpp and kept_answer.cpp. Internal to the library.
 #pragma once
 
+#include "scene/id_rows.hpp"
 #include "sort/few_pairs_sort.hpp"
 #include "sort/pair_sort.hpp"
 #include "support/scratch_vector.hpp"
@@ -13,6 +14,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace obbsat::detail {
@@ -91,8 +93,26 @@ struct kept_pairs {
     /// vector (the query's in_lo_x... then hold the widened bounds).
     scratch_vector<signed_bounds> now;
     std::vector<pair_index> pairs;         ///< in the query's order, as the kernel takes them
-    std::vector<tagged_pair> by_caller;    ///< (a, b) in the caller's indices, sorted; tag: index into pairs
-    std::vector<std::uint64_t> verdicts;   ///< bit i % 64 of word i / 64: the verdict on pairs[i]
+    /// (a, b) in the caller's indices, sorted; tag: index into pairs. After
+    /// a call whose rows changed on several threads (kept_carry.cpp) it may
+    /// hold gap entries (is_gap), in the runs listed in `gaps`, which every
+    /// reader skips; they are out of order.
+    std::vector<tagged_pair> by_caller;
+    /// Bit i % 64 of word i / 64: the verdict on pairs[i]; one more word, always
+    /// zero, is the verdict of gap entries (gap_pair), so that reading the
+    /// answer takes none of them with no test of its own.
+    std::vector<std::uint64_t> verdicts;
+    /// The runs [begin, end) of by_caller that hold gap entries, in order, and their entries in all.
+    std::vector<std::pair<std::size_t, std::size_t>> gaps;
+    std::size_t gap_entries = 0;
+    /// The gap entries of by_caller before `position`.
+    std::size_t gap_entries_before(std::size_t position) const;
+    /// A gap entry of by_caller while `pair_count` pairs are kept: rows no_row,
+    /// tag the first pair of the always-zero word of verdicts.
+    static tagged_pair gap_pair(std::size_t pair_count) {
+        return tagged_pair{no_row, no_row, static_cast<std::uint32_t>(64 * ((pair_count + 63) / 64))};
+    }
+    static bool is_gap(const tagged_pair& p) { return p.a == no_row; }
     /// For share s > 0 of an answer in answer_parts shares (share_of over
     /// by_caller), words [(s - 1) W, s W) with W the words of verdicts: bit i
     /// set iff pairs[i] is in share s. The test counts each share's colliding
@@ -123,7 +143,11 @@ struct kept_pairs {
     std::vector<std::uint64_t> added_entries;  ///< key << 32 | slot
     std::vector<std::uint64_t> added_spare;    ///< added_entries' next contents while they are merged
     std::vector<std::uint32_t> added_begin;    ///< added_begin[s]: the first of added_entries in strip s
-    std::vector<std::uint32_t> near;           ///< the slots within reach of one new slot, before their test
+    /// Each unit's slots within reach of a batch of new slots, before their
+    /// test, and the new candidates it found (kept_changes.cpp).
+    std::vector<std::vector<std::uint32_t>> unit_near;
+    std::vector<std::vector<pair_index>> unit_found;
+    std::vector<std::vector<std::uint8_t>> unit_flags;  ///< of each slot within reach, whether its bounds meet
     /// Rows of the last call whose place in the order of rows changed
     /// against the others (kept_changes.cpp): their pairs are sorted apart.
     std::vector<std::uint8_t> row_moved;
@@ -135,6 +159,10 @@ struct kept_pairs {
     scratch_vector<signed_bounds> widened;
     std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
+    /// Each unit's share of the answer while by_caller is carried on several threads (kept_carry.cpp).
+    std::vector<std::vector<pair_index>> unit_answers;
+    /// Each unit's tags of kept pairs of gone rows, marked in `dropped` once the units have ended.
+    std::vector<scratch_vector<std::uint32_t>> unit_gone;
     few_pairs_sort_scratch moved_order;        ///< working memory of moved_pairs' sort
     /// Set while by_caller is in the last call's rows, to be carried to this
     /// call's as the answer is read (pair_search::answer_by_id).

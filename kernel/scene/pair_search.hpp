@@ -296,7 +296,8 @@ private:
     /// The kept pairs of rows that changed places against the others (kept_.row_moved; `any_moved`: there
     /// are some), mapped to this call's rows through now_of_last_, sorted with the new ones (moved_pairs).
     void sort_moved_pairs(std::size_t last_a_count, bool any_moved);
-    /// The answer of a call whose rows changed, read while by_caller is carried to this call's rows.
+    /// The answer of a call whose rows changed, read while by_caller is carried to this call's rows,
+    /// in units for the pool: kept_carry.cpp.
     void answer_by_id();
 
     collide_options options_;

@@ -1,0 +1,232 @@
+// pair_finder's frames whose rows come and go by id, carried over in units
+// (kernel/scene/kept_carry.cpp) and with the new rows' candidates found in
+// units (kept_changes.cpp): on one to three threads and on the caller's
+// executor, every frame equals a fresh find_pairs and every finder keeps the
+// same candidates, through spawn frames, frames with no change (the answer
+// read in shares past the gaps) and a swap-remove (pairs of moved rows sorted
+// apart past the gaps). Inside the engine: the gaps the units leave in the
+// kept list are listed and skipped, the rest of the list stays sorted, and
+// gaps do not pile up from frame to frame.
+#include "scene/pair_search.hpp"
+
+#include <obbsat/collide.hpp>
+#include <obbsat/executor.hpp>
+#include <obbsat/find_pairs.hpp>
+#include <obbsat/method.hpp>
+#include <obbsat/pose_scene.hpp>
+#include <obbsat/scene.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace obbsat::detail {
+
+struct pair_search_test_access {
+    static const kept_pairs& kept(const pair_search& search) { return search.kept_; }
+};
+
+}  // namespace obbsat::detail
+
+namespace {
+
+using obbsat::collide_options;
+using obbsat::pair_index;
+using obbsat::rect_pose;
+
+bool same_pairs(const std::vector<pair_index>& x, const std::vector<pair_index>& y) {
+    return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(), [](const pair_index& p, const pair_index& q) {
+               return p.a == q.a && p.b == q.b;
+           });
+}
+
+collide_options options_for(unsigned threads, const obbsat::executor* given = nullptr) {
+    collide_options o;
+    o.test = obbsat::method::exact;
+    o.threads = threads;
+    o.executor = given;
+    return o;
+}
+
+/// Every item a range of its own, run in reverse order before enqueue returns.
+void* enqueue_reversed(obbsat::executor_task task, std::size_t count, std::size_t, void* task_context, void* user) {
+    for (std::size_t i = count; i-- > 0;) {
+        task(i, i + 1, task_context);
+        static_cast<std::atomic<std::size_t>*>(user)->fetch_add(1);
+    }
+    return nullptr;
+}
+void finish_nothing(void*, void*) {}
+
+/// Boxes with ids that drift, and a pool of boxes of the same scene to spawn from.
+struct spawning_world {
+    std::vector<rect_pose> boxes;
+    std::vector<std::uint64_t> ids;
+    std::vector<rect_pose> pool;
+    std::uint64_t next = 0;
+    obbsat::seeded_random random;
+
+    spawning_world(std::size_t count, std::uint64_t seed) : random(seed) {
+        obbsat::pose_scene_spec spec;
+        spec.boxes = 2 * count;
+        spec.seed = seed;
+        spec.sizes = obbsat::scene_sizes::uniform;
+        pool = obbsat::make_pose_scene(spec);
+        while (boxes.size() < count) {
+            spawn();
+        }
+    }
+    void spawn() {
+        boxes.push_back(pool[next % pool.size()]);
+        ids.push_back(next++);
+    }
+    void drift() {
+        for (rect_pose& p : boxes) {
+            p.center.x += random.uniform(-0.002f, 0.002f);
+            p.center.y += random.uniform(-0.002f, 0.002f);
+        }
+    }
+    /// A spawn frame: drift, `share` of the rows erased at random places and as many appended.
+    void spawn_frame(double share) {
+        drift();
+        const auto churn = static_cast<std::size_t>(share * static_cast<double>(boxes.size()));
+        for (std::size_t c = 0; c < churn; ++c) {
+            const auto at = static_cast<std::ptrdiff_t>(random.below(boxes.size()));
+            boxes.erase(boxes.begin() + at);
+            ids.erase(ids.begin() + at);
+        }
+        for (std::size_t c = 0; c < churn; ++c) {
+            spawn();
+        }
+    }
+    /// The last row moves into the hole of row `at`: it changes places against the others.
+    void swap_remove(std::size_t at) {
+        boxes[at] = boxes.back();
+        ids[at] = ids.back();
+        boxes.pop_back();
+        ids.pop_back();
+    }
+};
+
+/// What happens before frame f (frames 0 and 1 make the finders keep candidates).
+enum class change { none, spawn, swap_remove_and_spawn };
+const std::vector<change> plan = {change::none,  change::none,  change::spawn, change::spawn,
+                                  change::none,  change::spawn, change::swap_remove_and_spawn,
+                                  change::spawn, change::none,  change::spawn};
+
+void apply(spawning_world& w, change c) {
+    if (c == change::swap_remove_and_spawn) {
+        w.swap_remove(w.boxes.size() / 3);
+    }
+    if (c == change::none) {
+        w.drift();
+    } else {
+        w.spawn_frame(0.01);
+    }
+}
+
+TEST(kept_carry, spawn_frames_equal_fresh_queries_and_keep_the_same_candidates_on_1_to_3_threads_and_an_executor) {
+    // Enough boxes for three shares of work.
+    spawning_world w(60000, 21);
+    std::atomic<std::size_t> executor_ranges{0};
+    const obbsat::executor reversed{&enqueue_reversed, &finish_nothing, &executor_ranges};
+    struct finder_of {
+        std::string name;
+        obbsat::pair_finder finder;
+    };
+    std::vector<finder_of> finders;
+    for (unsigned threads = 1; threads <= 3; ++threads) {
+        finders.push_back({std::to_string(threads) + " threads", obbsat::pair_finder(options_for(threads))});
+    }
+    finders.push_back({"executor, 2 units a step", obbsat::pair_finder(options_for(2, &reversed))});
+    finders.push_back({"executor, 3 units a step", obbsat::pair_finder(options_for(3, &reversed))});
+    std::size_t changed_frames = 0;
+    std::size_t reused = 0;
+    for (std::size_t f = 0; f < plan.size(); ++f) {
+        apply(w, plan[f]);
+        const obbsat::box_view view(w.boxes);
+        const std::vector<pair_index> want = obbsat::find_pairs(view, options_for(1));
+        ASSERT_FALSE(want.empty());
+        for (finder_of& named : finders) {
+            const std::vector<pair_index>& got = named.finder.find(view.with_ids(w.ids));
+            ASSERT_TRUE(same_pairs(got, want)) << named.name << ", frame " << f << ": " << got.size()
+                                               << " pairs, want " << want.size();
+            // The candidates kept for the next frame do not depend on the threads either.
+            EXPECT_EQ(named.finder.stats().kept_candidates, finders[0].finder.stats().kept_candidates)
+                << named.name << ", frame " << f;
+            if (plan[f] != change::none) {
+                ++changed_frames;
+                reused += named.finder.stats().reused_candidates ? 1u : 0u;
+            }
+        }
+    }
+    // The frames of rows that came and went are answered from kept candidates, not by a full query.
+    EXPECT_GE(reused + finders.size(), changed_frames);
+    EXPECT_GT(executor_ranges.load(), 0u);
+}
+
+/// The engine of a pair_finder over `w`'s frames, inside: each call as pair_finder::find makes it.
+const std::vector<pair_index>& find_by_id(obbsat::detail::pair_search& search, const spawning_world& w) {
+    const obbsat::box_view view(w.boxes);
+    return search.collect(search.bound_doubles(obbsat::detail::input_of(view.with_ids(w.ids), nullptr, true)));
+}
+
+bool key_less(const obbsat::detail::tagged_pair& x, const obbsat::detail::tagged_pair& y) {
+    return x.a < y.a || (x.a == y.a && x.b < y.b);
+}
+
+TEST(kept_carry, gaps_the_units_leave_are_listed_skipped_and_do_not_pile_up) {
+    // Spawn frames, and now and then a swap-remove: a row changes places, and its pairs are sorted apart.
+    spawning_world w(60000, 22);
+    obbsat::detail::pair_search search(options_for(2));
+    std::size_t frames_with_gaps = 0;
+    for (std::size_t f = 0; f < 14; ++f) {
+        if (f >= 2) {
+            if (f % 4 == 0) {
+                w.swap_remove(w.random.below(w.boxes.size() / 2));
+            }
+            w.spawn_frame(0.01);
+        }
+        const std::vector<pair_index>& got = find_by_id(search, w);
+        ASSERT_TRUE(same_pairs(got, obbsat::find_pairs(obbsat::box_view(w.boxes), options_for(1)))) << "frame " << f;
+        const obbsat::detail::kept_pairs& kept = obbsat::detail::pair_search_test_access::kept(search);
+        // Gap entries lie in the listed runs and nowhere else; the others are sorted.
+        std::size_t gaps = 0;
+        const obbsat::detail::tagged_pair* last = nullptr;
+        for (std::size_t j = 0; j < kept.by_caller.size(); ++j) {
+            const obbsat::detail::tagged_pair& p = kept.by_caller[j];
+            const bool listed = std::any_of(kept.gaps.begin(), kept.gaps.end(),
+                                            [&](const auto& run) { return run.first <= j && j < run.second; });
+            ASSERT_EQ(obbsat::detail::kept_pairs::is_gap(p), listed) << "frame " << f << ", entry " << j;
+            if (listed) {
+                ++gaps;
+                continue;
+            }
+            if (last != nullptr) {
+                ASSERT_TRUE(key_less(*last, p)) << "frame " << f << ", entry " << j;
+            }
+            last = &p;
+        }
+        std::size_t in_runs = 0;
+        for (const auto& run : kept.gaps) {
+            in_runs += run.second - run.first;
+        }
+        EXPECT_EQ(gaps, kept.gap_entries);
+        EXPECT_EQ(in_runs, kept.gap_entries);
+        EXPECT_EQ(search.stats().kept_candidates, kept.by_caller.size() - kept.gap_entries) << "frame " << f;
+        frames_with_gaps += kept.gap_entries > 0 ? 1u : 0u;
+        // A frame drops the pairs of 1% of the rows, some 2% of the kept
+        // pairs: its gaps hold about as many. Gaps kept from frame to frame
+        // would pass a twentieth after three frames.
+        EXPECT_LE(20 * kept.gap_entries, kept.by_caller.size()) << "frame " << f;
+    }
+    // The units' gaps were made, so the kept list was carried in units.
+    EXPECT_GT(frames_with_gaps, 4u);
+}
+
+}  // namespace

@@ -3,6 +3,7 @@
 // the backend's double kernel (lanes bit for bit the double references,
 // obbsat/ref/contact.hpp and distance.hpp; the references themselves on the
 // scalar backend), the pairs split over threads.
+#include "batch/contact_acceptance.hpp"
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "support/fetch_ahead.hpp"
@@ -76,6 +77,9 @@ void require_indices(backend ran, std::size_t rows, const pair_index* pairs, std
 }
 
 void require_accepted(const pose_records64& poses) {
+    if (detail::poses_all_accepted<pose_records64::record_doubles>(poses.data(), poses.size())) {
+        return;
+    }
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const rect_pose64 p = poses[i];
         if (!ref::pose_accepted(p)) {

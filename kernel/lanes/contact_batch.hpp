@@ -95,6 +95,64 @@ OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, c
     }
 }
 
+/// Writes a whole vector of float contacts without points (count 0, every
+/// point field zero) from their normal and depth at out[0 .. width): one 4x4
+/// transpose gives each contact's first 16 bytes, (nx, ny, depth, 0), in a
+/// 128-bit block, and every 64 (AVX-512) or 32 (AVX2) bytes of the answer is
+/// then one register of those blocks and zeros, stored whole. Every contact
+/// of a scene's pairs is first written so, and this is a third of the
+/// stores, and of the shuffles, of the general transposes of store_contacts.
+template <class Arch>
+OBBSAT_LANE_INLINE void store_contacts_without_points(const lanes<Arch>& nx, const lanes<Arch>& ny,
+                                                      const lanes<Arch>& depth, contact* out) {
+    using transpose = record_transpose<Arch>;
+    constexpr std::size_t width = lanes<Arch>::size;
+    float* to = reinterpret_cast<float*>(out);
+    const typename transpose::reg firsts[4] = {nx, ny, depth, lanes<Arch>(0.0f)};
+    lanes<Arch> block[4];  // block j of block[k]: contact 4j + k's first 16 bytes
+    transpose::transpose4(firsts, block);
+    // Contacts 4j to 4j + 3 are 48 floats: three AVX-512 registers, the
+    // nonzero blocks at quads 0 and 3, 6, 9; or six AVX2 ones.
+    if constexpr (width == 16) {
+#ifdef __AVX512F__
+        auto put = [&](auto j) {
+            constexpr int at = static_cast<int>(decltype(j)::value);
+            constexpr int twice = at | (at << 2) | (at << 4) | (at << 6);
+            _mm512_storeu_ps(to + 48 * at, _mm512_maskz_shuffle_f32x4(0xf00f, block[0], block[1], twice));
+            _mm512_storeu_ps(to + 48 * at + 16, _mm512_maskz_shuffle_f32x4(0x0f00, block[2], block[2], twice));
+            _mm512_storeu_ps(to + 48 * at + 32, _mm512_maskz_shuffle_f32x4(0x00f0, block[3], block[3], twice));
+        };
+        put(std::integral_constant<unsigned, 0>{});
+        put(std::integral_constant<unsigned, 1>{});
+        put(std::integral_constant<unsigned, 2>{});
+        put(std::integral_constant<unsigned, 3>{});
+#endif
+    } else if constexpr (width == 8) {
+#ifdef __AVX__
+        const __m256 zero = _mm256_setzero_ps();
+        auto put = [&](auto j) {
+            constexpr int at = static_cast<int>(decltype(j)::value);
+            float* four = to + 48 * at;
+            _mm256_storeu_ps(four, _mm256_permute2f128_ps(block[0], block[0], 0x80 | at));
+            _mm256_storeu_ps(four + 8, _mm256_permute2f128_ps(block[1], block[1], 0x08 | (at << 4)));
+            _mm256_storeu_ps(four + 16, zero);
+            _mm256_storeu_ps(four + 24, _mm256_permute2f128_ps(block[2], block[2], 0x80 | at));
+            _mm256_storeu_ps(four + 32, _mm256_permute2f128_ps(block[3], block[3], 0x08 | (at << 4)));
+            _mm256_storeu_ps(four + 40, zero);
+        };
+        put(std::integral_constant<unsigned, 0>{});
+        put(std::integral_constant<unsigned, 1>{});
+#endif
+    } else {
+        const __m128 zero = _mm_setzero_ps();
+        for (std::size_t k = 0; k < 4; ++k) {
+            _mm_storeu_ps(to + 12 * k, block[k]);
+            _mm_storeu_ps(to + 12 * k + 4, zero);
+            _mm_storeu_ps(to + 12 * k + 8, zero);
+        }
+    }
+}
+
 /// Writes lane i of `c` as out[i] for the first `valid` lanes.
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch, Real>& c, contact_of_real<Real>* out,
@@ -205,6 +263,42 @@ void contact_batch(const Real* a, std::size_t a_stride, const Real* b, std::size
             });
 }
 
+/// Appends pair i + lane and its place i + lane, for every lane set in
+/// `bits` (all below the vector's valid lanes), to near[count) and
+/// near_at[count); returns the new count. Either array may be written up to
+/// 16 entries past it. The pairs are pairs[i + lane], or (i + lane, i + lane)
+/// without a list. AVX-512 compresses the lanes in registers, reading only
+/// the pairs of set lanes (masked loads never fault); other ISAs, and a
+/// stream, write every valid lane and advance by its bit, without a branch:
+/// a loop over the set bits mispredicted its exit on most vectors.
+template <std::size_t Width>
+OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, const pair_index* pairs, std::size_t i,
+                                                 std::size_t valid, pair_index* near, std::uint32_t* near_at,
+                                                 std::size_t count) {
+#ifdef __AVX512F__
+    if (pairs != nullptr) {
+        static_assert(sizeof(pair_index) == 8, "a pair is one 64-bit word");
+        const __m512i places = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(i)),
+                                                _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+        _mm512_storeu_si512(near_at + count, _mm512_maskz_compress_epi32(static_cast<__mmask16>(bits), places));
+        for (std::size_t eighth = 0; eighth < Width; eighth += 8) {
+            const auto lanes_here = static_cast<__mmask8>((bits >> eighth) & 0xffu);
+            const __m512i eight = _mm512_maskz_loadu_epi64(lanes_here, pairs + i + eighth);
+            _mm512_storeu_si512(near + count, _mm512_maskz_compress_epi64(lanes_here, eight));
+            count += static_cast<std::size_t>(__builtin_popcount(lanes_here));
+        }
+        return count;
+    }
+#endif
+    for (std::size_t lane = 0; lane < valid; ++lane) {
+        const auto at = static_cast<std::uint32_t>(i + lane);
+        near[count] = pairs != nullptr ? pairs[at] : pair_index{at, at};
+        near_at[count] = at;
+        count += (bits >> lane) & 1u;
+    }
+    return count;
+}
+
 /// out[i] = the contact of poses a(i) and b(i) (see contact_fn, contact64_fn), in blocks
 /// of pairs: first every pair's normal and depth without points (pose steps
 /// P1 to P3 and step 4), then, packed into whole vectors, only the pairs
@@ -228,8 +322,9 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     // of contacts) took 1.9 ms against 1.3 until the lines 512 contacts ahead
     // were asked for, for writing.
     constexpr std::size_t written_ahead = 512;
-    pair_index near[block];
-    std::uint32_t near_at[block];
+    // append_near_lanes may write 16 entries past the last.
+    pair_index near[block + 16];
+    std::uint32_t near_at[block + 16];
     for (std::size_t begin = 0; begin < count; begin += block) {
         const std::size_t n = count - begin < block ? count - begin : block;
         // A stream's block starts at its own rows; a list's at its own pairs.
@@ -248,18 +343,21 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
                         }
                     }
                     const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
-                    store_contacts<Arch, Real>(fields_of<Arch, Real>(contact_without_points<Arch, Real>(
-                                                   p.flip, p.ux, p.uy, p.sa, p.sb)),
-                                               block_out + i, valid);
-                    for (unsigned bits = lane_bits(may_have_points<Arch, Real>(p, margin)); bits != 0;
-                         bits &= bits - 1) {
-                        const std::size_t lane = static_cast<std::size_t>(__builtin_ctz(bits));
-                        if (lane < valid) {
-                            const auto at = static_cast<std::uint32_t>(i + lane);
-                            near[near_count] = block_pairs != nullptr ? block_pairs[at] : pair_index{at, at};
-                            near_at[near_count++] = at;
+                    const contact_out_lanes<Arch, Real> apart =
+                        contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
+                    if constexpr (std::is_same<Real, float>::value) {
+                        if (valid == width) {
+                            store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);
+                        } else {
+                            store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                         }
+                    } else {
+                        store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                     }
+                    const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
+                    near_count = append_near_lanes<width>(lane_bits(may_have_points<Arch, Real>(p, margin)) &
+                                                              valid_lanes,
+                                                          block_pairs, i, valid, near, near_at, near_count);
                 });
         for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,

@@ -299,6 +299,71 @@ OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, const pair_index
     return count;
 }
 
+/// What pose_reference_of chose for the pairs within the margin, kept in
+/// order beside them, so that the contacts of those pairs need not choose
+/// again: with AVX-512, which compresses the kept lanes in registers, that
+/// choice (two square roots, two divisions and method local's axes) was a
+/// third of their cost. Other ISAs have no compress, and choose again
+/// (holds false, nothing kept).
+template <class Arch, class Real, std::size_t Block>
+struct kept_references {
+#ifdef __AVX512F__
+    static constexpr bool holds = std::is_base_of<xsimd::avx512f, Arch>::value;
+#else
+    static constexpr bool holds = false;
+#endif
+    using batch = real_lanes<Arch, Real>;
+    static constexpr std::size_t width = batch::size;
+    static constexpr std::size_t fields = holds ? 5 : 1;
+    static constexpr std::size_t rows = holds ? Block + width : 1;
+    /// Field f of kept pair k at field[f][k]: r + 4 where flip (else r), the
+    /// separation of the reference box's best face, the incident box's
+    /// reciprocal length, ux, uy: all that steps 4 to 8 read of the choice
+    /// for a pair within the margin, where sa and sb are both at most the
+    /// margin and are otherwise read only as the reference box's. Every keep
+    /// writes a whole vector from `count`, zeros past the kept lanes, so a
+    /// vector read from the last kept pair reads only written reals.
+    alignas(64) Real field[fields][rows];
+
+    /// Appends the lanes of `bits` of `p` from kept pair `count`.
+    OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_reference_lanes<Arch, Real>& p, std::size_t count) {
+        if constexpr (holds) {
+#ifdef __AVX512F__
+            const batch values[5] = {p.r + xsimd::select(p.flip, batch(Real(4)), batch(Real(0))),
+                                     xsimd::select(p.flip, p.sb, p.sa), xsimd::select(p.flip, p.inv_a, p.inv_b),
+                                     p.ux, p.uy};
+            for (std::size_t f = 0; f < 5; ++f) {
+                if constexpr (std::is_same<Real, float>::value) {
+                    _mm512_storeu_ps(field[f] + count,
+                                     _mm512_maskz_compress_ps(static_cast<__mmask16>(bits), values[f]));
+                } else {
+                    _mm512_storeu_pd(field[f] + count,
+                                     _mm512_maskz_compress_pd(static_cast<__mmask8>(bits), values[f]));
+                }
+            }
+#endif
+        } else {
+            (void)bits, (void)p, (void)count;
+        }
+    }
+
+    /// The contacts of kept pairs k to k + width from their records' fields.
+    OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contacts_at(const batch* fa, const batch* fb, std::size_t k,
+                                                                 Real margin) const {
+        if constexpr (holds) {
+            auto load = [&](std::size_t f) { return batch::load_unaligned(field[f] + k); };
+            const batch code = load(0), separation = load(1), inv = load(2);
+            const auto flip = code >= batch(Real(4));
+            const batch r = code - xsimd::select(flip, batch(Real(4)), batch(Real(0)));
+            const pose_reference_lanes<Arch, Real> p{flip, r, separation, separation, inv, inv, load(3), load(4)};
+            return contact_pose_lanes_from<Arch, Real>(fa, fb, p, margin);
+        } else {
+            (void)k;
+            return contact_pose_lanes_of<Arch, Real>(fa, fb, margin);
+        }
+    }
+};
+
 /// out[i] = the contact of poses a(i) and b(i) (see contact_fn, contact64_fn), in blocks
 /// of pairs: first every pair's normal and depth without points (pose steps
 /// P1 to P3 and step 4), then, packed into whole vectors, only the pairs
@@ -325,6 +390,7 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     // append_near_lanes may write 16 entries past the last.
     pair_index near[block + 16];
     std::uint32_t near_at[block + 16];
+    kept_references<Arch, Real, block> kept;
     for (std::size_t begin = 0; begin < count; begin += block) {
         const std::size_t n = count - begin < block ? count - begin : block;
         // A stream's block starts at its own rows; a list's at its own pairs.
@@ -355,15 +421,15 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
                         store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                     }
                     const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
-                    near_count = append_near_lanes<width>(lane_bits(may_have_points<Arch, Real>(p, margin)) &
-                                                              valid_lanes,
-                                                          block_pairs, i, valid, near, near_at, near_count);
+                    const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
+                    kept.keep(near_lanes, p, near_count);
+                    near_count = append_near_lanes<width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
                 });
         for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,
             [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
                     store_contacts_to<Arch, Real>(
-                        fields_of<Arch, Real>(contact_pose_lanes_of<Arch, Real>(fa, fb, margin)),
+                        fields_of<Arch, Real>(kept.contacts_at(fa, fb, i, margin)),
                         [&](std::size_t lane) { return block_out + near_at[i + lane]; }, valid);
                 });
     }

@@ -138,20 +138,29 @@ void run_split(detail::distance_fn kernel, const float* a, std::size_t a_stride,
         a, a_stride, b, b_stride, pairs, count, out, options.threads);
 }
 
-/// Throws as require_pose_accepted for the first pose of `count` records
-/// `Stride` floats apart that contacts do not accept.
+/// Throws as require_pose_accepted for the first of `count` poses `Stride`
+/// floats apart (c and s at floats 4 and 5).
 template <std::size_t Stride>
-void require_poses_accepted(const float* records, std::size_t count) {
-    if (!detail::poses_all_accepted<Stride>(records, count)) {
-        for (std::size_t row = 0; row < count; ++row) {
-            const float* v = records + Stride * row;
-            require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, row);
-        }
+void require_each_pose_accepted(const float* records, std::size_t count) {
+    for (std::size_t row = 0; row < count; ++row) {
+        const float* v = records + Stride * row;
+        require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, row);
     }
 }
 
-void require_poses_accepted(const pose_records& poses) {
-    require_poses_accepted<pose_records::record_floats>(poses.data(), poses.size());
+/// As require_each_pose_accepted, in one branch-free pass when all are accepted.
+void require_rows_accepted(const rect_pose* poses, std::size_t count) {
+    const auto* rows = reinterpret_cast<const float*>(poses);
+    if (!detail::poses_all_accepted<pose_row_floats>(rows, count)) {
+        require_each_pose_accepted<pose_row_floats>(rows, count);
+    }
+}
+
+/// As require_each_pose_accepted for a store, checked in the lanes of `ran`.
+void require_poses_accepted(backend ran, const pose_records& poses) {
+    if (!detail::contact_kernels_for(ran).poses_accepted(poses.data(), poses.size())) {
+        require_each_pose_accepted<pose_records::record_floats>(poses.data(), poses.size());
+    }
 }
 
 void require_rects_accepted(const rect* rects, std::size_t count) {
@@ -174,7 +183,7 @@ backend contact_pairs(const pose_records& poses, const pair_index* pairs, std::s
     require_out_apart(out, count, pairs, count * sizeof(pair_index), "pairs");
     require_margin(options);
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(poses);
+    require_poses_accepted(ran, poses);
     require_indices(ran, poses.size(), pairs, count, "poses");
     const float* records = poses.data();
     run_split(pose_kernel_for_store(detail::contact_kernels_for(ran), poses.size() * sizeof(float) *
@@ -191,7 +200,7 @@ backend contact_pairs(const rect_pose* poses, std::size_t pose_count, const pair
     require_margin(options);
     const backend ran = resolve_backend(options.use);
     require_valid_poses(poses, pose_count);
-    require_poses_accepted<pose_row_floats>(reinterpret_cast<const float*>(poses), pose_count);
+    require_rows_accepted(poses, pose_count);
     require_indices(ran, pose_count, pairs, count, "poses");
     const auto* rows = reinterpret_cast<const float*>(poses);
     run_split(pose_kernel_for_store(detail::contact_kernels_for(ran), pose_count * sizeof(rect_pose)), rows,
@@ -212,8 +221,8 @@ backend contact_stream(const pose_records& a, const pose_records& b, contact* ou
     require_same_length(a.size(), b.size(), "poses");
     require_margin(options);
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(a);
-    require_poses_accepted(b);
+    require_poses_accepted(ran, a);
+    require_poses_accepted(ran, b);
     run_split(detail::contact_kernels_for(ran).poses, a.data(), pose_records::record_floats, b.data(),
               pose_records::record_floats, nullptr, a.size(), out, options);
     return ran;
@@ -292,7 +301,7 @@ backend distance_pairs(const pose_records& poses, const pair_index* pairs, std::
                        const distance_options& options) {
     require_distances_apart(out, count, pairs);
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(poses);
+    require_poses_accepted(ran, poses);
     require_indices(ran, poses.size(), pairs, count, "poses");
     const float* records = poses.data();
     run_split(detail::contact_kernels_for(ran).distance_poses, records, pose_records::record_floats, records,
@@ -311,8 +320,8 @@ backend distance_stream(const pose_records& a, const pose_records& b, closest_po
                         const distance_options& options) {
     require_same_length(a.size(), b.size(), "poses");
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(a);
-    require_poses_accepted(b);
+    require_poses_accepted(ran, a);
+    require_poses_accepted(ran, b);
     run_split(detail::contact_kernels_for(ran).distance_poses, a.data(), pose_records::record_floats, b.data(),
               pose_records::record_floats, nullptr, a.size(), out, options);
     return ran;

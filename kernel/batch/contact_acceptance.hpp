@@ -1,7 +1,7 @@
-// Whether a whole store of poses is accepted by contacts (ref::pose_accepted:
-// c·c + s·s a normal finite float, or double for the double stores), in one
-// pass the compiler turns into vector code, for the contact and distance
-// entry points of both real types (contact.cpp, contact64.cpp).
+// Whether every row of a caller's array of poses is accepted by contacts
+// (ref::pose_accepted: c·c + s·s a normal finite float), in one pass the
+// compiler turns into vector code. The stores' records are checked in the
+// backend's lanes instead (contact_acceptance_lanes.hpp).
 #pragma once
 
 #include <cstddef>
@@ -12,8 +12,7 @@ namespace obbsat::detail {
 /// Whether each of `count` records `Stride` reals apart (c and s at reals 4
 /// and 5, every value finite) has c·c + s·s a normal finite Real. One OR of
 /// two compares a pose and no branch: a fold of strict min and max picks
-/// would wait on each pick's latency and is not vectorized without
-/// fast-math; on 4K pairs over the float poses it took 7% of a contact call.
+/// would wait on each pick's latency and is not vectorized without fast-math.
 template <std::size_t Stride, class Real>
 bool poses_all_accepted(const Real* records, std::size_t count) {
     constexpr Real least = std::numeric_limits<Real>::min(), largest = std::numeric_limits<Real>::max();

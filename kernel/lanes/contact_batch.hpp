@@ -8,6 +8,7 @@
 #pragma once
 
 #include "dispatch/contact_kernel_table.hpp"
+#include "lanes/contact_acceptance_lanes.hpp"
 #include "lanes/contact_lanes.hpp"
 #include "lanes/distance_lanes.hpp"
 #include "lanes/record64_transpose.hpp"
@@ -473,7 +474,9 @@ constexpr contact_kernel_table contact_table_of() {
                                 contact_pose_batch<Arch, double, 6, pair_fetch::none>,
                                 contact_batch<Arch, double, 8, true>,
                                 distance_batch<Arch, double, 6, false>,
-                                distance_batch<Arch, double, 8, true>};
+                                distance_batch<Arch, double, 8, true>,
+                                pose_records_accepted<Arch, float>,
+                                pose_records_accepted<Arch, double>};
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "dispatch/contact_kernel_table.hpp"
 #include "lanes/contact_acceptance_lanes.hpp"
+#include "lanes/contact_compress_lanes.hpp"
 #include "lanes/contact_lanes.hpp"
 #include "lanes/distance_lanes.hpp"
 #include "lanes/record64_transpose.hpp"
@@ -268,29 +269,20 @@ void contact_batch(const Real* a, std::size_t a_stride, const Real* b, std::size
 /// `bits` (all below the vector's valid lanes), to near[count) and
 /// near_at[count); returns the new count. Either array may be written up to
 /// 16 entries past it. The pairs are pairs[i + lane], or (i + lane, i + lane)
-/// without a list. AVX-512 compresses the lanes in registers, reading only
-/// the pairs of set lanes (masked loads never fault); other ISAs, and a
-/// stream, write every valid lane and advance by its bit, without a branch:
-/// a loop over the set bits mispredicted its exit on most vectors.
-template <std::size_t Width>
+/// without a list. AVX-512 and AVX2 compress the lanes in registers
+/// (contact_compress_lanes.hpp), reading only the pairs of set lanes; SSE2,
+/// and a stream, write every valid lane and advance by its bit, without a
+/// branch: a loop over the set bits mispredicted its exit on most vectors.
+template <class Arch, std::size_t Width>
 OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, const pair_index* pairs, std::size_t i,
                                                  std::size_t valid, pair_index* near, std::uint32_t* near_at,
                                                  std::size_t count) {
-#ifdef __AVX512F__
-    if (pairs != nullptr) {
-        static_assert(sizeof(pair_index) == 8, "a pair is one 64-bit word");
-        const __m512i places = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(i)),
-                                                _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
-        _mm512_storeu_si512(near_at + count, _mm512_maskz_compress_epi32(static_cast<__mmask16>(bits), places));
-        for (std::size_t eighth = 0; eighth < Width; eighth += 8) {
-            const auto lanes_here = static_cast<__mmask8>((bits >> eighth) & 0xffu);
-            const __m512i eight = _mm512_maskz_loadu_epi64(lanes_here, pairs + i + eighth);
-            _mm512_storeu_si512(near + count, _mm512_maskz_compress_epi64(lanes_here, eight));
-            count += static_cast<std::size_t>(__builtin_popcount(lanes_here));
+    if constexpr (compresses_lanes<Arch>()) {
+        if (pairs != nullptr) {
+            store_compressed_places<Arch>(bits, static_cast<std::uint32_t>(i), near_at + count);
+            return count + store_compressed_pairs<Arch, Width>(bits, pairs + i, near + count);
         }
-        return count;
     }
-#endif
     for (std::size_t lane = 0; lane < valid; ++lane) {
         const auto at = static_cast<std::uint32_t>(i + lane);
         near[count] = pairs != nullptr ? pairs[at] : pair_index{at, at};
@@ -302,17 +294,13 @@ OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, const pair_index
 
 /// What pose_reference_of chose for the pairs within the margin, kept in
 /// order beside them, so that the contacts of those pairs need not choose
-/// again: with AVX-512, which compresses the kept lanes in registers, that
-/// choice (two square roots, two divisions and method local's axes) was a
-/// third of their cost. Other ISAs have no compress, and choose again
-/// (holds false, nothing kept).
+/// again: that choice (two square roots, two divisions and method local's
+/// axes) is a third of their cost, and AVX-512 and AVX2 compress the kept
+/// lanes in registers (contact_compress_lanes.hpp). SSE2 does not, and
+/// chooses again (holds false, nothing kept).
 template <class Arch, class Real, std::size_t Block>
 struct kept_references {
-#ifdef __AVX512F__
-    static constexpr bool holds = std::is_base_of<xsimd::avx512f, Arch>::value;
-#else
-    static constexpr bool holds = false;
-#endif
+    static constexpr bool holds = compresses_lanes<Arch>();
     using batch = real_lanes<Arch, Real>;
     static constexpr std::size_t width = batch::size;
     static constexpr std::size_t fields = holds ? 5 : 1;
@@ -322,27 +310,19 @@ struct kept_references {
     /// reciprocal length, ux, uy: all that steps 4 to 8 read of the choice
     /// for a pair within the margin, where sa and sb are both at most the
     /// margin and are otherwise read only as the reference box's. Every keep
-    /// writes a whole vector from `count`, zeros past the kept lanes, so a
-    /// vector read from the last kept pair reads only written reals.
+    /// writes a whole vector from `count`, so a vector read from the last
+    /// kept pair reads only written reals.
     alignas(64) Real field[fields][rows];
 
     /// Appends the lanes of `bits` of `p` from kept pair `count`.
     OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_reference_lanes<Arch, Real>& p, std::size_t count) {
         if constexpr (holds) {
-#ifdef __AVX512F__
             const batch values[5] = {p.r + xsimd::select(p.flip, batch(Real(4)), batch(Real(0))),
                                      xsimd::select(p.flip, p.sb, p.sa), xsimd::select(p.flip, p.inv_a, p.inv_b),
                                      p.ux, p.uy};
             for (std::size_t f = 0; f < 5; ++f) {
-                if constexpr (std::is_same<Real, float>::value) {
-                    _mm512_storeu_ps(field[f] + count,
-                                     _mm512_maskz_compress_ps(static_cast<__mmask16>(bits), values[f]));
-                } else {
-                    _mm512_storeu_pd(field[f] + count,
-                                     _mm512_maskz_compress_pd(static_cast<__mmask8>(bits), values[f]));
-                }
+                store_compressed<Arch, Real>(bits, values[f], field[f] + count);
             }
-#endif
         } else {
             (void)bits, (void)p, (void)count;
         }
@@ -387,7 +367,10 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     // arrive from memory: a batch larger than the caches (256K pairs, 12 MiB
     // of contacts) took 1.9 ms against 1.3 until the lines 512 contacts ahead
     // were asked for, for writing.
+    // An answer L2 holds (4K pairs: 192 KiB) is not asked for: there the
+    // twelve prefetches of a vector bring nothing.
     constexpr std::size_t written_ahead = 512;
+    const std::size_t written_until = count * sizeof(contact_type) > store_bytes_in_l2 ? count : 0;
     // append_near_lanes may write 16 entries past the last.
     pair_index near[block + 16];
     std::uint32_t near_at[block + 16];
@@ -403,7 +386,7 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
         for_each_vector_of_pairs<Arch, Real, Fields, Fetch>(
             block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
             [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
-                    if (begin + i + width + written_ahead <= count) {
+                    if (begin + i + width + written_ahead <= written_until) {
                         const char* line = reinterpret_cast<const char*>(block_out + i + written_ahead);
                         for (std::size_t k = 0; k < width * sizeof(contact_type); k += 64) {
                             __builtin_prefetch(line + k, 1, 3);
@@ -424,7 +407,7 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
                     const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
                     const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
                     kept.keep(near_lanes, p, near_count);
-                    near_count = append_near_lanes<width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
+                    near_count = append_near_lanes<Arch, width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
                 });
         for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,

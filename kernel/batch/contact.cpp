@@ -1,6 +1,7 @@
 // The contact and distance entry points (obbsat/contact.hpp): check the
 // input, resolve the backend once, split the pairs over threads, run the
 // backend's kernel on each part.
+#include "batch/contact_acceptance.hpp"
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "store/finite_check.hpp"
@@ -11,7 +12,6 @@
 #include <obbsat/error.hpp>
 #include <obbsat/ref/contact.hpp>
 
-#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -138,42 +138,29 @@ void run_split(detail::distance_fn kernel, const float* a, std::size_t a_stride,
         a, a_stride, b, b_stride, pairs, count, out, options.threads);
 }
 
-/// Throws as require_pose_accepted for the first pose of `count` records
-/// `stride` floats apart (c and s at floats 4 and 5) that contacts do not
-/// accept; one branch-free pass when all are accepted.
-void require_poses_accepted(const float* records, std::size_t stride, std::size_t count) {
-    // The least and the largest square (every value is finite already), in
-    // two independent chains of two poses each: one chain would wait on each
-    // min's latency.
-    auto square_at = [&](std::size_t row) {
-        const float c = records[stride * row + 4], s = records[stride * row + 5];
-        return (c * c) + (s * s);
-    };
-    float lo0 = FLT_MAX, lo1 = FLT_MAX, hi0 = FLT_MIN, hi1 = FLT_MIN;
-    std::size_t i = 0;
-    for (; i + 2 <= count; i += 2) {
-        const float q0 = square_at(i), q1 = square_at(i + 1);
-        lo0 = q0 < lo0 ? q0 : lo0;
-        hi0 = q0 > hi0 ? q0 : hi0;
-        lo1 = q1 < lo1 ? q1 : lo1;
-        hi1 = q1 > hi1 ? q1 : hi1;
-    }
-    if (i < count) {
-        const float q0 = square_at(i);
-        lo0 = q0 < lo0 ? q0 : lo0;
-        hi0 = q0 > hi0 ? q0 : hi0;
-    }
-    const bool all_accepted = lo0 >= FLT_MIN && lo1 >= FLT_MIN && hi0 <= FLT_MAX && hi1 <= FLT_MAX;
-    if (!all_accepted) {
-        for (std::size_t row = 0; row < count; ++row) {
-            const float* v = records + stride * row;
-            require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, row);
-        }
+/// Throws as require_pose_accepted for the first of `count` poses `Stride`
+/// floats apart (c and s at floats 4 and 5).
+template <std::size_t Stride>
+void require_each_pose_accepted(const float* records, std::size_t count) {
+    for (std::size_t row = 0; row < count; ++row) {
+        const float* v = records + Stride * row;
+        require_pose_accepted(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}, row);
     }
 }
 
-void require_poses_accepted(const pose_records& poses) {
-    require_poses_accepted(poses.data(), pose_records::record_floats, poses.size());
+/// As require_each_pose_accepted, in one branch-free pass when all are accepted.
+void require_rows_accepted(const rect_pose* poses, std::size_t count) {
+    const auto* rows = reinterpret_cast<const float*>(poses);
+    if (!detail::poses_all_accepted<pose_row_floats>(rows, count)) {
+        require_each_pose_accepted<pose_row_floats>(rows, count);
+    }
+}
+
+/// As require_each_pose_accepted for a store, checked in the lanes of `ran`.
+void require_poses_accepted(backend ran, const pose_records& poses) {
+    if (!detail::contact_kernels_for(ran).poses_accepted(poses.data(), poses.size())) {
+        require_each_pose_accepted<pose_records::record_floats>(poses.data(), poses.size());
+    }
 }
 
 void require_rects_accepted(const rect* rects, std::size_t count) {
@@ -196,7 +183,7 @@ backend contact_pairs(const pose_records& poses, const pair_index* pairs, std::s
     require_out_apart(out, count, pairs, count * sizeof(pair_index), "pairs");
     require_margin(options);
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(poses);
+    require_poses_accepted(ran, poses);
     require_indices(ran, poses.size(), pairs, count, "poses");
     const float* records = poses.data();
     run_split(pose_kernel_for_store(detail::contact_kernels_for(ran), poses.size() * sizeof(float) *
@@ -213,7 +200,7 @@ backend contact_pairs(const rect_pose* poses, std::size_t pose_count, const pair
     require_margin(options);
     const backend ran = resolve_backend(options.use);
     require_valid_poses(poses, pose_count);
-    require_poses_accepted(reinterpret_cast<const float*>(poses), pose_row_floats, pose_count);
+    require_rows_accepted(poses, pose_count);
     require_indices(ran, pose_count, pairs, count, "poses");
     const auto* rows = reinterpret_cast<const float*>(poses);
     run_split(pose_kernel_for_store(detail::contact_kernels_for(ran), pose_count * sizeof(rect_pose)), rows,
@@ -234,8 +221,8 @@ backend contact_stream(const pose_records& a, const pose_records& b, contact* ou
     require_same_length(a.size(), b.size(), "poses");
     require_margin(options);
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(a);
-    require_poses_accepted(b);
+    require_poses_accepted(ran, a);
+    require_poses_accepted(ran, b);
     run_split(detail::contact_kernels_for(ran).poses, a.data(), pose_records::record_floats, b.data(),
               pose_records::record_floats, nullptr, a.size(), out, options);
     return ran;
@@ -314,7 +301,7 @@ backend distance_pairs(const pose_records& poses, const pair_index* pairs, std::
                        const distance_options& options) {
     require_distances_apart(out, count, pairs);
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(poses);
+    require_poses_accepted(ran, poses);
     require_indices(ran, poses.size(), pairs, count, "poses");
     const float* records = poses.data();
     run_split(detail::contact_kernels_for(ran).distance_poses, records, pose_records::record_floats, records,
@@ -333,8 +320,8 @@ backend distance_stream(const pose_records& a, const pose_records& b, closest_po
                         const distance_options& options) {
     require_same_length(a.size(), b.size(), "poses");
     const backend ran = resolve_backend(options.use);
-    require_poses_accepted(a);
-    require_poses_accepted(b);
+    require_poses_accepted(ran, a);
+    require_poses_accepted(ran, b);
     run_split(detail::contact_kernels_for(ran).distance_poses, a.data(), pose_records::record_floats, b.data(),
               pose_records::record_floats, nullptr, a.size(), out, options);
     return ran;

@@ -75,7 +75,10 @@ void require_indices(backend ran, std::size_t rows, const pair_index* pairs, std
     }
 }
 
-void require_accepted(const pose_records64& poses) {
+void require_accepted(backend ran, const pose_records64& poses) {
+    if (detail::contact_kernels_for(ran).poses64_accepted(poses.data(), poses.size())) {
+        return;
+    }
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const rect_pose64 p = poses[i];
         if (!ref::pose_accepted(p)) {
@@ -86,7 +89,7 @@ void require_accepted(const pose_records64& poses) {
     }
 }
 
-void require_accepted(const rect_records64& rects) {
+void require_accepted(backend, const rect_records64& rects) {
     for (std::size_t i = 0; i < rects.size(); ++i) {
         if (!ref::corners_accepted(rects[i])) {
             throw invalid_input("rectangle " + std::to_string(i) +
@@ -107,7 +110,7 @@ backend require_call(const Store& store, const pair_index* pairs, std::size_t co
                      const char* what) {
     require_out_apart(out, count * sizeof(Out), pairs, count, what);
     const backend ran = resolve_backend(use);
-    require_accepted(store);
+    require_accepted(ran, store);
     require_indices(ran, store.size(), pairs, count, rows_name(store));
     return ran;
 }
@@ -124,8 +127,8 @@ template <class Store>
 backend require_stream(const Store& a, const Store& b, backend use) {
     require_same_length(a.size(), b.size(), rows_name(a));
     const backend ran = resolve_backend(use);
-    require_accepted(a);
-    require_accepted(b);
+    require_accepted(ran, a);
+    require_accepted(ran, b);
     return ran;
 }
 

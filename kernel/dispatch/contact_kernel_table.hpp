@@ -32,6 +32,13 @@ using distance_fn = void (*)(const float* a, std::size_t a_stride, const float* 
 using distance64_fn = void (*)(const double* a, std::size_t a_stride, const double* b, std::size_t b_stride,
                                const pair_index* pairs, std::size_t count, closest_points64* out);
 
+/// Whether every one of `count` pose_records records (cx, cy, hx, hy, c, s,
+/// 0, 0; every value finite) is ref::pose_accepted: c·c + s·s a normal float.
+using poses_accepted_fn = bool (*)(const float* records, std::size_t count);
+
+/// As poses_accepted_fn on pose_records64 records, in double.
+using poses64_accepted_fn = bool (*)(const double* records, std::size_t count);
+
 struct contact_kernel_table {
     /// Records of at least six floats: cx, cy, hx, hy, c, s; with pairs, the
     /// records of the pairs ahead are asked into L2.
@@ -49,6 +56,8 @@ struct contact_kernel_table {
     contact64_fn corners64;      ///< rect_records64 records: the corners UL, UR, LR, LL
     distance64_fn distance_poses64;
     distance64_fn distance_corners64;
+    poses_accepted_fn poses_accepted;      ///< the check of a pose_records store before its contacts
+    poses64_accepted_fn poses64_accepted;  ///< the check of a pose_records64 store before its contacts
 };
 
 /// The contact table of one backend of backend_catalogue.hpp: defined by

@@ -38,6 +38,16 @@ void distances_one_by_one(const Real* a, std::size_t a_stride, const Real* b, st
     }
 }
 
+template <class Shape, class Real, Shape (*Read)(const Real*)>
+bool poses_accepted_one_by_one(const Real* records, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!ref::pose_accepted(Read(records + 8 * i))) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /// The table of the first row of the catalogue that is `resolved` and compiled.
 template <class... Rows>
 const contact_kernel_table& table_for(backend resolved, type_list<Rows...>) {
@@ -68,7 +78,9 @@ const contact_kernel_table& contact_kernels_of<scalar_backend>() {
         contacts_one_by_one<rect_pose64, double, contact64, pose64_in>,
         contacts_one_by_one<rect64, double, contact64, rect64_in>,
         distances_one_by_one<rect_pose64, double, closest_points64, pose64_in>,
-        distances_one_by_one<rect64, double, closest_points64, rect64_in>};
+        distances_one_by_one<rect64, double, closest_points64, rect64_in>,
+        poses_accepted_one_by_one<rect_pose, float, pose_in>,
+        poses_accepted_one_by_one<rect_pose64, double, pose64_in>};
     return table;
 }
 

@@ -8,6 +8,8 @@
 #pragma once
 
 #include "dispatch/contact_kernel_table.hpp"
+#include "lanes/contact_acceptance_lanes.hpp"
+#include "lanes/contact_compress_lanes.hpp"
 #include "lanes/contact_lanes.hpp"
 #include "lanes/distance_lanes.hpp"
 #include "lanes/record64_transpose.hpp"
@@ -92,6 +94,64 @@ OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, c
             row[f] = staged[f][lane];
         }
         std::memcpy(place(lane), row, sizeof row);
+    }
+}
+
+/// Writes a whole vector of float contacts without points (count 0, every
+/// point field zero) from their normal and depth at out[0 .. width): one 4x4
+/// transpose gives each contact's first 16 bytes, (nx, ny, depth, 0), in a
+/// 128-bit block, and every 64 (AVX-512) or 32 (AVX2) bytes of the answer is
+/// then one register of those blocks and zeros, stored whole. Every contact
+/// of a scene's pairs is first written so, and this is a third of the
+/// stores, and of the shuffles, of the general transposes of store_contacts.
+template <class Arch>
+OBBSAT_LANE_INLINE void store_contacts_without_points(const lanes<Arch>& nx, const lanes<Arch>& ny,
+                                                      const lanes<Arch>& depth, contact* out) {
+    using transpose = record_transpose<Arch>;
+    constexpr std::size_t width = lanes<Arch>::size;
+    float* to = reinterpret_cast<float*>(out);
+    const typename transpose::reg firsts[4] = {nx, ny, depth, lanes<Arch>(0.0f)};
+    lanes<Arch> block[4];  // block j of block[k]: contact 4j + k's first 16 bytes
+    transpose::transpose4(firsts, block);
+    // Contacts 4j to 4j + 3 are 48 floats: three AVX-512 registers, the
+    // nonzero blocks at quads 0 and 3, 6, 9; or six AVX2 ones.
+    if constexpr (width == 16) {
+#ifdef __AVX512F__
+        auto put = [&](auto j) {
+            constexpr int at = static_cast<int>(decltype(j)::value);
+            constexpr int twice = at | (at << 2) | (at << 4) | (at << 6);
+            _mm512_storeu_ps(to + 48 * at, _mm512_maskz_shuffle_f32x4(0xf00f, block[0], block[1], twice));
+            _mm512_storeu_ps(to + 48 * at + 16, _mm512_maskz_shuffle_f32x4(0x0f00, block[2], block[2], twice));
+            _mm512_storeu_ps(to + 48 * at + 32, _mm512_maskz_shuffle_f32x4(0x00f0, block[3], block[3], twice));
+        };
+        put(std::integral_constant<unsigned, 0>{});
+        put(std::integral_constant<unsigned, 1>{});
+        put(std::integral_constant<unsigned, 2>{});
+        put(std::integral_constant<unsigned, 3>{});
+#endif
+    } else if constexpr (width == 8) {
+#ifdef __AVX__
+        const __m256 zero = _mm256_setzero_ps();
+        auto put = [&](auto j) {
+            constexpr int at = static_cast<int>(decltype(j)::value);
+            float* four = to + 48 * at;
+            _mm256_storeu_ps(four, _mm256_permute2f128_ps(block[0], block[0], 0x80 | at));
+            _mm256_storeu_ps(four + 8, _mm256_permute2f128_ps(block[1], block[1], 0x08 | (at << 4)));
+            _mm256_storeu_ps(four + 16, zero);
+            _mm256_storeu_ps(four + 24, _mm256_permute2f128_ps(block[2], block[2], 0x80 | at));
+            _mm256_storeu_ps(four + 32, _mm256_permute2f128_ps(block[3], block[3], 0x08 | (at << 4)));
+            _mm256_storeu_ps(four + 40, zero);
+        };
+        put(std::integral_constant<unsigned, 0>{});
+        put(std::integral_constant<unsigned, 1>{});
+#endif
+    } else {
+        const __m128 zero = _mm_setzero_ps();
+        for (std::size_t k = 0; k < 4; ++k) {
+            _mm_storeu_ps(to + 12 * k, block[k]);
+            _mm_storeu_ps(to + 12 * k + 4, zero);
+            _mm_storeu_ps(to + 12 * k + 8, zero);
+        }
     }
 }
 
@@ -205,6 +265,86 @@ void contact_batch(const Real* a, std::size_t a_stride, const Real* b, std::size
             });
 }
 
+/// Appends pair i + lane and its place i + lane, for every lane set in
+/// `bits` (all below the vector's valid lanes), to near[count) and
+/// near_at[count); returns the new count. Either array may be written up to
+/// 16 entries past it. The pairs are pairs[i + lane], or (i + lane, i + lane)
+/// without a list. AVX-512 and AVX2 compress the lanes in registers
+/// (contact_compress_lanes.hpp), reading only the pairs of set lanes; SSE2,
+/// and a stream, write every valid lane and advance by its bit, without a
+/// branch: a loop over the set bits mispredicted its exit on most vectors.
+template <class Arch, std::size_t Width>
+OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, const pair_index* pairs, std::size_t i,
+                                                 std::size_t valid, pair_index* near, std::uint32_t* near_at,
+                                                 std::size_t count) {
+    if constexpr (compresses_lanes<Arch>()) {
+        if (pairs != nullptr) {
+            store_compressed_places<Arch>(bits, static_cast<std::uint32_t>(i), near_at + count);
+            return count + store_compressed_pairs<Arch, Width>(bits, pairs + i, near + count);
+        }
+    }
+    for (std::size_t lane = 0; lane < valid; ++lane) {
+        const auto at = static_cast<std::uint32_t>(i + lane);
+        near[count] = pairs != nullptr ? pairs[at] : pair_index{at, at};
+        near_at[count] = at;
+        count += (bits >> lane) & 1u;
+    }
+    return count;
+}
+
+/// What pose_reference_of chose for the pairs within the margin, kept in
+/// order beside them, so that the contacts of those pairs need not choose
+/// again: that choice (two square roots, two divisions and method local's
+/// axes) is a third of their cost, and AVX-512 and AVX2 compress the kept
+/// lanes in registers (contact_compress_lanes.hpp). SSE2 does not, and
+/// chooses again (holds false, nothing kept).
+template <class Arch, class Real, std::size_t Block>
+struct kept_references {
+    static constexpr bool holds = compresses_lanes<Arch>();
+    using batch = real_lanes<Arch, Real>;
+    static constexpr std::size_t width = batch::size;
+    static constexpr std::size_t fields = holds ? 5 : 1;
+    static constexpr std::size_t rows = holds ? Block + width : 1;
+    /// Field f of kept pair k at field[f][k]: r + 4 where flip (else r), the
+    /// separation of the reference box's best face, the incident box's
+    /// reciprocal length, ux, uy: all that steps 4 to 8 read of the choice
+    /// for a pair within the margin, where sa and sb are both at most the
+    /// margin and are otherwise read only as the reference box's. Every keep
+    /// writes a whole vector from `count`, so a vector read from the last
+    /// kept pair reads only written reals.
+    alignas(64) Real field[fields][rows];
+
+    /// Appends the lanes of `bits` of `p` from kept pair `count`.
+    OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_reference_lanes<Arch, Real>& p, std::size_t count) {
+        if constexpr (holds) {
+            const batch values[5] = {p.r + xsimd::select(p.flip, batch(Real(4)), batch(Real(0))),
+                                     xsimd::select(p.flip, p.sb, p.sa), xsimd::select(p.flip, p.inv_a, p.inv_b),
+                                     p.ux, p.uy};
+            for (std::size_t f = 0; f < 5; ++f) {
+                store_compressed<Arch, Real>(bits, values[f], field[f] + count);
+            }
+        } else {
+            (void)bits, (void)p, (void)count;
+        }
+    }
+
+    /// The contacts of kept pairs k to k + width from their records' fields.
+    OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contacts_at(const batch* fa, const batch* fb, std::size_t k,
+                                                                 Real margin) const {
+        if constexpr (holds) {
+            auto load = [&](std::size_t f) { return batch::load_unaligned(field[f] + k); };
+            const batch code = load(0), separation = load(1), inv = load(2);
+            const auto flip = code >= batch(Real(4));
+            const batch r = code - xsimd::select(flip, batch(Real(4)), batch(Real(0)));
+            const pose_reference_lanes<Arch, Real> p{flip, r, separation, separation, inv, inv, load(3), load(4)};
+            return contact_pose_lanes_from<Arch, Real>(fa, fb, p, margin);
+        } else {
+            (void)k;
+            return contact_pose_lanes_of<Arch, Real>(fa, fb, margin);
+        }
+    }
+};
+
 /// out[i] = the contact of poses a(i) and b(i) (see contact_fn, contact64_fn), in blocks
 /// of pairs: first every pair's normal and depth without points (pose steps
 /// P1 to P3 and step 4), then, packed into whole vectors, only the pairs
@@ -227,9 +367,14 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     // arrive from memory: a batch larger than the caches (256K pairs, 12 MiB
     // of contacts) took 1.9 ms against 1.3 until the lines 512 contacts ahead
     // were asked for, for writing.
+    // An answer L2 holds (4K pairs: 192 KiB) is not asked for: there the
+    // twelve prefetches of a vector bring nothing.
     constexpr std::size_t written_ahead = 512;
-    pair_index near[block];
-    std::uint32_t near_at[block];
+    const std::size_t written_until = count * sizeof(contact_type) > store_bytes_in_l2 ? count : 0;
+    // append_near_lanes may write 16 entries past the last.
+    pair_index near[block + 16];
+    std::uint32_t near_at[block + 16];
+    kept_references<Arch, Real, block> kept;
     for (std::size_t begin = 0; begin < count; begin += block) {
         const std::size_t n = count - begin < block ? count - begin : block;
         // A stream's block starts at its own rows; a list's at its own pairs.
@@ -241,31 +386,34 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
         for_each_vector_of_pairs<Arch, Real, Fields, Fetch>(
             block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
             [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
-                    if (begin + i + width + written_ahead <= count) {
+                    if (begin + i + width + written_ahead <= written_until) {
                         const char* line = reinterpret_cast<const char*>(block_out + i + written_ahead);
                         for (std::size_t k = 0; k < width * sizeof(contact_type); k += 64) {
                             __builtin_prefetch(line + k, 1, 3);
                         }
                     }
                     const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
-                    store_contacts<Arch, Real>(fields_of<Arch, Real>(contact_without_points<Arch, Real>(
-                                                   p.flip, p.ux, p.uy, p.sa, p.sb)),
-                                               block_out + i, valid);
-                    for (unsigned bits = lane_bits(may_have_points<Arch, Real>(p, margin)); bits != 0;
-                         bits &= bits - 1) {
-                        const std::size_t lane = static_cast<std::size_t>(__builtin_ctz(bits));
-                        if (lane < valid) {
-                            const auto at = static_cast<std::uint32_t>(i + lane);
-                            near[near_count] = block_pairs != nullptr ? block_pairs[at] : pair_index{at, at};
-                            near_at[near_count++] = at;
+                    const contact_out_lanes<Arch, Real> apart =
+                        contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
+                    if constexpr (std::is_same<Real, float>::value) {
+                        if (valid == width) {
+                            store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);
+                        } else {
+                            store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                         }
+                    } else {
+                        store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                     }
+                    const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
+                    const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
+                    kept.keep(near_lanes, p, near_count);
+                    near_count = append_near_lanes<Arch, width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
                 });
         for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,
             [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
                     store_contacts_to<Arch, Real>(
-                        fields_of<Arch, Real>(contact_pose_lanes_of<Arch, Real>(fa, fb, margin)),
+                        fields_of<Arch, Real>(kept.contacts_at(fa, fb, i, margin)),
                         [&](std::size_t lane) { return block_out + near_at[i + lane]; }, valid);
                 });
     }
@@ -309,7 +457,9 @@ constexpr contact_kernel_table contact_table_of() {
                                 contact_pose_batch<Arch, double, 6, pair_fetch::none>,
                                 contact_batch<Arch, double, 8, true>,
                                 distance_batch<Arch, double, 6, false>,
-                                distance_batch<Arch, double, 8, true>};
+                                distance_batch<Arch, double, 8, true>,
+                                pose_records_accepted<Arch, float>,
+                                pose_records_accepted<Arch, double>};
 }
 
 }  // namespace

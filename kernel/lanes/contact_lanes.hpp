@@ -522,14 +522,16 @@ OBBSAT_LANE_INLINE real_mask<Arch, Real> may_have_points(const pose_reference_la
 }
 
 /// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
-/// (the reference's pose steps, then steps 4 to 8).
+/// and what pose_reference_of chose for them (the reference's pose steps),
+/// then steps 4 to 8.
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const real_lanes<Arch, Real>* fa,
-                                                                       const real_lanes<Arch, Real>* fb, Real margin) {
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const real_lanes<Arch, Real>* fa,
+                                                                         const real_lanes<Arch, Real>* fb,
+                                                                         const pose_reference_lanes<Arch, Real>& p,
+                                                                         Real margin) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0));
     const batch origin_x = fa[0], origin_y = fa[1];
-    const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
     const auto flip = p.flip;
     const batch r = p.r, ux = p.ux, uy = p.uy, inv_a = p.inv_a, inv_b = p.inv_b;
 
@@ -559,6 +561,14 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const rea
     const reference_lanes<Arch, Real> ref{flip,           r,        p.sa,     p.sb,     ux,      uy,
                                           batch(Real(1)), face.p1x, face.p1y, face.p2x, face.p2y};
     return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, edge, origin_x, origin_y, margin);
+}
+
+/// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
+/// (the reference's pose steps, then steps 4 to 8).
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const real_lanes<Arch, Real>* fa,
+                                                                       const real_lanes<Arch, Real>* fb, Real margin) {
+    return contact_pose_lanes_from<Arch, Real>(fa, fb, pose_reference_of<Arch, Real>(fa, fb), margin);
 }
 
 }  // namespace

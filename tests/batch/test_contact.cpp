@@ -2,6 +2,7 @@
 // invalid_input naming the row and field, or the pair and index, at fault, and
 // nothing is written; the backend asked for is the one that runs; every
 // thread count gives the same contacts.
+#include <obbsat/backend.hpp>
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/pose_records.hpp>
@@ -137,6 +138,35 @@ TEST(contact_checks, a_rotation_too_short_for_its_square_is_named) {
     std::vector<contact> out(pairs.size());
     expect_refused([&] { obbsat::contact_pairs(records, pairs.data(), pairs.size(), out.data()); }, out,
                    {"pose 1", "rotation"});
+}
+
+// A store is checked a vector of records at a time, the rows past the last
+// whole vector one by one: a rotation too short (its square below the least
+// normal float) or too long (its square past the largest float) is found in
+// every lane of a vector and in the rows after, on every backend.
+TEST(contact_checks, a_rejected_rotation_is_named_wherever_it_is_on_every_backend) {
+    constexpr std::size_t rows = 39;  // two whole AVX-512 vectors and seven rows more
+    for (const obbsat::backend use : obbsat::compiled_backends()) {
+        if (!obbsat::cpu_supports(use)) {
+            continue;
+        }
+        contact_options options;
+        options.use = use;
+        for (const std::size_t bad : {std::size_t{0}, std::size_t{5}, std::size_t{15}, std::size_t{16},
+                                      std::size_t{31}, std::size_t{32}, std::size_t{38}}) {
+            for (const float length : {1e-30f, 1e20f}) {
+                std::vector<rect_pose> poses = row_of_poses(rows);
+                poses[bad].rotation = obbsat::point{0, length};
+                const obbsat::pose_records records(poses);
+                const std::vector<pair_index> pairs = neighbours(rows);
+                std::vector<contact> out(pairs.size());
+                SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", pose " + std::to_string(bad));
+                expect_refused(
+                    [&] { obbsat::contact_pairs(records, pairs.data(), pairs.size(), out.data(), options); }, out,
+                    {"pose " + std::to_string(bad) + ":", "rotation"});
+            }
+        }
+    }
 }
 
 TEST(contact_checks, stream_batches_of_different_lengths_are_refused) {

@@ -225,6 +225,49 @@ TEST(contact64, the_families_reach_every_kind_of_answer) {
     EXPECT_GT(separated, 1000u);
 }
 
+// As the float store's check: every lane of a vector of double records and
+// the rows after, on every backend, for a rotation whose square is below the
+// least normal double or past the largest.
+TEST(contact64, a_rejected_rotation_is_named_wherever_it_is_on_every_backend) {
+    constexpr std::size_t rows = 21;  // two whole AVX-512 vectors of doubles and five rows more
+    for (const backend use : obbsat::compiled_backends()) {
+        if (!obbsat::cpu_supports(use)) {
+            continue;
+        }
+        obbsat::contact_options64 options;
+        options.use = use;
+        for (const std::size_t bad : {std::size_t{0}, std::size_t{3}, std::size_t{7}, std::size_t{8},
+                                      std::size_t{15}, std::size_t{16}, std::size_t{20}}) {
+            for (const double length : {1e-200, 1e200}) {
+                std::vector<rect_pose64> list;
+                std::vector<pair_index> pairs;
+                for (std::size_t i = 0; i < rows; ++i) {
+                    list.push_back({{1.5 * static_cast<double>(i), 0}, {1, 1}, {1, 0}});
+                    if (i + 1 < rows) {
+                        pairs.push_back(pair_index{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(i + 1)});
+                    }
+                }
+                list[bad].rotation = {0, length};
+                const obbsat::pose_records64 poses(list);
+                std::vector<contact64> out(pairs.size());
+                std::memset(out.data(), 0x5a, out.size() * sizeof(contact64));
+                const std::vector<contact64> untouched = out;
+                SCOPED_TRACE(std::string(obbsat::backend_name(use)) + ", pose " + std::to_string(bad));
+                try {
+                    obbsat::contact_pairs(poses, pairs.data(), pairs.size(), out.data(), options);
+                    ADD_FAILURE() << "no error";
+                } catch (const obbsat::invalid_input& e) {
+                    EXPECT_NE(std::string(e.what()).find("pose " + std::to_string(bad) + ": rotation"),
+                              std::string::npos)
+                        << e.what();
+                }
+                EXPECT_EQ(std::memcmp(out.data(), untouched.data(), out.size() * sizeof(contact64)), 0)
+                    << "written before the error";
+            }
+        }
+    }
+}
+
 TEST(contact64, errors_name_what_is_wrong_and_write_nothing) {
     const std::vector<rect_pose64> rows = {{{0, 0}, {1, 1}, {1, 0}}, {{1.5, 0}, {1, 1}, {1, 0}}};
     const obbsat::pose_records64 poses(rows);

@@ -35,24 +35,11 @@ using obbsat::pair_index;
 using obbsat::rect64;
 using obbsat::rect_pose64;
 using contact_scenes::exact_on;
+using contact_scenes::expect_same;
 
-/// UTM-like coordinates: a float32 there steps by 0.03125 in x and 0.5 in y.
-constexpr double far_x = 500000.125;
-constexpr double far_y = 5712345.5;
-
-/// A seeded scene of `boxes` double poses of mixed sizes, moved by (dx, dy),
-/// each center nudged by a fraction of a float step so that its doubles are
-/// not floats.
-std::vector<rect_pose64> double_scene(std::size_t boxes, std::uint64_t seed, double dx, double dy) {
-    std::vector<rect_pose64> rows;
-    for (const obbsat::rect_pose& p : contact_scenes::scene_of(boxes, seed)) {
-        const double nudge = 1e-3 * std::sin(static_cast<double>(rows.size()));
-        rows.push_back({{dx + p.center.x + nudge, dy + p.center.y - nudge},
-                        {p.half_extents.x, p.half_extents.y},
-                        {p.rotation.x, p.rotation.y}});
-    }
-    return rows;
-}
+using contact_scenes::double_scene_of;
+using contact_scenes::far_x;
+using contact_scenes::far_y;
 
 /// The corners UL, UR, LR, LL of a double pose, computed in double.
 rect64 corners_of(const rect_pose64& p) {
@@ -71,46 +58,11 @@ std::vector<rect64> corners_of(const std::vector<rect_pose64>& poses) {
     return out;
 }
 
-/// Every pair i < j of `store`.
-template <class Store>
-std::vector<pair_index> all_pairs(const Store& store) {
-    std::vector<pair_index> pairs;
-    for (std::uint32_t i = 0; i < store.size(); ++i) {
-        for (std::uint32_t j = i + 1; j < store.size(); ++j) {
-            pairs.push_back({i, j});
-        }
-    }
-    return pairs;
-}
-
 /// What find_contacts64 must give, from every pair decided one by one in double.
 template <class Store>
 obbsat::scene_contacts64 expected_contacts(const Store& store, double margin) {
-    const std::vector<pair_index> pairs = all_pairs(store);
-    const std::vector<std::uint8_t> verdicts = obbsat::collide_pairs(store, pairs, exact_on(obbsat::backend::scalar, 1));
-    obbsat::contact_options64 options;
-    options.margin = margin;
-    options.use = obbsat::backend::scalar;
-    const std::vector<contact64> contacts = obbsat::contact_pairs(store, pairs, options);
-    obbsat::scene_contacts64 expected;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (verdicts[k] || (margin > 0 && contacts[k].point_count > 0)) {
-            expected.pairs.push_back(pairs[k]);
-            expected.contacts.push_back(contacts[k]);
-        }
-    }
-    return expected;
-}
-
-void expect_same(const obbsat::scene_contacts64& found, const obbsat::scene_contacts64& expected) {
-    ASSERT_EQ(found.pairs.size(), expected.pairs.size());
-    ASSERT_EQ(found.contacts.size(), expected.contacts.size());
-    for (std::size_t k = 0; k < found.pairs.size(); ++k) {
-        ASSERT_EQ(found.pairs[k].a, expected.pairs[k].a) << "row " << k;
-        ASSERT_EQ(found.pairs[k].b, expected.pairs[k].b) << "row " << k;
-        EXPECT_EQ(std::memcmp(&found.contacts[k], &expected.contacts[k], sizeof(contact64)), 0)
-            << "pair " << found.pairs[k].a << "," << found.pairs[k].b;
-    }
+    return contact_scenes::contacts_decided_alone<obbsat::scene_contacts64, obbsat::contact_options64>(store,
+                                                                                                      margin);
 }
 
 /// The contacts find_contacts64 must give at margin 0: find_pairs' pairs on
@@ -130,7 +82,7 @@ obbsat::scene_contacts64 contacts_of_found_pairs(const Store& store, const obbsa
 
 TEST(FindContacts64, PosesMatchEveryPairDecidedAloneNearAndFarFromTheOrigin) {
     for (const double dx : {0.0, far_x}) {
-        const std::vector<rect_pose64> rows = double_scene(300, 5, dx, dx == 0.0 ? 0.0 : far_y);
+        const std::vector<rect_pose64> rows = double_scene_of(300, 5, dx, dx == 0.0 ? 0.0 : far_y);
         const obbsat::pose_records64 store(rows);
         for (const double margin : {0.0, 0.05, 0.5}) {
             SCOPED_TRACE("at x " + std::to_string(dx) + ", margin " + std::to_string(margin));
@@ -146,7 +98,7 @@ TEST(FindContacts64, PosesMatchEveryPairDecidedAloneNearAndFarFromTheOrigin) {
 }
 
 TEST(FindContacts64, CornersMatchEveryPairDecidedAlone) {
-    const std::vector<rect64> rows = corners_of(double_scene(300, 11, far_x, far_y));
+    const std::vector<rect64> rows = corners_of(double_scene_of(300, 11, far_x, far_y));
     const obbsat::rect_records64 store(rows);
     for (const double margin : {0.0, 0.25}) {
         SCOPED_TRACE("margin " + std::to_string(margin));
@@ -187,7 +139,7 @@ TEST(FindContacts64, FarFromTheOriginDoublesDecideWhatFloatsWouldNot) {
 constexpr std::size_t many_boxes = 40000;
 
 TEST(FindContacts64, EqualsContactPairsOverFindPairsOnEveryBackendThreadCountAndMethod) {
-    const std::vector<rect_pose64> rows = double_scene(many_boxes, 21, far_x, far_y);
+    const std::vector<rect_pose64> rows = double_scene_of(many_boxes, 21, far_x, far_y);
     const obbsat::pose_records64 store(rows);
     const std::vector<rect64> corner_rows = corners_of(rows);
     const obbsat::rect_records64 corners(corner_rows);
@@ -226,7 +178,7 @@ TEST(FindContacts64, WithAMarginTheSameOnEveryBackendAndThreadCount) {
     // The small scenes above check the pairs against every pair decided
     // alone; here a larger one checks that every backend and thread count
     // gives those same pairs, each with contact_pairs' contact at the margin.
-    const std::vector<rect_pose64> rows = double_scene(many_boxes, 22, far_x, far_y);
+    const std::vector<rect_pose64> rows = double_scene_of(many_boxes, 22, far_x, far_y);
     const obbsat::pose_records64 store(rows);
     constexpr double margin = 0.05;
     const obbsat::scene_contacts64 first =
@@ -266,8 +218,8 @@ TEST(FindContacts64, PairFiltersApplyToPairsWithinTheMargin) {
 }
 
 TEST(FindContacts64, IntoAKeptAnswerLargerOrSmallerAndARefusedCallLeavesItAsItWas) {
-    const std::vector<rect_pose64> large = double_scene(30000, 23, far_x, far_y);
-    const std::vector<rect_pose64> small = double_scene(2000, 24, far_x, far_y);
+    const std::vector<rect_pose64> large = double_scene_of(30000, 23, far_x, far_y);
+    const std::vector<rect_pose64> small = double_scene_of(2000, 24, far_x, far_y);
     for (const unsigned threads : {1u, 2u}) {
         for (const double margin : {0.0, 0.05}) {
             SCOPED_TRACE(std::to_string(threads) + " threads, margin " + std::to_string(margin));

@@ -33,26 +33,18 @@ using obbsat::pair_index;
 using obbsat::rect_pose64;
 using contact_scenes::exact_on;
 
-/// UTM-like coordinates: a float32 there steps by 0.03125 in x and 0.5 in
-/// y, so the float bounds of the broadphase are that coarse and a finder's
-/// kept candidates rarely serve a frame (a box whose bounds cross a step
-/// leaves its widened bounds); near_x and near_y keep the bounds fine.
-constexpr double far_x = 500000.125;
-constexpr double far_y = 5712345.5;
+// At UTM-like coordinates (far_x, far_y) a float32 steps by 0.03125 in x
+// and 0.5 in y, so the float bounds of the broadphase are that coarse and a
+// finder's kept candidates rarely serve a frame (a box whose bounds cross a
+// step leaves its widened bounds); near_x and near_y keep the bounds fine.
+using contact_scenes::far_x;
+using contact_scenes::far_y;
 constexpr double near_x = 1000.25;
 constexpr double near_y = -2000.5;
 
-/// A seeded double scene moved by (dx, dy) (by default to UTM-like
-/// coordinates), each center nudged so that its doubles are not floats.
+/// A seeded double scene moved by (dx, dy), by default to UTM-like coordinates.
 std::vector<rect_pose64> far_scene(std::size_t boxes, std::uint64_t seed, double dx = far_x, double dy = far_y) {
-    std::vector<rect_pose64> rows;
-    for (const obbsat::rect_pose& p : contact_scenes::scene_of(boxes, seed)) {
-        const double nudge = 1e-7 * std::cos(static_cast<double>(rows.size()));
-        rows.push_back({{dx + p.center.x + nudge, dy + p.center.y - nudge},
-                        {p.half_extents.x, p.half_extents.y},
-                        {p.rotation.x, p.rotation.y}});
-    }
-    return rows;
+    return contact_scenes::double_scene_of(boxes, seed, dx, dy);
 }
 
 /// Frame `f` of a scene whose boxes drift and turn a little each frame, in
@@ -189,40 +181,15 @@ TEST(PairFinderContacts64, APersistingContactKeepsItsFeatureKeys) {
     // frame by frame, while other boxes come and go around them (rows follow
     // ids): the same two corners of the box touch the plank's top face
     // throughout, so both points keep their feature keys.
-    constexpr std::uint64_t plank = 100, box = 200;
     obbsat::pair_finder finder(exact_on(obbsat::backend::automatic, 1));
     std::vector<obbsat::contact_feature> last;
     for (int f = 0; f < 12; ++f) {
         std::vector<rect_pose64> rows;
         std::vector<std::uint64_t> ids;
-        for (int k = 0; k < f % 3; ++k) {
-            rows.push_back({{far_x + 50.0 + 3.0 * k, far_y + 50.0}, {1, 1}, {1, 0}});
-            ids.push_back(static_cast<std::uint64_t>(1000 + k));
-        }
-        rows.push_back({{far_x, far_y}, {8, 0.5}, {1, 0}});
-        ids.push_back(plank);
-        rows.push_back({{far_x - 3.0 + 0.5 * f, far_y + 0.95}, {0.5, 0.5}, {1, 0}});
-        ids.push_back(box);
-        rows.push_back({{far_x - 50.0, far_y - 50.0 - f}, {1, 1}, {1, 0}});
-        ids.push_back(static_cast<std::uint64_t>(2000 + f));
-
+        contact_scenes::plank_frame(f, far_x, far_y, rows, ids);
         const obbsat::scene_contacts64& got = finder.find_contacts64(obbsat::box_view(rows).with_ids(ids));
         expect_frame(got, obbsat::find_pairs(rows, exact_on(obbsat::backend::scalar, 1)), rows, rows);
-        const contact64* c = nullptr;
-        for (std::size_t k = 0; k < got.pairs.size(); ++k) {
-            if (ids[got.pairs[k].a] == plank && ids[got.pairs[k].b] == box) {
-                c = &got.contacts[k];
-            }
-        }
-        ASSERT_NE(c, nullptr) << "frame " << f;
-        ASSERT_EQ(c->point_count, 2u) << "frame " << f;
-        const std::vector<obbsat::contact_feature> keys = {c->points[0].feature, c->points[1].feature};
-        if (!last.empty()) {
-            for (std::size_t p = 0; p < 2; ++p) {
-                EXPECT_EQ(std::memcmp(&keys[p], &last[p], sizeof keys[p]), 0) << "frame " << f << ", point " << p;
-            }
-        }
-        last = keys;
+        contact_scenes::expect_plank_keys_kept(got, ids, f, last);
     }
 }
 

@@ -212,7 +212,7 @@ typename detail::contact_types<Real>::kernel checked_kernel(const box_view& boxe
                                                             const char* call, std::size_t rows_read) {
     require_precision<Real>(boxes, call);
     const detail::contact_kernel_table& table = detail::contact_kernels_for(resolve_backend(options.use));
-    if (std::is_same<Real, double>::value) {
+    if constexpr (std::is_same<Real, double>::value) {
         detail::require_method_on_double_rows(options, boxes.kind());
     } else {
         detail::require_method_on(options, boxes.kind());

@@ -38,6 +38,14 @@
 //       Each checks that find_contacts's pairs are find_pairs's (up to
 //       check_limit boxes). Counters pairs_per_box, points_per_pair.
 //
+//   find_pairs64/exact/poses/..., find_contacts64/exact/poses/... and
+//       find_contacts64_into/exact/poses/...  the same three on the double
+//       poses of the precision rows (the uniform scene at UTM-like
+//       coordinates, rect_pose64 rows read in place): obbsat::find_pairs and
+//       obbsat::find_contacts64 at margin 0, the contacts in double. Each
+//       checks that find_contacts64's pairs are find_pairs's (up to
+//       check_limit boxes).
+//
 // The peers' rows (peer_scene/, peer_frame/) answer the same question on the
 // same scenes; scene_harness.hpp says how every row is timed and checked.
 #include "bench_registry.hpp"
@@ -433,20 +441,45 @@ void run_precision_row(benchmark::State& state, std::size_t boxes, bool doubles)
 /// What a row of the contacts rows times.
 enum class contacts_row { pairs, contacts, contacts_into };
 
+/// The rows and answer type of the float contacts rows (the as-generated
+/// uniform scene) or the double ones (the same at UTM-like coordinates).
+template <class Answer>
+obbsat::box_view contacts_scene(std::size_t boxes);
+template <>
+obbsat::box_view contacts_scene<obbsat::scene_contacts>(std::size_t boxes) {
+    return obbsat::box_view(scene_workload_for(boxes, obbsat::scene_sizes::uniform).poses(scene_frame::as_generated));
+}
+template <>
+obbsat::box_view contacts_scene<obbsat::scene_contacts64>(std::size_t boxes) {
+    return obbsat::box_view(utm_scene_for(boxes).wide);
+}
+
+/// find_contacts at margin 0 into `found`: float contacts of float rows, double ones of double rows.
+void find_contacts_into(const obbsat::box_view& view, const obbsat::collide_options& options,
+                        obbsat::scene_contacts& found) {
+    obbsat::find_contacts(view, options, 0.0f, found);
+}
+void find_contacts_into(const obbsat::box_view& view, const obbsat::collide_options& options,
+                        obbsat::scene_contacts64& found) {
+    obbsat::find_contacts(view, options, 0.0, found);
+}
+
 /// One row of the three: find_pairs, find_contacts at margin 0, or
-/// find_contacts into one scene_contacts kept from one iteration to the
-/// next, with method exact on one thread, over the as-generated uniform
-/// scene. Each first checks that find_contacts's pairs are find_pairs's (up
-/// to check_limit boxes).
+/// find_contacts into one answer kept from one iteration to the next, with
+/// method exact on one thread, over the as-generated uniform scene (Answer
+/// scene_contacts) or its double poses at UTM-like coordinates (Answer
+/// scene_contacts64). Each first checks that find_contacts's pairs are
+/// find_pairs's (up to check_limit boxes).
+template <class Answer>
 void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row row) {
     const bool contacts = row != contacts_row::pairs;
     try {
-        scene_workload& w = scene_workload_for(boxes, obbsat::scene_sizes::uniform);
-        const obbsat::box_view view(w.poses(scene_frame::as_generated));
+        const obbsat::box_view view = contacts_scene<Answer>(boxes);
         const obbsat::collide_options options = options_for(obbsat::method::exact, 1);
         if (boxes <= check_limit) {
             const std::vector<obbsat::pair_index> want = obbsat::find_pairs(view, options);
-            const obbsat::scene_contacts got = obbsat::find_contacts(view, options);
+            Answer got;
+            find_contacts_into(view, options, got);
             const auto same = [](const obbsat::pair_index& x, const obbsat::pair_index& y) {
                 return x.a == y.a && x.b == y.b;
             };
@@ -463,7 +496,7 @@ void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row r
         // scope each step would (freed after, the OS would map the next one
         // in other pages, which costs more).
         double pairs = 0;
-        obbsat::scene_contacts found;
+        Answer found;
         for (auto _ : state) {
             if (!contacts) {
                 const std::vector<obbsat::pair_index> only_pairs = obbsat::find_pairs(view, options);
@@ -471,17 +504,19 @@ void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row r
                 pairs += static_cast<double>(only_pairs.size());
             } else {
                 if (row == contacts_row::contacts_into) {
-                    obbsat::find_contacts(view, options, 0.0f, found);
+                    find_contacts_into(view, options, found);
                 } else {
-                    found = obbsat::scene_contacts();
-                    found = obbsat::find_contacts(view, options);
+                    found = Answer();
+                    Answer fresh;
+                    find_contacts_into(view, options, fresh);
+                    found = std::move(fresh);
                 }
                 benchmark::DoNotOptimize(found.contacts.data());
                 pairs += static_cast<double>(found.pairs.size());
             }
         }
         double points = 0;
-        for (const obbsat::contact& c : found.contacts) {
+        for (const auto& c : found.contacts) {
             points += static_cast<double>(c.point_count);
         }
         const auto n = static_cast<double>(boxes);
@@ -496,6 +531,29 @@ void run_contacts_row(benchmark::State& state, std::size_t boxes, contacts_row r
         }
     } catch (const std::exception& e) {
         state.SkipWithError(e.what());
+    }
+}
+
+/// Registers the three contacts rows of one precision, side by side on one scene: `suffix` "" or "64".
+template <class Answer>
+void register_contacts_rows(const char* suffix) {
+    for (const std::size_t boxes : scene_box_counts_to_register()) {
+        for (const contacts_row row : {contacts_row::pairs, contacts_row::contacts, contacts_row::contacts_into}) {
+            const char* call = row == contacts_row::pairs      ? "find_pairs"
+                               : row == contacts_row::contacts ? "find_contacts"
+                                                               : "find_contacts_into";
+            std::string name = std::string(call) + suffix;
+            if (row == contacts_row::contacts_into && *suffix != 0) {
+                name = std::string("find_contacts") + suffix + "_into";
+            }
+            name += "/exact/poses/" + scene_name_tail(boxes, obbsat::scene_sizes::uniform, 1);
+            benchmark::RegisterBenchmark(name.c_str(),
+                                         [boxes, row](benchmark::State& state) {
+                                             run_contacts_row<Answer>(state, boxes, row);
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond);
+        }
     }
 }
 
@@ -557,22 +615,9 @@ void register_scene_benchmarks() {
                 ->Unit(benchmark::kMillisecond);
         }
     }
-    // The scene query with and without contacts, side by side on one scene.
-    for (const std::size_t boxes : scene_box_counts_to_register()) {
-        for (const contacts_row row : {contacts_row::pairs, contacts_row::contacts, contacts_row::contacts_into}) {
-            const char* call = row == contacts_row::pairs      ? "find_pairs"
-                               : row == contacts_row::contacts ? "find_contacts"
-                                                               : "find_contacts_into";
-            const std::string name = std::string(call) + "/exact/poses/" +
-                                     scene_name_tail(boxes, obbsat::scene_sizes::uniform, 1);
-            benchmark::RegisterBenchmark(name.c_str(),
-                                         [boxes, row](benchmark::State& state) {
-                                             run_contacts_row(state, boxes, row);
-                                         })
-                ->UseRealTime()
-                ->Unit(benchmark::kMillisecond);
-        }
-    }
+    // The scene query with and without contacts, side by side on one scene; then on double poses.
+    register_contacts_rows<obbsat::scene_contacts>("");
+    register_contacts_rows<obbsat::scene_contacts64>("64");
 }
 
 }  // namespace obbsat_bench

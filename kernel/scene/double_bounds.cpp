@@ -30,23 +30,7 @@ namespace obbsat::detail {
 
 namespace {
 
-/// True iff the doubles of one row are a valid rectangle of `kind`.
-bool valid_double_row(store_kind kind, const double* v) {
-    if (kind == store_kind::poses) {
-        bool finite = true;
-        for (int k = 0; k < 6; ++k) {
-            finite &= std::isfinite(v[k]);
-        }
-        return finite && !(v[2] < 0.0) && !(v[3] < 0.0) && !(v[4] == 0.0 && v[5] == 0.0);
-    }
-    bool finite = true;
-    for (int k = 0; k < 8; ++k) {
-        finite &= std::isfinite(v[k]);
-    }
-    return finite;
-}
-
-/// Throws the double store's own message for row `id`, which valid_double_row
+/// Throws the double store's own message for row `id`, which valid_row
 /// refused, with "a: " or "b: " in front in a query across two sets.
 [[noreturn]] void refuse_double_row(const query_input& input, std::size_t id) {
     const bool second = id >= input.a_count;
@@ -67,6 +51,8 @@ bool valid_double_row(store_kind kind, const double* v) {
     throw std::logic_error("obbsat: a double row refused by the scene query passed its store's check");
 }
 
+}  // namespace
+
 void require_method_on_double_rows(const collide_options& options, store_kind kind) {
     if (!is_method(options.test)) {
         throw invalid_input("collide_options::test holds " + std::to_string(static_cast<unsigned>(options.test)) +
@@ -81,8 +67,6 @@ void require_method_on_double_rows(const collide_options& options, store_kind ki
                             (kind == store_kind::poses ? "poses" : "corners") + " (they take " + offered + ")");
     }
 }
-
-}  // namespace
 
 query_input pair_search::bound_doubles(const query_input& input) {
     double_bounds_seconds_ = 0;
@@ -110,7 +94,7 @@ query_input pair_search::bound_doubles(const query_input& input) {
             const std::size_t count = run_end - run_begin;
             const bool checked = run_begin < input.a_count ? input.a64_checked : input.b64_checked;
             for (std::size_t id = run_begin; id < run_end && !checked; ++id) {
-                if (!valid_double_row(input.double_kind, double_row_at(input, id))) {
+                if (!valid_row(input.double_kind, double_row_at(input, id))) {
                     first_bad[unit] = std::min(first_bad[unit], id);
                 }
             }

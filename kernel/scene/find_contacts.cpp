@@ -2,7 +2,8 @@
 // contacts on the caller's rows (query_contacts.hpp); with a margin, the
 // pairs of widened stand-ins kept when their contacts have points
 // (obbsat/find_contacts.hpp says why the stand-ins lose none); pair_finder's
-// frames with contacts.
+// frames with contacts. Float rows give float contacts, double rows double
+// ones (find_contacts64), by the same steps templated on the precision.
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 #include "methods/method_check.hpp"
@@ -12,21 +13,25 @@
 #include "scene/search_common.hpp"
 #include "scene/spare_search.hpp"
 #include "support/executor_scope.hpp"
+#include "support/fetch_ahead.hpp"
 
 #include <obbsat/contact.hpp>
 #include <obbsat/error.hpp>
 #include <obbsat/find_contacts.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/ref/bounds.hpp>
+#include <obbsat/ref/bounds64.hpp>
 #include <obbsat/ref/contact.hpp>
 
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace obbsat {
@@ -48,37 +53,71 @@ namespace {
 
 constexpr std::size_t no_row = std::numeric_limits<std::size_t>::max();
 
-/// The contact kernel of `boxes`' kind on `use`; invalid_input for double rows.
-detail::contact_fn contact_kernel_of(const box_view& boxes, backend use, const char* call) {
-    if (boxes.precision() != precision::float32) {
-        throw invalid_input(std::string(call) +
-                            ": contacts are computed on float rows; these are double (round them to float first)");
+/// The values of a view's rows in their own precision.
+template <class Real>
+const Real* values_of(const box_view& boxes);
+template <>
+const float* values_of<float>(const box_view& boxes) {
+    return boxes.floats();
+}
+template <>
+const double* values_of<double>(const box_view& boxes) {
+    return boxes.doubles();
+}
+
+rect_pose pose_at(const float* v) { return rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}; }
+rect_pose64 pose_at(const double* v) { return rect_pose64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}}; }
+rect corners_at(const float* v) { return rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}; }
+rect64 corners_at(const double* v) { return rect64{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}}; }
+
+/// A value as the messages show it: a float as std::to_string does, a
+/// double with the digits that read back to it.
+std::string shown(float value) { return std::to_string(value); }
+std::string shown(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+/// Throws invalid_input unless `boxes` hold `Real` rows: a float call
+/// (scene_contacts) refuses double rows and a double one float rows, so that
+/// no contact is rounded on the way.
+template <class Real>
+void require_precision(const box_view& boxes, const char* call) {
+    constexpr bool doubles = std::is_same<Real, double>::value;
+    if ((boxes.precision() == precision::float64) == doubles) {
+        return;
     }
-    const detail::contact_kernel_table& table = detail::contact_kernels_for(resolve_backend(use));
-    return boxes.kind() == store_kind::poses ? table.poses : table.corners;
+    if (doubles) {
+        throw invalid_input(std::string(call) +
+                            ": these rows are float; their contacts are float (find_contacts, scene_contacts)");
+    }
+    throw invalid_input(std::string(call) +
+                        ": these rows are double, whose contacts are double: find_contacts64 (a scene_contacts64) "
+                        "computes them without rounding");
 }
 
 /// The first row of `boxes` that contacts do not accept (obbsat/contact.hpp),
 /// or no_row. One branch-free pass over poses when all are accepted.
+template <class Real>
 std::size_t first_unaccepted(const box_view& boxes) {
-    const float* v = boxes.floats();
+    const Real* v = values_of<Real>(boxes);
     const std::size_t stride = boxes.stride();
     if (boxes.kind() == store_kind::poses) {
         bool all = true;
         for (std::size_t row = 0; row < boxes.size(); ++row) {
-            const float c = v[stride * row + 4], s = v[stride * row + 5];
-            const float q = (c * c) + (s * s);
-            all &= (q >= FLT_MIN) & (q <= FLT_MAX);
+            const Real c = v[stride * row + 4], s = v[stride * row + 5];
+            const Real q = (c * c) + (s * s);
+            all &= (q >= std::numeric_limits<Real>::min()) & (q <= std::numeric_limits<Real>::max());
         }
         if (all) {
             return no_row;
         }
     }
     for (std::size_t row = 0; row < boxes.size(); ++row) {
-        const float* r = v + stride * row;
-        const bool accepted = boxes.kind() == store_kind::poses
-                                  ? ref::pose_accepted(rect_pose{{r[0], r[1]}, {r[2], r[3]}, {r[4], r[5]}})
-                                  : ref::corners_accepted(rect{{r[0], r[1]}, {r[2], r[3]}, {r[4], r[5]}, {r[6], r[7]}});
+        const Real* r = v + stride * row;
+        const bool accepted = boxes.kind() == store_kind::poses ? ref::pose_accepted(pose_at(r))
+                                                                : ref::corners_accepted(corners_at(r));
         if (!accepted) {
             return row;
         }
@@ -89,35 +128,39 @@ std::size_t first_unaccepted(const box_view& boxes) {
 /// Throws invalid_input, as contact_pairs does, for the first row of `boxes`
 /// that contacts do not accept, unless some row is not a valid box at all:
 /// the query then refuses that one first (as when find_pairs ran first).
+template <class Real>
 void require_accepted(const box_view& boxes) {
-    const std::size_t row = first_unaccepted(boxes);
+    const std::size_t row = first_unaccepted<Real>(boxes);
     if (row == no_row) {
         return;
     }
+    const Real* values = values_of<Real>(boxes);
     for (std::size_t r = 0; r < boxes.size(); ++r) {
-        if (!detail::valid_row(boxes.kind(), boxes.floats() + boxes.stride() * r)) {
+        if (!detail::valid_row(boxes.kind(), values + boxes.stride() * r)) {
             return;
         }
     }
-    const float* v = boxes.floats() + boxes.stride() * row;
+    const Real* v = values + boxes.stride() * row;
     if (boxes.kind() == store_kind::poses) {
-        throw invalid_input("pose " + std::to_string(row) + ": rotation (" + std::to_string(v[4]) + ", " +
-                            std::to_string(v[5]) +
-                            ") is too short or too long for contacts (c*c + s*s must be a normal float)");
+        throw invalid_input("pose " + std::to_string(row) + ": rotation (" + shown(v[4]) + ", " + shown(v[5]) +
+                            ") is too short or too long for contacts (c*c + s*s must be a normal " +
+                            (std::is_same<Real, double>::value ? "double" : "float") + ")");
     }
     throw invalid_input("rectangle " + std::to_string(row) +
                         ": corners are not a strictly convex quadrilateral (self-intersecting, degenerate or "
                         "with a reflex corner), which contacts do not accept");
 }
 
-/// The bounds of row `row` of a view whose rows were checked (by the query
-/// that ran first), whatever their store.
+/// The float bounds of row `row` of a view whose rows were checked (by the
+/// query that ran first), whatever their store and precision: for double
+/// rows their double bounds rounded outward (obbsat/ref/bounds64.hpp).
 ref::box_bounds bounds_of_row(const box_view& boxes, std::size_t row) {
-    const float* v = boxes.floats() + row * boxes.stride();
-    if (boxes.kind() == store_kind::poses) {
-        return ref::bounds_of(rect_pose{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}});
+    if (boxes.precision() == precision::float64) {
+        const double* v = boxes.doubles() + row * boxes.stride();
+        return boxes.kind() == store_kind::poses ? ref::bounds_of(pose_at(v)) : ref::bounds_of(corners_at(v));
     }
-    return ref::bounds_of(rect{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}});
+    const float* v = boxes.floats() + row * boxes.stride();
+    return boxes.kind() == store_kind::poses ? ref::bounds_of(pose_at(v)) : ref::bounds_of(corners_at(v));
 }
 
 /// An axis-aligned pose that contains [lo - margin, hi + margin] on one axis
@@ -125,7 +168,7 @@ ref::box_bounds bounds_of_row(const box_view& boxes, std::size_t row) {
 /// larger of the center and the half extent, so it holds the widened bounds
 /// despite its own rounding; a half extent beyond float range is the
 /// largest float (the pose then reaches every box it could pair with).
-rect_pose stand_in_of(const ref::box_bounds& b, float margin) {
+rect_pose stand_in_of(const ref::box_bounds& b, double margin) {
     constexpr double largest = std::numeric_limits<float>::max();
     const auto axis = [&](float lo, float hi, float& center, float& half) {
         const double c = 0.5 * (static_cast<double>(lo) + static_cast<double>(hi));
@@ -145,19 +188,65 @@ rect_pose stand_in_of(const ref::box_bounds& b, float margin) {
     return p;
 }
 
-/// The checks find_contacts makes before any work: the margin, the rows'
-/// precision, the method on their kind, and that contacts accept every row
-/// (the query checks the rows themselves). Returns the contact kernel.
-detail::contact_fn checked_kernel(const box_view& boxes, const collide_options& options, const char* call) {
-    const detail::contact_fn kernel = contact_kernel_of(boxes, options.use, call);
-    detail::require_method_on(options, boxes.kind());
-    require_accepted(boxes);
-    return kernel;
+/// The contact kernel of `boxes`' kind and precision in `table`: for double
+/// poses whose `rows_read` records L2 holds, the one that fetches nothing
+/// ahead (as contact_pairs chooses; the bits are the same).
+detail::contact_fn contact_kernel_of(const detail::contact_kernel_table& table, const box_view& boxes, std::size_t,
+                                     float) {
+    return boxes.kind() == store_kind::poses ? table.poses : table.corners;
+}
+detail::contact64_fn contact_kernel_of(const detail::contact_kernel_table& table, const box_view& boxes,
+                                       std::size_t rows_read, double) {
+    if (boxes.kind() == store_kind::corners) {
+        return table.corners64;
+    }
+    const bool in_l2 = rows_read * 8 * sizeof(double) <= detail::store_bytes_in_l2;
+    return in_l2 ? table.poses64_in_l2 : table.poses64;
 }
 
-/// The contact rows of one box set: both boxes of a pair read from `boxes`.
-detail::contact_rows rows_of(detail::contact_fn kernel, const box_view& boxes, float margin) {
-    return detail::contact_rows{kernel, boxes.floats(), boxes.stride(), boxes.floats(), boxes.stride(), margin};
+/// The checks find_contacts makes before any work: the rows' precision, the
+/// method on their kind, and that contacts accept every row (the query
+/// checks the rows themselves). Returns the contact kernel.
+template <class Real>
+typename detail::contact_types<Real>::kernel checked_kernel(const box_view& boxes, const collide_options& options,
+                                                            const char* call, std::size_t rows_read) {
+    require_precision<Real>(boxes, call);
+    const detail::contact_kernel_table& table = detail::contact_kernels_for(resolve_backend(options.use));
+    if constexpr (std::is_same<Real, double>::value) {
+        detail::require_method_on_double_rows(options, boxes.kind());
+    } else {
+        detail::require_method_on(options, boxes.kind());
+    }
+    require_accepted<Real>(boxes);
+    return contact_kernel_of(table, boxes, rows_read, Real(0));
+}
+
+/// The rows of one box set as the contact kernels read them.
+template <class Real>
+struct kernel_rows {
+    const Real* values;
+    std::size_t stride;  ///< in values
+};
+
+/// Float rows and 8-double records in place; rect_pose64 rows (six doubles)
+/// copied into `records` (the double kernels read whole records only).
+template <class Real>
+kernel_rows<Real> kernel_rows_of(const box_view& boxes, detail::double_pose_records* records, unsigned threads) {
+    if constexpr (std::is_same<Real, float>::value) {
+        return {boxes.floats(), boxes.stride()};
+    } else {
+        if (boxes.stride() == 8 || boxes.size() == 0) {
+            return {boxes.doubles(), 8};
+        }
+        return {records->copy(boxes.doubles(), boxes.size(), threads), 8};
+    }
+}
+
+/// The contact rows of a pair's sets a and b (the same set within one).
+template <class Real>
+detail::contact_rows_of<Real> contact_rows_for(typename detail::contact_types<Real>::kernel kernel,
+                                               const kernel_rows<Real>& a, const kernel_rows<Real>& b, Real margin) {
+    return detail::contact_rows_of<Real>{kernel, a.values, a.stride, b.values, b.stride, margin};
 }
 
 /// What find_contacts with a margin keeps, kept between calls. A call that
@@ -203,22 +292,26 @@ private:
 
 /// find_contacts once its checks have passed, margin 0: the method's pairs
 /// sorted straight into found.pairs, then their contacts into found.contacts.
-void touching_contacts(const box_view& boxes, const collide_options& options, detail::contact_fn kernel,
-                       scene_contacts& found) {
+template <class Real, class Found>
+void touching_contacts(const box_view& boxes, const collide_options& options,
+                       typename detail::contact_types<Real>::kernel kernel, detail::near_contacts& kept,
+                       Found& found) {
     detail::spare_search spare(options);
     detail::pair_search& search = spare.get();
     search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), found.pairs);
-    detail::contacts_of_answer(rows_of(kernel, boxes, 0.0f), found.pairs, found.contacts, options.threads);
+    const kernel_rows<Real> rows = kernel_rows_of<Real>(boxes, &kept.records64, options.threads);
+    detail::contacts_of_answer(contact_rows_for(kernel, rows, rows, Real(0)), found.pairs, found.contacts,
+                               options.threads);
 }
 
 /// find_contacts once its checks have passed, with a margin: the method's
 /// pairs, then the pairs of widened stand-ins (obbsat/find_contacts.hpp says
 /// why they lose none), each kept when the method reported it or its contact
 /// at the margin has a point.
-void near_contacts_of(const box_view& boxes, const collide_options& options, detail::contact_fn kernel, float margin,
-                      scene_contacts& found) {
-    kept_near_contacts kept;
-    detail::near_contacts& near = kept.get();
+template <class Real, class Found>
+void near_contacts_of(const box_view& boxes, const collide_options& options,
+                      typename detail::contact_types<Real>::kernel kernel, Real margin, detail::near_contacts& near,
+                      Found& found) {
     // The method's pairs first: this query also checks every box.
     {
         detail::spare_search spare(options);
@@ -238,7 +331,56 @@ void near_contacts_of(const box_view& boxes, const collide_options& options, det
             search.bound_doubles(detail::input_of(box_view(near.stand_ins).with_filters(boxes.filters()), nullptr)),
             near.candidates);
     }
-    near.answer(rows_of(kernel, boxes, margin), options.threads, found);
+    const kernel_rows<Real> rows = kernel_rows_of<Real>(boxes, &near.records64, options.threads);
+    near.answer(contact_rows_for(kernel, rows, rows, margin), options.threads, found);
+}
+
+/// find_contacts into `found` on `Real` rows (scene_contacts or scene_contacts64).
+template <class Real, class Found>
+void find_contacts_into(const box_view& boxes, const collide_options& options, Real margin, Found& found,
+                        const char* call) {
+    if (!(margin >= Real(0)) || !std::isfinite(margin)) {
+        throw invalid_input(std::string(call) + ": margin is " + shown(margin) + ": it must be finite and >= 0");
+    }
+    const detail::executor_scope scope(options.executor);
+    const auto kernel = checked_kernel<Real>(boxes, options, call, boxes.size());
+    kept_near_contacts kept;
+    try {
+        if (margin == Real(0)) {
+            touching_contacts<Real>(boxes, options, kernel, kept.get(), found);
+        } else {
+            near_contacts_of<Real>(boxes, options, kernel, margin, kept.get(), found);
+        }
+    } catch (const invalid_input&) {
+        throw;  // a box the query refused: found is as it was
+    } catch (...) {
+        // Out of memory once found may be partly written: never half an answer.
+        found.pairs.clear();
+        found.contacts.clear();
+        throw;
+    }
+}
+
+/// A pair_finder frame with contacts on `Real` rows into `answer`: every
+/// check first (so that a refused call changes nothing), then the frame's
+/// pairs, then their contacts on this frame's rows. `records_a` and
+/// `records_b` hold rect_pose64 rows as records (unused for float rows).
+template <class Real, class Found>
+void frame_contacts_of(pair_finder& finder, const collide_options& options, const box_view& a, const box_view* b,
+                       const char* call, detail::double_pose_records* records_a,
+                       detail::double_pose_records* records_b, Found& answer) {
+    const detail::executor_scope scope(options.executor);
+    const std::size_t rows_read = a.size() + (b == nullptr ? 0 : b->size());
+    const auto kernel = checked_kernel<Real>(a, options, call, rows_read);
+    if (b != nullptr) {
+        checked_kernel<Real>(*b, options, call, rows_read);
+    }
+    const std::vector<pair_index>& pairs = b == nullptr ? finder.find(a) : finder.find(a, *b);
+    answer.pairs.assign(pairs.begin(), pairs.end());
+    const kernel_rows<Real> rows_a = kernel_rows_of<Real>(a, records_a, options.threads);
+    const kernel_rows<Real> rows_b = b == nullptr ? rows_a : kernel_rows_of<Real>(*b, records_b, options.threads);
+    detail::contacts_of_answer(contact_rows_for(kernel, rows_a, rows_b, Real(0)), answer.pairs, answer.contacts,
+                               options.threads);
 }
 
 }  // namespace
@@ -252,25 +394,17 @@ scene_contacts find_contacts(box_view boxes, const collide_options& options, flo
 }
 
 void find_contacts(box_view boxes, const collide_options& options, float margin, scene_contacts& found) {
-    if (!(margin >= 0.0f) || !std::isfinite(margin)) {
-        throw invalid_input("margin must be finite and >= 0");
-    }
-    const detail::executor_scope scope(options.executor);
-    const detail::contact_fn kernel = checked_kernel(boxes, options, "find_contacts");
-    try {
-        if (margin == 0.0f) {
-            touching_contacts(boxes, options, kernel, found);
-        } else {
-            near_contacts_of(boxes, options, kernel, margin, found);
-        }
-    } catch (const invalid_input&) {
-        throw;  // a box the query refused: found is as it was
-    } catch (...) {
-        // Out of memory once found may be partly written: never half an answer.
-        found.pairs.clear();
-        found.contacts.clear();
-        throw;
-    }
+    find_contacts_into(boxes, options, margin, found, "find_contacts");
+}
+
+scene_contacts64 find_contacts64(box_view boxes, const collide_options& options, double margin) {
+    scene_contacts64 found;
+    find_contacts_into(boxes, options, margin, found, "find_contacts64");
+    return found;
+}
+
+void find_contacts(box_view boxes, const collide_options& options, double margin, scene_contacts64& found) {
+    find_contacts_into(boxes, options, margin, found, "find_contacts64");
 }
 
 const scene_contacts& pair_finder::find_contacts(box_view boxes) {
@@ -281,27 +415,40 @@ const scene_contacts& pair_finder::find_contacts(box_view a, box_view b) {
     return frame_contacts(a, &b);
 }
 
+const scene_contacts64& pair_finder::find_contacts64(box_view boxes) {
+    return frame_contacts64(boxes, nullptr);
+}
+
+const scene_contacts64& pair_finder::find_contacts64(box_view a, box_view b) {
+    return frame_contacts64(a, &b);
+}
+
 const scene_contacts& pair_finder::frame_contacts(const box_view& a, const box_view* b) {
     if (!search_) {
         throw invalid_input(
             "pair_finder::find_contacts on a moved-from pair_finder: assign it a pair_finder before calling it again");
     }
-    const collide_options& options = search_->options();
-    const detail::executor_scope scope(options.executor);
-    // Every check before the frame, so that a refused call changes nothing.
-    const detail::contact_fn kernel = checked_kernel(a, options, "pair_finder::find_contacts");
-    if (b != nullptr) {
-        checked_kernel(*b, options, "pair_finder::find_contacts");
-    }
-    const std::vector<pair_index>& pairs = b == nullptr ? find(a) : find(a, *b);
     if (!contacts_) {
         contacts_ = std::make_unique<scene_contacts>();
     }
-    contacts_->pairs.assign(pairs.begin(), pairs.end());
-    const box_view& rows_b = b == nullptr ? a : *b;
-    detail::contacts_of_answer(detail::contact_rows{kernel, a.floats(), a.stride(), rows_b.floats(), rows_b.stride(), 0.0f},
-                               contacts_->pairs, contacts_->contacts, options.threads);
+    frame_contacts_of<float>(*this, search_->options(), a, b, "pair_finder::find_contacts", nullptr, nullptr,
+                             *contacts_);
     return *contacts_;
+}
+
+const scene_contacts64& pair_finder::frame_contacts64(const box_view& a, const box_view* b) {
+    if (!search_) {
+        throw invalid_input(
+            "pair_finder::find_contacts64 on a moved-from pair_finder: assign it a pair_finder before calling it "
+            "again");
+    }
+    if (!contacts64_) {
+        contacts64_ = std::make_unique<detail::frame_contacts64>();
+    }
+    detail::frame_contacts64& frame = *contacts64_;
+    frame_contacts_of<double>(*this, search_->options(), a, b, "pair_finder::find_contacts64", &frame.a_records,
+                              &frame.b_records, frame.answer);
+    return frame.answer;
 }
 
 }  // namespace obbsat

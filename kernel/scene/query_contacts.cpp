@@ -6,6 +6,7 @@
 #include "support/work_shares.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace obbsat::detail {
 
@@ -21,6 +22,9 @@ constexpr std::size_t part_alignment = 64;
 /// (96 KiB, which L2 holds and the allocator serves from its heap).
 constexpr std::size_t appended_block = 2048;
 
+/// Double pose rows copied into records by one thread at least this many a part.
+constexpr std::size_t min_rows_per_copy = 16384;
+
 /// Makes room in `out` for `count` elements without keeping its old ones
 /// (all are about to be overwritten): fresh memory, in huge pages for a
 /// large answer, only when its capacity is short.
@@ -35,8 +39,9 @@ void make_room(std::vector<T>& out, std::size_t count) {
 
 }  // namespace
 
-void contacts_of_pairs(const contact_rows& rows, const pair_index* pairs, std::size_t count, contact* out,
-                       unsigned threads) {
+template <class Real>
+void contacts_of_pairs(const contact_rows_of<Real>& rows, const pair_index* pairs, std::size_t count,
+                       contact_of_rows<Real>* out, unsigned threads) {
     const std::size_t parts = parts_for(count, threads, min_pairs_per_part);
     run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = aligned_share_of(count, part, parts, part_alignment);
@@ -47,8 +52,9 @@ void contacts_of_pairs(const contact_rows& rows, const pair_index* pairs, std::s
     });
 }
 
-void contacts_of_answer(const contact_rows& rows, const std::vector<pair_index>& pairs, std::vector<contact>& out,
-                        unsigned threads) {
+template <class Real>
+void contacts_of_answer(const contact_rows_of<Real>& rows, const std::vector<pair_index>& pairs,
+                        std::vector<contact_of_rows<Real>>& out, unsigned threads) {
     const std::size_t n = pairs.size();
     make_room(out, n);
     if (out.size() >= n || parts_for(n, threads, min_pairs_per_part) > 1) {
@@ -62,7 +68,7 @@ void contacts_of_answer(const contact_rows& rows, const std::vector<pair_index>&
     // One thread: the kept elements in place, then the rest appended.
     const std::size_t kept = out.size();
     contacts_of_pairs(rows, pairs.data(), kept, out.data(), 1);
-    scratch_vector<contact> block(std::min(appended_block, n - kept));
+    scratch_vector<contact_of_rows<Real>> block(std::min(appended_block, n - kept));
     for (std::size_t begin = kept; begin < n; begin += appended_block) {
         const std::size_t count = std::min(appended_block, n - begin);
         // The kernel fetches the rows of the pairs ahead only within one
@@ -78,12 +84,45 @@ void contacts_of_answer(const contact_rows& rows, const std::vector<pair_index>&
     }
 }
 
-void near_contacts::answer(const contact_rows& rows, unsigned threads, scene_contacts& found) {
-    const std::size_t n = candidates.size();
-    if (contacts_.size() < n) {
-        contacts_ = scratch_records<contact>(n);  // unwritten until the kernel writes; huge pages from 4 MiB
+template void contacts_of_pairs(const contact_rows&, const pair_index*, std::size_t, contact*, unsigned);
+template void contacts_of_pairs(const contact_rows64&, const pair_index*, std::size_t, contact64*, unsigned);
+template void contacts_of_answer(const contact_rows&, const std::vector<pair_index>&, std::vector<contact>&, unsigned);
+template void contacts_of_answer(const contact_rows64&, const std::vector<pair_index>&, std::vector<contact64>&,
+                                 unsigned);
+
+const double* double_pose_records::copy(const double* rows, std::size_t count, unsigned threads) {
+    if (records_.size() < 8 * count) {
+        records_ = scratch_records<double>(8 * count);  // unwritten until the copy writes it
     }
-    contacts_of_pairs(rows, candidates.data(), n, contacts_.data(), threads);
+    double* out = records_.data();
+    const std::size_t parts = parts_for(count, threads, min_rows_per_copy);
+    run_parts(parts, [&](std::size_t part) {
+        const auto [begin, end] = share_of(count, part, parts);
+        for (std::size_t row = begin; row < end; ++row) {
+            std::memcpy(out + 8 * row, rows + 6 * row, 6 * sizeof(double));
+            out[8 * row + 6] = 0.0;
+            out[8 * row + 7] = 0.0;
+        }
+    });
+    return out;
+}
+
+void near_contacts::answer(const contact_rows& rows, unsigned threads, scene_contacts& found) {
+    answer_of(rows, threads, contacts_, found);
+}
+
+void near_contacts::answer(const contact_rows64& rows, unsigned threads, scene_contacts64& found) {
+    answer_of(rows, threads, contacts64_, found);
+}
+
+template <class Real, class Found>
+void near_contacts::answer_of(const contact_rows_of<Real>& rows, unsigned threads,
+                              scratch_records<contact_of_rows<Real>>& contacts, Found& found) {
+    const std::size_t n = candidates.size();
+    if (contacts.size() < n) {
+        contacts = scratch_records<contact_of_rows<Real>>(n);  // unwritten until the kernel writes; huge pages from 4 MiB
+    }
+    contacts_of_pairs(rows, candidates.data(), n, contacts.data(), threads);
     // Both lists are sorted; a candidate stays when the method reported it
     // or its contact has a point. At most every candidate stays: room for
     // all of them costs no page the answer does not write.
@@ -102,9 +141,9 @@ void near_contacts::answer(const contact_rows& rows, unsigned threads, scene_con
         }
         const bool is_reported =
             next < reported.size() && reported[next].a == candidate.a && reported[next].b == candidate.b;
-        if (is_reported || contacts_[k].point_count > 0) {
+        if (is_reported || contacts[k].point_count > 0) {
             found.pairs.push_back(candidate);
-            found.contacts.push_back(contacts_[k]);
+            found.contacts.push_back(contacts[k]);
         }
     }
 }

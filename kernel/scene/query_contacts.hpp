@@ -28,30 +28,69 @@
 
 namespace obbsat::detail {
 
-/// The contact kernel on the caller's rows: box a of a pair is the row at
-/// a + a_stride * pair.a (in floats), box b the row at b + b_stride * pair.b.
-struct contact_rows {
-    contact_fn kernel = nullptr;
-    const float* a = nullptr;
-    std::size_t a_stride = 0;
-    const float* b = nullptr;
-    std::size_t b_stride = 0;
-    float margin = 0.0f;
+/// The contact kernel and contact of one precision: float rows give
+/// `contact`s (contact_fn), double rows `contact64`s (contact64_fn).
+template <class Real>
+struct contact_types;
+template <>
+struct contact_types<float> {
+    using kernel = contact_fn;
+    using value = contact;
+};
+template <>
+struct contact_types<double> {
+    using kernel = contact64_fn;
+    using value = contact64;
 };
 
+/// The contact of a pair of `Real` rows.
+template <class Real>
+using contact_of_rows = typename contact_types<Real>::value;
+
+/// The contact kernel on the caller's rows: box a of a pair is the row at
+/// a + a_stride * pair.a (in floats or doubles), box b the row at
+/// b + b_stride * pair.b. Double rows are whole 8-double records (the double
+/// kernels read no other stride).
+template <class Real>
+struct contact_rows_of {
+    typename contact_types<Real>::kernel kernel = nullptr;
+    const Real* a = nullptr;
+    std::size_t a_stride = 0;
+    const Real* b = nullptr;
+    std::size_t b_stride = 0;
+    Real margin = 0;
+};
+
+using contact_rows = contact_rows_of<float>;
+using contact_rows64 = contact_rows_of<double>;
+
 /// out[k] = the contact of pairs[k] on `rows`, k < count, split over `threads`.
-void contacts_of_pairs(const contact_rows& rows, const pair_index* pairs, std::size_t count, contact* out,
-                       unsigned threads);
+template <class Real>
+void contacts_of_pairs(const contact_rows_of<Real>& rows, const pair_index* pairs, std::size_t count,
+                       contact_of_rows<Real>* out, unsigned threads);
 
 /// `out` = the contact of each of `pairs` on `rows`, each element written
 /// once: `out` keeps its memory, its old elements are overwritten in place
 /// and only what it grows by is new (appended by one thread a block at a
 /// time; std::vector would zero it first, a second write of memory the
 /// caches do not hold).
-void contacts_of_answer(const contact_rows& rows, const std::vector<pair_index>& pairs, std::vector<contact>& out,
-                        unsigned threads);
+template <class Real>
+void contacts_of_answer(const contact_rows_of<Real>& rows, const std::vector<pair_index>& pairs,
+                        std::vector<contact_of_rows<Real>>& out, unsigned threads);
 
-/// What find_contacts with a margin keeps from one call to the next (a
+/// Double pose rows of the caller (rect_pose64, six doubles each) as the
+/// 8-double records the double contact kernels read: `records` keeps its
+/// memory from one call to the next.
+class double_pose_records {
+public:
+    /// Copies `count` rows of six doubles from `rows`, split over `threads`; returns the records.
+    const double* copy(const double* rows, std::size_t count, unsigned threads);
+
+private:
+    scratch_records<double> records_;
+};
+
+/// What find_contacts with a margin, or on double rows, keeps from one call to the next (a
 /// million boxes' worth is some 200 MB, and fresh memory costs the OS a page
 /// fault and a zeroing per page on every call), and the answer it makes of
 /// the candidates.
@@ -60,14 +99,31 @@ public:
     std::vector<pair_index> reported;    ///< the pairs the method reports, sorted by (a, b)
     std::vector<rect_pose> stand_ins;    ///< each box's widened stand-in
     std::vector<pair_index> candidates;  ///< the pairs of stand-ins, sorted by (a, b)
+    double_pose_records records64;       ///< double pose rows as records (at every margin)
 
     /// `found` = the candidates the method reported or whose contact on
     /// `rows` has a point, each with its contact; every reported pair is a
     /// candidate.
     void answer(const contact_rows& rows, unsigned threads, scene_contacts& found);
+    /// The same on double rows.
+    void answer(const contact_rows64& rows, unsigned threads, scene_contacts64& found);
 
 private:
-    scratch_records<contact> contacts_;  ///< the candidates' contacts
+    template <class Real, class Found>
+    void answer_of(const contact_rows_of<Real>& rows, unsigned threads, scratch_records<contact_of_rows<Real>>& contacts,
+                   Found& found);
+
+    scratch_records<contact> contacts_;      ///< the candidates' contacts on float rows
+    scratch_records<contact64> contacts64_;  ///< on double rows
+};
+
+/// What a pair_finder's frames with double contacts keep
+/// (pair_finder::find_contacts64): the answer, and the double pose rows of
+/// each set as records.
+struct frame_contacts64 {
+    scene_contacts64 answer;
+    double_pose_records a_records;
+    double_pose_records b_records;
 };
 
 /// Frees the near_contacts find_contacts keeps for its next call with a

@@ -7,12 +7,14 @@
 #include "store/finite_check.hpp"
 #include "store/pose_record.hpp"
 
+#include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
 #include <obbsat/rect.hpp>
 #include <obbsat/rect_pose.hpp>
 #include <obbsat/ref/bounds.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -83,6 +85,23 @@ inline std::size_t stride_of(const query_input& input, std::size_t id) {
 inline bool valid_row(store_kind kind, const float* v) {
     return kind == store_kind::poses ? valid_pose_row(v) : all_finite(v, 8);
 }
+
+/// True iff the doubles of one row are a valid rectangle of `kind`: finite,
+/// and for a pose no negative half extent and a rotation vector not zero.
+inline bool valid_row(store_kind kind, const double* v) {
+    const int values = kind == store_kind::poses ? 6 : 8;
+    bool finite = true;
+    for (int k = 0; k < values; ++k) {
+        finite &= std::isfinite(v[k]);
+    }
+    return kind == store_kind::poses ? finite && !(v[2] < 0.0) && !(v[3] < 0.0) && !(v[4] == 0.0 && v[5] == 0.0)
+                                     : finite;
+}
+
+/// Throws invalid_input unless options.test names a method that runs on
+/// double rows of `kind` (obbsat/collide64.hpp); the message names those
+/// methods. [double_bounds.cpp]
+void require_method_on_double_rows(const collide_options& options, store_kind kind);
 
 /// Double row `id` of the query: of the first set below a_count, else of the second.
 inline const double* double_row_at(const query_input& input, std::size_t id) {

@@ -879,21 +879,23 @@ class PairFinder:
         then ``against`` across two sets). A pair that persists from one
         call to the next keeps its points' feature keys while the same
         corners touch the same edges, so a solver can match them by key.
-        float32 only (a finder of ``precision="float64"`` raises ValueError),
-        as for :func:`contacts`; a row contacts do not accept raises
-        ValueError before the frame changes anything.
+        float64 rows (or double stores, or a finder of
+        ``precision="float64"``) are decided and their contacts computed in
+        double (``obbsat::pair_finder::find_contacts64``): the columns are
+        float64, each what :func:`contacts` gives in double for that pair;
+        nothing is rounded. A row contacts do not accept raises ValueError
+        before the frame changes anything.
 
         >>> finder = obbsat.PairFinder()
         >>> poses = np.array([[0, 0, 1, 1, 1, 0], [1.5, 0, 1, 1, 1, 0]], dtype=np.float32)
         >>> pairs, c = finder.find_contacts(poses)
         >>> pairs, c.depths
         (array([[0, 1]], dtype=uint32), array([0.5], dtype=float32))
+        >>> far = np.array([[500000.1, 0, 1, 1, 1, 0], [500002.0999, 0, 1, 1, 1, 0]])  # float64
+        >>> pairs, c = obbsat.PairFinder().find_contacts(far)
+        >>> pairs, c.depths.dtype
+        (array([[0, 1]], dtype=uint32), dtype('float64'))
         """
-        if self._precision == "float64":
-            raise ValueError("PairFinder.find_contacts: contacts are computed in float32 only; this finder was "
-                             "made with precision=\"float64\"")
-        sides = {"boxes": boxes} if against is None else {"boxes": boxes, "against": against}
-        _float32_only("PairFinder.find_contacts", self._precision, **sides)
         pairs, columns = self._frame("find_contacts", boxes, against, ids, against_ids, categories=categories,
                                      masks=masks, groups=groups, against_categories=against_categories,
                                      against_masks=against_masks, against_groups=against_groups)
@@ -1032,19 +1034,6 @@ def _margin(margin):
     return float(margin)
 
 
-def _float32_only(call, precision, **arrays):
-    """find_contacts is computed in float32 only: float64 data is refused
-    unless ``precision="float32"`` asks for it to be rounded."""
-    if precision not in (None, "float32"):
-        raise ValueError(f"{call}: the scene's contacts are computed in float32 only; "
-                         f"precision={precision!r} is not available")
-    if precision is None:
-        for what, array in arrays.items():
-            if _holds_float64(array):
-                raise ValueError(f"{call}: {what} holds float64 data, and the scene's contacts are computed in "
-                                 "float32 only: pass precision=\"float32\" to round it explicitly")
-
-
 def _boxes(boxes, precision=None):
     """The boxes of a pair-list call: a store as it is, an array as :func:`_form`
     gives it (float64 data stays float64 and is computed in double, unless
@@ -1171,6 +1160,12 @@ def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=
     ``obbsat/find_contacts.hpp``). Arguments and errors as :func:`find_pairs`
     and :func:`contacts`; the GIL is released.
 
+    float64 data (or a double store) stays float64, as in :func:`find_pairs`
+    and :func:`contacts`: the pairs are those of :func:`find_pairs` on the
+    doubles, each contact computed in double (``obbsat::find_contacts64``,
+    bit for bit :func:`contacts` on those pairs), the columns float64 and the
+    margin taken as a double; ``precision="float32"`` rounds the data first.
+
     >>> poses = np.array([[0, 0, 1, 1, 1, 0], [1.5, 0, 1, 1, 1, 0], [3.6, 0, 1, 1, 1, 0]], dtype=np.float32)
     >>> pairs, c = obbsat.find_contacts(poses)
     >>> pairs
@@ -1178,11 +1173,19 @@ def find_contacts(boxes, *, method="exact", margin=0.0, backend="auto", threads=
     >>> obbsat.find_contacts(poses, margin=0.2)[0]
     array([[0, 1],
            [1, 2]], dtype=uint32)
+    >>> far = np.array([[500000.1, 0, 1, 1, 1, 0], [500002.101, 0, 1, 1, 1, 0]])  # float64, 0.001 apart
+    >>> len(obbsat.find_contacts(far)[0]), len(obbsat.find_contacts(far, precision="float32")[0])
+    (0, 1)
+    >>> float(obbsat.find_contacts(far, margin=0.002)[1].depths[0])  # doctest: +ELLIPSIS
+    -0.00100000...
     """
     method = _SCENE_METHOD if method is None else method
     threads = _threads(threads)
     margin = _margin(margin)
-    _float32_only("find_contacts", precision, boxes=boxes)
-    _, boxes = _scene_form(boxes, "boxes", "float32")
-    pairs, columns = _core.find_contacts(boxes, method, margin, _backend(backend), threads)
+    precision = _precision(precision)
+    if precision is None and _holds_float64(boxes):
+        precision = "float64"
+    _, boxes = _scene_form(boxes, "boxes", precision or "float32")
+    call = _core.find_contacts64 if _is64(boxes) else _core.find_contacts
+    pairs, columns = call(boxes, method, margin, _backend(backend), threads)
     return pairs, Contacts(columns)

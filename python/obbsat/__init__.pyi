@@ -103,8 +103,8 @@ class PairFinder:
     ) -> npt.NDArray[np.uint32]: ...
     def find_contacts(
         self,
-        boxes: npt.ArrayLike | RectRecords | PoseRecords,
-        against: npt.ArrayLike | RectRecords | PoseRecords | None = ...,
+        boxes: npt.ArrayLike | RectRecords | PoseRecords | RectRecords64 | PoseRecords64,
+        against: npt.ArrayLike | RectRecords | PoseRecords | RectRecords64 | PoseRecords64 | None = ...,
         *,
         ids: npt.ArrayLike | None = ...,
         against_ids: npt.ArrayLike | None = ...,
@@ -166,7 +166,7 @@ def distances_stream(
     precision: str | None = ...,
 ) -> Distances: ...
 def find_contacts(
-    boxes: npt.ArrayLike | RectRecords | PoseRecords,
+    boxes: npt.ArrayLike | RectRecords | PoseRecords | RectRecords64 | PoseRecords64,
     *,
     method: str | None = ...,
     margin: float = ...,

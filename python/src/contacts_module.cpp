@@ -17,7 +17,8 @@
 //              unused points are all zero.
 //   distances: distance float32 (K,), a float32 (K, 2), b float32 (K, 2).
 // The *64 calls take float64 rows (copied once into pose_records64 or
-// rect_records64), compute in double and give the same columns in float64.
+// rect_records64; find_contacts64 reads them in place, or a double store),
+// compute in double and give the same columns in float64.
 //
 // Errors as in module.cpp: obbsat::invalid_input becomes IndexError when it
 // names a pair and ValueError otherwise; unsupported_backend stays itself
@@ -497,27 +498,47 @@ py::dict distances_of_stream64(const py::array& a, const py::array& b, const std
     });
 }
 
-/// The rows of an array, or a store, as the scene query's view.
-obbsat::box_view view_of(const py::object& boxes) {
-    if (py::isinstance<obbsat::pose_records>(boxes)) {
+/// The rows of an array, or a store, as the scene query's view: float32
+/// arrays and the float stores, or (`doubles`) float64 arrays and the double
+/// stores, read in place.
+obbsat::box_view view_of(const py::object& boxes, bool doubles) {
+    if (!doubles && py::isinstance<obbsat::pose_records>(boxes)) {
         return obbsat::box_view(boxes.cast<const obbsat::pose_records&>());
     }
-    if (py::isinstance<obbsat::rect_records>(boxes)) {
+    if (!doubles && py::isinstance<obbsat::rect_records>(boxes)) {
         return obbsat::box_view(boxes.cast<const obbsat::rect_records&>());
+    }
+    if (doubles && py::isinstance<obbsat::pose_records64>(boxes)) {
+        return obbsat::box_view(boxes.cast<const obbsat::pose_records64&>());
+    }
+    if (doubles && py::isinstance<obbsat::rect_records64>(boxes)) {
+        return obbsat::box_view(boxes.cast<const obbsat::rect_records64&>());
     }
     const py::array array = boxes.cast<py::array>();
     if (is_corner_array(array)) {
+        if (doubles) {
+            const auto [rects, count] = corners_in_place<obbsat::rect64>(array, "boxes");
+            return obbsat::box_view(rects, count);
+        }
         const auto [rects, count] = corners_in_place(array, "boxes");
         return obbsat::box_view(rects, count);
+    }
+    if (doubles) {
+        const auto [poses, count] = poses_in_place<obbsat::rect_pose64>(array, "boxes");
+        return obbsat::box_view(poses, count);
     }
     const auto [poses, count] = poses_in_place(array, "boxes");
     return obbsat::box_view(poses, count);
 }
 
 /// Every colliding pair of a scene (or within the margin) and its contact:
-/// (pairs uint32 (K, 2), contact columns).
-py::tuple find_contacts_of(const py::object& boxes, const std::string& method, double margin,
-                           const std::string& backend, long long threads) {
+/// (pairs uint32 (K, 2), contact columns); `Answer` scene_contacts for
+/// float32 rows, scene_contacts64 (float64 columns, computed in double) for
+/// float64 rows.
+template <class Answer>
+py::tuple scene_contacts_of(const py::object& boxes, const std::string& method, double margin,
+                            const std::string& backend, long long threads) {
+    constexpr bool doubles = std::is_same<Answer, obbsat::scene_contacts64>::value;
     const auto test = obbsat::parse_method(method);
     if (!test) {
         throw py::value_error("unknown method '" + method + "'");
@@ -526,9 +547,15 @@ py::tuple find_contacts_of(const py::object& boxes, const std::string& method, d
     options.test = *test;
     options.use = backend_named(backend);
     options.threads = threads_of(threads);
-    const obbsat::box_view view = view_of(boxes);  // the array or store in `boxes` outlives the call
-    obbsat::scene_contacts found;
-    without_gil([&] { found = obbsat::find_contacts(view, options, static_cast<float>(margin)); });
+    const obbsat::box_view view = view_of(boxes, doubles);  // the array or store in `boxes` outlives the call
+    Answer found;
+    without_gil([&] {
+        if constexpr (doubles) {
+            obbsat::find_contacts(view, options, margin, found);
+        } else {
+            obbsat::find_contacts(view, options, static_cast<float>(margin), found);
+        }
+    });
     const std::size_t count = found.pairs.size();
     py::array_t<std::uint32_t> pairs({static_cast<py::ssize_t>(count), py::ssize_t{2}});
     if (count > 0) {
@@ -538,15 +565,23 @@ py::tuple find_contacts_of(const py::object& boxes, const std::string& method, d
     return py::make_tuple(pairs, contact_dict(found.contacts.data(), count));
 }
 
-}  // namespace
-
-py::dict contact_dict(const obbsat::contact* contacts, std::size_t count) {
-    contact_columns<obbsat::contact> columns(count);
+/// The columns of `count` contacts (contact or contact64), filled without the GIL.
+template <class Contact>
+py::dict contact_dict_of(const Contact* contacts, std::size_t count) {
+    contact_columns<Contact> columns(count);
     {
         py::gil_scoped_release release;
         columns.fill(contacts);
     }
     return columns.dict();
+}
+
+}  // namespace
+
+py::dict contact_dict(const obbsat::contact* contacts, std::size_t count) { return contact_dict_of(contacts, count); }
+
+py::dict contact_dict(const obbsat::contact64* contacts, std::size_t count) {
+    return contact_dict_of(contacts, count);
 }
 
 void register_contacts(py::module_& m) {
@@ -568,7 +603,10 @@ void register_contacts(py::module_& m) {
           py::arg("threads"), "Distances of a pair list over float64 poses or corners, in double.");
     m.def("distances_of_stream64", &distances_of_stream64, py::arg("a"), py::arg("b"), py::arg("backend"),
           py::arg("threads"), "Distances of a[k] and b[k] over float64 rows, in double.");
-    m.def("find_contacts", &find_contacts_of, py::arg("boxes"), py::arg("method"), py::arg("margin"),
-          py::arg("backend"), py::arg("threads"),
+    m.def("find_contacts", &scene_contacts_of<obbsat::scene_contacts>, py::arg("boxes"), py::arg("method"),
+          py::arg("margin"), py::arg("backend"), py::arg("threads"),
           "Every colliding pair of a scene (or within the margin) with its contact: (pairs, columns).");
+    m.def("find_contacts64", &scene_contacts_of<obbsat::scene_contacts64>, py::arg("boxes"), py::arg("method"),
+          py::arg("margin"), py::arg("backend"), py::arg("threads"),
+          "find_contacts over float64 rows or a double store, computed in double: (pairs, float64 columns).");
 }

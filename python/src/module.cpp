@@ -922,21 +922,31 @@ public:
                                        }));
     }
 
-    /// find, with the contact of each pair (obbsat::pair_finder::find_contacts): (pairs, contact columns).
+    /// find, with the contact of each pair (obbsat::pair_finder::find_contacts,
+    /// or find_contacts64 on a double store's rows: float64 columns): (pairs, contact columns).
     template <class Store>
     py::tuple find_contacts(const py::object& boxes, const py::object& against, const py::object& ids,
                             const py::object& against_ids, const py::object& categories, const py::object& masks,
                             const py::object& groups, const py::object& against_categories,
                             const py::object& against_masks, const py::object& against_groups) {
+        constexpr bool doubles = std::is_same<typename store_traits<Store>::value, double>::value;
+        using contact_type = std::conditional_t<doubles, obbsat::contact64, obbsat::contact>;
         // The frame's contacts stay in the finder until its next call, which
         // waits for the mutex; the columns are copied out before.
-        std::vector<obbsat::contact> contacts;
+        std::vector<contact_type> contacts;
         std::vector<obbsat::pair_index> pairs = query<Store>(
             boxes, against, ids, against_ids, categories, masks, groups, against_categories, against_masks,
             against_groups, [&](const obbsat::box_view& a, const obbsat::box_view* b) {
-                const obbsat::scene_contacts& found = b ? finder_.find_contacts(a, *b) : finder_.find_contacts(a);
-                contacts = found.contacts;
-                return found.pairs;
+                if constexpr (doubles) {
+                    const obbsat::scene_contacts64& found =
+                        b ? finder_.find_contacts64(a, *b) : finder_.find_contacts64(a);
+                    contacts = found.contacts;
+                    return found.pairs;
+                } else {
+                    const obbsat::scene_contacts& found = b ? finder_.find_contacts(a, *b) : finder_.find_contacts(a);
+                    contacts = found.contacts;
+                    return found.pairs;
+                }
             });
         py::dict columns = contact_dict(contacts.data(), contacts.size());
         return py::make_tuple(pair_array(std::move(pairs)), columns);
@@ -1372,6 +1382,20 @@ PYBIND11_MODULE(_core, m) {
              py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
              py::arg("against_groups") = py::none(),
              "find_pairs_poses64 through the finder; the pairs are a copy of its buffer.")
+        .def("find_contacts_corners64", &scene_finder::find_contacts<obbsat::rect_records64>, py::arg("boxes"),
+             py::arg("against"), py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(),
+             py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
+             "find_corners64 with the double contact of each pair (obbsat::pair_finder::find_contacts64): "
+             "(pairs, float64 columns).")
+        .def("find_contacts_poses64", &scene_finder::find_contacts<obbsat::pose_records64>, py::arg("boxes"),
+             py::arg("against"), py::arg("ids"), py::arg("against_ids"), py::arg("categories") = py::none(),
+             py::arg("masks") = py::none(), py::arg("groups") = py::none(),
+             py::arg("against_categories") = py::none(), py::arg("against_masks") = py::none(),
+             py::arg("against_groups") = py::none(),
+             "find_poses64 with the double contact of each pair (obbsat::pair_finder::find_contacts64): "
+             "(pairs, float64 columns).")
         .def("track_events", &scene_finder::track_events, py::arg("on"),
              "Turns the begin/end events on (the next query begins every pair) or off.")
         .def("began", [](scene_finder& f) { return f.events(true); },

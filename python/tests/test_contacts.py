@@ -235,14 +235,90 @@ def test_pair_finder_contacts_keep_the_feature_keys_of_a_persisting_contact():
         keys = c.features.tolist()
 
 
-def test_pair_finder_contacts_refuse_float64():
+def test_pair_finder_contacts_of_float64_stay_float64():
     poses = np.array([square(0, 0), square(1.5, 0)], dtype=np.float64)
-    with pytest.raises(ValueError, match="float32"):
-        obbsat.PairFinder().find_contacts(poses)
-    with pytest.raises(ValueError, match="float32"):
-        obbsat.PairFinder(precision="float64").find_contacts(poses)
-    pairs, _ = obbsat.PairFinder(precision="float32").find_contacts(poses)
-    assert pairs.tolist() == [[0, 1]]
+    for finder in (obbsat.PairFinder(), obbsat.PairFinder(precision="float64")):
+        pairs, c = finder.find_contacts(poses)
+        assert pairs.tolist() == [[0, 1]] and c.depths.dtype == np.float64
+        same_contacts(obbsat.contacts(poses, pairs), c)
+    pairs, c = obbsat.PairFinder(precision="float32").find_contacts(poses)
+    assert pairs.tolist() == [[0, 1]] and c.depths.dtype == np.float32
+
+
+def test_find_contacts_of_float64_equals_contacts_in_double_on_every_backend_and_thread_count():
+    """At UTM-like coordinates, where float32 would decide otherwise: the pairs
+    are find_pairs' on the doubles (with a margin, those and every pair whose
+    double contact has points), each contact bit for bit obbsat.contacts' in
+    double, on every backend and thread count, from arrays and double stores."""
+    poses, _ = utm_scene()
+    for margin in (0.0, 0.05):
+        pairs, c = obbsat.find_contacts(poses, margin=margin, backend="scalar")
+        assert c.depths.dtype == np.float64 and len(pairs) > 50
+        same_contacts(obbsat.contacts(poses, pairs, margin=margin), c)
+        if margin == 0.0:
+            assert pairs.tolist() == obbsat.find_pairs(poses).tolist()
+        else:
+            touching = obbsat.find_pairs(poses).tolist()
+            assert all(c.counts[k] > 0 or p in touching for k, p in enumerate(pairs.tolist()))
+            assert len(pairs) > len(touching)
+        for backend in obbsat.backends():
+            for threads in (1, 2, 3):
+                got_pairs, got = obbsat.find_contacts(poses, margin=margin, backend=backend, threads=threads)
+                assert got_pairs.tolist() == pairs.tolist()
+                same_contacts(got, c)
+        store_pairs, store_c = obbsat.find_contacts(obbsat.records(poses), margin=margin)
+        assert store_pairs.tolist() == pairs.tolist()
+        same_contacts(store_c, c)
+    # Rounded to float32, the scene's pairs differ: the double path is not float32 in disguise.
+    assert obbsat.find_contacts(poses, precision="float32")[0].tolist() != obbsat.find_pairs(poses).tolist()
+
+
+def test_find_contacts_of_float64_corners():
+    corners = np.array([[0, 1, 2, 1, 2, 0, 0, 0], [1, 2, 3, 2, 3, 0.5, 1, 0.5], [2.05, 1, 3, 1, 3, 0, 2.05, 0]],
+                       dtype=np.float64) + 5e5
+    pairs, c = obbsat.find_contacts(corners)
+    assert pairs.tolist() == [[0, 1], [1, 2]] and c.depths.dtype == np.float64
+    same_contacts(obbsat.contacts(corners, pairs), c)
+    near_pairs, near = obbsat.find_contacts(corners, margin=0.1)
+    assert near_pairs.tolist() == [[0, 1], [0, 2], [1, 2]]
+    same_contacts(obbsat.contacts(corners, near_pairs, margin=0.1), near)
+
+
+def test_pair_finder_frames_with_float64_contacts():
+    poses, _ = utm_scene()
+    finder = obbsat.PairFinder(threads=2)
+    rng = np.random.default_rng(12)
+    ids = np.arange(len(poses), dtype=np.uint64) + 500
+    rows = poses.copy()
+    for frame in range(6):
+        rows[:, :2] += 0.002 * rng.standard_normal((len(rows), 2))
+        if frame == 3:  # a box goes (swap-removed), one comes
+            rows[10], ids[10] = rows[-1], ids[-1]
+            rows = np.vstack([rows[:-1], rows[5] + [0.3, 0, 0, 0, 0, 0]])
+            ids = np.append(ids[:-1], np.uint64(99999))
+        pairs, c = finder.find_contacts(rows, ids=ids)
+        assert c.depths.dtype == np.float64
+        assert pairs.tolist() == obbsat.find_pairs(rows).tolist()
+        same_contacts(obbsat.contacts(rows, pairs), c)
+    a, b = rows[:150], rows[150:]
+    pairs, c = finder.find_contacts(a, obbsat.records(b))
+    assert pairs.tolist() == obbsat.find_pairs(a, b).tolist() and len(pairs) > 0
+    same_contacts(obbsat.contacts_stream(a[pairs[:, 0]], b[pairs[:, 1]]), c)
+
+
+def test_float64_scene_contacts_errors_name_the_row():
+    poses, _ = utm_scene()
+    bad = poses.copy()
+    bad[7, 1] = np.nan
+    with pytest.raises(ValueError, match="pose 7"):
+        obbsat.find_contacts(bad)
+    with pytest.raises(ValueError, match="pose 7"):
+        obbsat.PairFinder().find_contacts(bad)
+    for margin in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="margin"):
+            obbsat.find_contacts(poses, margin=margin)
+    with pytest.raises(ValueError, match="does not run on double"):
+        obbsat.find_contacts(poses, method="sat4")
 
 
 # --- Errors ----------------------------------------------------------------------
@@ -322,12 +398,10 @@ def test_float64_boxes_are_computed_in_double_unless_rounding_is_asked_for():
             assert getattr(call(precision="float32"), column).dtype == np.float32
     rounded = obbsat.contacts(poses, [[0, 1]], precision="float32")
     same_contacts(rounded, obbsat.contacts(poses.astype(np.float32), [[0, 1]]))
-    # The scene query is float only: float64 is refused unless rounding is asked for.
-    with pytest.raises(ValueError, match="float64"):
-        obbsat.find_contacts(poses)
-    with pytest.raises(ValueError, match="float32 only"):
-        obbsat.find_contacts(poses, precision="float64")
-    obbsat.find_contacts(poses, precision="float32")
+    # The scene's contacts too: float64 stays float64 unless rounding is asked for.
+    assert obbsat.find_contacts(poses)[1].depths.dtype == np.float64
+    assert obbsat.find_contacts(poses, precision="float64")[1].depths.dtype == np.float64
+    assert obbsat.find_contacts(poses, precision="float32")[1].depths.dtype == np.float32
     # A float32 store cannot give float64 rows.
     with pytest.raises(ValueError, match="float64"):
         obbsat.contacts(obbsat.records(poses.astype(np.float32)), [[0, 1]], precision="float64")

@@ -208,7 +208,7 @@ def test_methods_without_a_double_form_are_refused_on_double_stores(scene):
 def test_contacts_and_distances_over_a_double_store_are_the_float64_arrays(scene):
     """Contacts and distances over a double store are computed in double, bit
     for bit those of its float64 rows; asking for float32 is refused, never
-    rounded; the scene's contacts are float32 only and refuse it."""
+    rounded; the scene's contacts of a double store are in double too."""
     poses, rects, pose_store, rect_store, pairs = scene
     for rows, store in ((poses, pose_store), (rects, rect_store)):
         for call in (obbsat.contacts, obbsat.distances):
@@ -216,8 +216,11 @@ def test_contacts_and_distances_over_a_double_store_are_the_float64_arrays(scene
             for field in type(want).__slots__:
                 a, b = getattr(got, field), getattr(want, field)
                 assert a.dtype == b.dtype and a.tobytes() == b.tobytes(), field
-        with pytest.raises(ValueError, match=r"float64"):
-            obbsat.find_contacts(store)
+        store_pairs, store_c = obbsat.find_contacts(store)
+        rows_pairs, rows_c = obbsat.find_contacts(rows)
+        assert store_pairs.tolist() == rows_pairs.tolist() and store_c.depths.dtype == np.float64
+        assert store_c.depths.tobytes() == rows_c.depths.tobytes()
+        assert store_c.points.tobytes() == rows_c.points.tobytes()
         for call in (lambda: obbsat.contacts(store, pairs, precision="float32"),
                      lambda: obbsat.distances(store, pairs, precision="float32"),
                      lambda: obbsat.find_contacts(store, precision="float32")):

@@ -7,6 +7,7 @@
 
 #include <obbsat/backend.hpp>
 #include <obbsat/contact.hpp>
+#include <obbsat/collide.hpp>
 #include <obbsat/find_contacts.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pose_records.hpp>
@@ -363,13 +364,107 @@ TEST(ContactsDouble, CornerAndDistanceLinesAreTheDoubleValuesBitForBit) {
     EXPECT_GT(distances[1].distance, 4.0);
 }
 
+/// Checks that `out` holds one line per pair of `expected`, in order, each
+/// the pair and the double contact's fields bit for bit.
+void expect_double_lines(const std::string& out, const obbsat::scene_contacts64& expected) {
+    const std::vector<std::string> lines = lines_of(out);
+    ASSERT_EQ(lines.size(), expected.pairs.size());
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const obbsat::contact64& c = expected.contacts[k];
+        const std::vector<std::string> f = fields_of(lines[k]);
+        ASSERT_EQ(f.size(), 12u) << lines[k];
+        EXPECT_EQ(f[0] + "," + f[1], std::to_string(expected.pairs[k].a) + "," + std::to_string(expected.pairs[k].b));
+        EXPECT_EQ(double_of(f[2]), c.nx) << lines[k];
+        EXPECT_EQ(double_of(f[3]), c.ny) << lines[k];
+        EXPECT_EQ(double_of(f[4]), c.depth) << lines[k];
+        EXPECT_EQ(f[5], std::to_string(c.point_count)) << lines[k];
+        for (std::uint32_t p = 0; p < c.point_count; ++p) {
+            EXPECT_EQ(double_of(f[6 + 3 * p]), c.points[p].x) << lines[k];
+            EXPECT_EQ(double_of(f[7 + 3 * p]), c.points[p].y) << lines[k];
+            EXPECT_EQ(double_of(f[8 + 3 * p]), c.points[p].separation) << lines[k];
+        }
+    }
+}
+
+TEST(ContactsDouble, SceneLinesAreFindContacts64BitForBit) {
+    // Without --pairs, --precision double writes every colliding pair of the
+    // file (and with a margin every pair within it) with its double contact:
+    // find_contacts64's answer on the double store, on every backend.
+    scratch s;
+    const std::vector<obbsat::rect_pose64> rows = utm_rows();
+    write_file(s.file("poses.csv"), pose64_file(rows));
+    const obbsat::pose_records64 store(rows);
+    for (const double margin : {0.0, 0.1}) {
+        SCOPED_TRACE("margin " + std::to_string(margin));
+        obbsat::collide_options options;
+        options.test = obbsat::method::exact;
+        const obbsat::scene_contacts64 expected = obbsat::find_contacts64(store, options, margin);
+        ASSERT_GT(expected.pairs.size(), 10u);
+        const std::string base = "contacts --poses poses.csv --precision double --margin " + std::to_string(margin);
+        const auto r = s.run(base + " --threads 2");
+        ASSERT_EQ(r.status, 0) << r.err;
+        expect_double_lines(r.out, expected);
+        for (const obbsat::backend b : obbsat::compiled_backends()) {
+            if (obbsat::cpu_supports(b)) {
+                EXPECT_EQ(s.run(base + " --backend " + obbsat::backend_name(b)).out, r.out) << obbsat::backend_name(b);
+            }
+        }
+        // In float the same file gives other numbers.
+        EXPECT_NE(s.run("contacts --poses poses.csv --margin " + std::to_string(margin)).out, r.out);
+    }
+    // Another method on double poses.
+    obbsat::collide_options local;
+    local.test = obbsat::method::local;
+    const auto r = s.run("contacts --poses poses.csv --precision double --method local");
+    ASSERT_EQ(r.status, 0) << r.err;
+    expect_double_lines(r.out, obbsat::find_contacts64(store, local));
+    // A bad row is named with its file and line, and nothing is written.
+    std::vector<obbsat::rect_pose64> bad = rows;
+    bad[7].rotation = {0.0, 0.0};
+    write_file(s.file("bad.csv"), pose64_file(bad));
+    const auto refused = s.run("contacts --poses bad.csv --precision double");
+    EXPECT_EQ(refused.status, 2);
+    EXPECT_NE(refused.err.find("bad.csv:8:"), std::string::npos) << refused.err;
+    EXPECT_EQ(refused.out, "");
+}
+
+TEST(ContactsDouble, SceneOfDoubleCornersWithAHeader) {
+    scratch s;
+    std::vector<obbsat::rect64> rects;
+    std::string text = "# double corners\n";
+    char line[400];
+    for (const obbsat::rect_pose64& p : utm_rows()) {
+        const double ux = p.rotation.x * p.half_extents.x, uy = p.rotation.y * p.half_extents.x;
+        const double vx = -p.rotation.y * p.half_extents.y, vy = p.rotation.x * p.half_extents.y;
+        const obbsat::rect64 q{{p.center.x - ux + vx, p.center.y - uy + vy},
+                               {p.center.x + ux + vx, p.center.y + uy + vy},
+                               {p.center.x + ux - vx, p.center.y + uy - vy},
+                               {p.center.x - ux - vx, p.center.y - uy - vy}};
+        rects.push_back(q);
+        std::snprintf(line, sizeof line, "%a,%a,%a,%a,%a,%a,%a,%a\n", q.ul.x, q.ul.y, q.ur.x, q.ur.y, q.lr.x,
+                      q.lr.y, q.ll.x, q.ll.y);
+        text += line;
+    }
+    write_file(s.file("rects.csv"), text);
+    const auto r = s.run("contacts --rects rects.csv --precision double --margin 0.05 --header");
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(r.out.rfind("i,j,nx,ny,depth,count,x1,y1,s1,x2,y2,s2\n", 0), 0u) << r.out;
+    obbsat::collide_options options;
+    options.test = obbsat::method::exact;
+    const obbsat::scene_contacts64 expected = obbsat::find_contacts64(rects, options, 0.05);
+    ASSERT_FALSE(expected.pairs.empty());
+    expect_double_lines(r.out.substr(r.out.find('\n') + 1), expected);
+}
+
 TEST(ContactsDouble, UsageErrors) {
     scratch s;
     write_file(s.file("poses.csv"), "0,0,1,1,1,0\n1.5,0,1,1,1,0\n");
     write_file(s.file("pairs.csv"), "0,1\n");
-    auto r = s.run("contacts --poses poses.csv --precision double");
+    // A method that does not run on double poses is refused before the file is read.
+    auto r = s.run("contacts --poses poses.csv --precision double --method sat4");
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("--pairs"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--precision double"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
     // Every backend this CPU runs gives the scalar backend's lines, in double too.
     for (const char* command : {"contacts", "distance"}) {
         const std::string base = std::string(command) + " --poses poses.csv --pairs pairs.csv --precision double";

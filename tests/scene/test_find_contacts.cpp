@@ -30,6 +30,7 @@ namespace {
 using obbsat::contact;
 using obbsat::pair_index;
 using contact_scenes::exact_on;
+using contact_scenes::expect_same;
 using contact_scenes::scene_of;
 
 std::vector<obbsat::rect_pose> small_scene(std::uint64_t seed) {
@@ -41,51 +42,11 @@ std::vector<obbsat::rect_pose> small_scene(std::uint64_t seed) {
     return obbsat::make_pose_scene(spec);
 }
 
-/// Every pair i < j of `store`.
-template <class Store>
-std::vector<pair_index> all_pairs(const Store& store) {
-    std::vector<pair_index> pairs;
-    for (std::uint32_t i = 0; i < store.size(); ++i) {
-        for (std::uint32_t j = i + 1; j < store.size(); ++j) {
-            pairs.push_back({i, j});
-        }
-    }
-    return pairs;
-}
-
 /// What find_contacts must give, from every pair decided one by one.
 template <class Store>
 obbsat::scene_contacts expected_contacts(const Store& store, float margin) {
-    const std::vector<pair_index> pairs = all_pairs(store);
-    std::vector<std::uint8_t> verdicts(pairs.size());
-    obbsat::collide_options exact;
-    exact.test = obbsat::method::exact;
-    obbsat::collide_pairs(store, pairs.data(), pairs.size(), verdicts.data(), exact);
-    obbsat::contact_options options;
-    options.margin = margin;
-    options.use = obbsat::backend::scalar;
-    const std::vector<contact> contacts = obbsat::contact_pairs(store, pairs, options);
-    obbsat::scene_contacts expected;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (verdicts[k] || (margin > 0 && contacts[k].point_count > 0)) {
-            expected.pairs.push_back(pairs[k]);
-            expected.contacts.push_back(contacts[k]);
-        }
-    }
-    return expected;
+    return contact_scenes::contacts_decided_alone<obbsat::scene_contacts, obbsat::contact_options>(store, margin);
 }
-
-void expect_same(const obbsat::scene_contacts& found, const obbsat::scene_contacts& expected) {
-    ASSERT_EQ(found.pairs.size(), expected.pairs.size());
-    ASSERT_EQ(found.contacts.size(), expected.contacts.size());
-    for (std::size_t k = 0; k < found.pairs.size(); ++k) {
-        ASSERT_EQ(found.pairs[k].a, expected.pairs[k].a) << "row " << k;
-        ASSERT_EQ(found.pairs[k].b, expected.pairs[k].b) << "row " << k;
-        EXPECT_EQ(std::memcmp(&found.contacts[k], &expected.contacts[k], sizeof(contact)), 0)
-            << "pair " << found.pairs[k].a << "," << found.pairs[k].b;
-    }
-}
-
 
 TEST(FindContacts, PosesMatchEveryPairDecidedAloneWithAndWithoutMargin) {
     const std::vector<obbsat::rect_pose> rows = small_scene(5);

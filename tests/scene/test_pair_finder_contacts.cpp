@@ -102,52 +102,20 @@ TEST(PairFinderContacts, AcrossTwoSetsTheRowsOfEach) {
     }
 }
 
-/// The contact of the pair of boxes with ids `x` < `y` in a frame with ids.
-const contact* contact_by_id(const obbsat::scene_contacts& found, const std::vector<std::uint64_t>& ids,
-                             std::uint64_t x, std::uint64_t y) {
-    for (std::size_t k = 0; k < found.pairs.size(); ++k) {
-        if (ids[found.pairs[k].a] == x && ids[found.pairs[k].b] == y) {
-            return &found.contacts[k];
-        }
-    }
-    return nullptr;
-}
-
 TEST(PairFinderContacts, APersistingContactKeepsItsFeatureKeys) {
     // A box resting on a long plank slides along it, frame by frame, while
     // other boxes come and go around them (rows follow ids): the same two
     // corners of the box touch the plank's top face throughout, so both
     // points keep their feature keys from one frame to the next.
-    constexpr std::uint64_t plank = 100, box = 200;
     obbsat::pair_finder finder(exact_on(obbsat::backend::automatic, 1));
     std::vector<obbsat::contact_feature> last;
     for (int f = 0; f < 12; ++f) {
         std::vector<obbsat::rect_pose> rows;
         std::vector<std::uint64_t> ids;
-        // Frame f has f % 3 boxes far away before the pair, and a new one after it.
-        for (int k = 0; k < f % 3; ++k) {
-            rows.push_back({{50.0f + 3.0f * static_cast<float>(k), 50.0f}, {1, 1}, {1, 0}});
-            ids.push_back(static_cast<std::uint64_t>(1000 + k));
-        }
-        rows.push_back({{0, 0}, {8, 0.5f}, {1, 0}});
-        ids.push_back(plank);
-        rows.push_back({{-3.0f + 0.5f * static_cast<float>(f), 0.95f}, {0.5f, 0.5f}, {1, 0}});
-        ids.push_back(box);
-        rows.push_back({{-50.0f, -50.0f - static_cast<float>(f)}, {1, 1}, {1, 0}});
-        ids.push_back(static_cast<std::uint64_t>(2000 + f));
-
+        contact_scenes::plank_frame(f, 0.0, 0.0, rows, ids);
         const obbsat::scene_contacts& got = finder.find_contacts(obbsat::box_view(rows).with_ids(ids));
         expect_frame(got, obbsat::find_pairs(rows, exact_on(obbsat::backend::scalar, 1)), rows, rows);
-        const contact* c = contact_by_id(got, ids, plank, box);
-        ASSERT_NE(c, nullptr) << "frame " << f;
-        ASSERT_EQ(c->point_count, 2u) << "frame " << f;
-        const std::vector<obbsat::contact_feature> keys = {c->points[0].feature, c->points[1].feature};
-        if (!last.empty()) {
-            for (std::size_t p = 0; p < 2; ++p) {
-                EXPECT_EQ(std::memcmp(&keys[p], &last[p], sizeof keys[p]), 0) << "frame " << f << ", point " << p;
-            }
-        }
-        last = keys;
+        contact_scenes::expect_plank_keys_kept(got, ids, f, last);
     }
 }
 

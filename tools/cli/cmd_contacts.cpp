@@ -15,6 +15,7 @@
 #include "io/status_line.hpp"
 
 #include <obbsat/backend.hpp>
+#include <obbsat/collide64.hpp>
 #include <obbsat/contact.hpp>
 #include <obbsat/find_contacts.hpp>
 #include <obbsat/find_pairs.hpp>
@@ -46,16 +47,17 @@ const std::vector<option_spec>& contacts_option_specs() {
 }
 
 /// The --method value: which verdict decides the colliding pairs of the
-/// scene, exact by default, any method that runs on the store. With --pairs
-/// the list says which pairs, so a method there is refused, not ignored.
-method contacts_method_option(const parsed_options& options, const rectangle_input& input) {
+/// scene, exact by default, any method that runs on the store (on its double
+/// store with --precision double). With --pairs the list says which pairs, so
+/// a method there is refused, not ignored.
+method contacts_method_option(const parsed_options& options, const rectangle_input& input, bool doubles) {
     if (!options.has("method")) {
         return method::exact;
     }
     if (options.has("pairs")) {
         throw usage_error("--method chooses the colliding pairs of the file; with --pairs the list does");
     }
-    return store_method_option(options, input);
+    return doubles ? double_store_method_option(options, input) : store_method_option(options, input);
 }
 
 /// The --margin value: a decimal number, finite and >= 0, read as a float
@@ -170,16 +172,23 @@ std::string contacts_of_pair_file(box_pair_run& run, const collide_options& scen
     return std::to_string(pairs.size()) + " pairs, " + std::to_string(written) + " with contacts";
 }
 
+/// The scene's answer of a store: float contacts for the float stores,
+/// double ones for the double stores.
+template <class Store>
+using scene_answer_for = std::conditional_t<std::is_same<typename contact_options_for<Store>::type, contact_options64>::value,
+                                            scene_contacts64, scene_contacts>;
+
 /// Reads the rectangles and writes every pair the method calls colliding
-/// (and, with a margin, every pair within it) with its contact.
+/// (and, with a margin, every pair within it) with its contact, in double
+/// for a double store (find_contacts into a scene_contacts64).
 template <class Store>
 std::string contacts_of_scene(box_pair_run& run, const collide_options& scene) {
     Store store;
     read_box_store(run.rects_file, store, run.status);
-    const float margin = margin_option<float>(run.options);
-    const scene_contacts found =
-        naming_record_line(run.input.path, [&] { return find_contacts(store, scene, margin); });
-    write_contact_lines(found.pairs, found.contacts, run.header, run.target, [](const contact&) { return true; });
+    const auto margin = margin_option<decltype(contact_options_for<Store>::type::margin)>(run.options);
+    scene_answer_for<Store> found;
+    naming_record_line(run.input.path, [&] { find_contacts(store, scene, margin, found); });
+    write_contact_lines(found.pairs, found.contacts, run.header, run.target, [](const auto&) { return true; });
     return std::to_string(store.size()) + " boxes, " + std::to_string(found.pairs.size()) + " pairs";
 }
 
@@ -207,14 +216,18 @@ void print_contacts_help(std::FILE* out) {
                  "(overlapping, touching or, with a margin, apart by at most it); the others\n"
                  "are left out, and --method is refused.\n"
                  "\n"
-                 "--precision double (with --pairs only) reads every number, the margin too,\n"
-                 "as a double and computes in double (the same steps; nothing rounded to\n"
-                 "float), printing the shortest text that reads back as the same double, on\n"
-                 "every backend.\n"
+                 "--precision double reads every number, the margin too, as a double and\n"
+                 "computes in double (the same steps; nothing rounded to float), printing the\n"
+                 "shortest text that reads back as the same double, on every backend. Without\n"
+                 "--pairs the pairs are those of 'obbsat pairs --precision double' (methods on\n"
+                 "double rects: %s; on double poses: %s), with a margin every other\n"
+                 "pair whose double contact has points within it.\n"
                  "\n"
                  "methods: on --rects %s; on --poses %s\n"
                  "\n"
                  "options:\n",
+                 method_list(methods_on_doubles(store_kind::corners)).c_str(),
+                 method_list(methods_on_doubles(store_kind::poses)).c_str(),
                  method_list(methods_on(store_kind::corners)).c_str(),
                  method_list(methods_on(store_kind::poses)).c_str());
     print_options(out, contacts_option_specs());
@@ -230,26 +243,27 @@ void print_contacts_help(std::FILE* out) {
                  "example:\n"
                  "  obbsat contacts --poses poses.csv --margin 0.01 --out contacts.csv\n"
                  "  obbsat contacts --rects rects.csv --pairs pairs.csv --header\n"
-                 "  obbsat contacts --poses utm.csv --pairs pairs.csv --precision double\n");
+                 "  obbsat contacts --poses utm.csv --pairs pairs.csv --precision double\n"
+                 "  obbsat contacts --poses utm.csv --precision double --margin 0.05\n");
 }
 
 int run_contacts(const arguments& args) {
     const parsed_options options = parse_options(args, contacts_option_specs());
-    if (precision_option(options) == precision::double_ && !options.has("pairs")) {
-        throw usage_error("--precision double needs --pairs: the contacts of every colliding pair of a file "
-                          "are found in float only");
-    }
+    const bool doubles = precision_option(options) == precision::double_;
     margin_option<double>(options);  // a bad margin is reported before any file is opened
     box_pair_run run(options, false, "obbsat contacts");
     collide_options scene;
-    scene.test = contacts_method_option(options, run.input);
+    scene.test = contacts_method_option(options, run.input, doubles);
     scene.threads = run.threads;
     scene.use = run.use;
     const bool corners = run.input.kind == store_kind::corners;
     std::string summary;
-    if (!run.pairs_file) {
+    if (!run.pairs_file && doubles) {
+        summary = corners ? contacts_of_scene<rect_records64>(run, scene)
+                          : contacts_of_scene<pose_records64>(run, scene);
+    } else if (!run.pairs_file) {
         summary = corners ? contacts_of_scene<rect_records>(run, scene) : contacts_of_scene<pose_records>(run, scene);
-    } else if (run.digits == precision::double_) {
+    } else if (doubles) {
         summary = corners ? contacts_of_pair_file<rect_records64>(run, scene)
                           : contacts_of_pair_file<pose_records64>(run, scene);
     } else {

@@ -230,9 +230,11 @@ void find_pairs_each(box_view a, box_view b, const collide_options& options, con
 namespace detail {
 class pair_search;
 class pair_events;
+struct frame_contacts64;
 }  // namespace detail
 
-struct scene_contacts;  // obbsat/find_contacts.hpp
+struct scene_contacts;    // obbsat/find_contacts.hpp
+struct scene_contacts64;  // obbsat/find_contacts.hpp
 
 /// A persistent query for simulations. Its first call on a scene answers as
 /// find_pairs does; later full queries widen every bounds by a margin and
@@ -340,12 +342,25 @@ public:
     /// across two sets), so a pair that persists from one frame to the next
     /// in the same roles keeps its contact points' feature keys while the
     /// same corners touch the same edges. Float rows only. Throws as find,
-    /// and invalid_input for double rows or a row contacts do not accept
-    /// (obbsat/contact.hpp), before the frame changes anything. Valid until
-    /// the next call; the buffers are kept for the next frame.
+    /// and invalid_input for double rows (find_contacts64 takes them) or a
+    /// row contacts do not accept (obbsat/contact.hpp), before the frame
+    /// changes anything. Valid until the next call; the buffers are kept for
+    /// the next frame.
     const scene_contacts& find_contacts(box_view boxes);
     /// The pairs of find(a, b) with their contacts, as above.
     const scene_contacts& find_contacts(box_view a, box_view b);
+
+    /// find_contacts on double rows: the pairs of find(boxes) with their
+    /// double contacts (contact64, bit for bit contact_pairs over the same
+    /// double rows and pairs; obbsat/find_contacts.hpp), a persisting pair
+    /// keeping its points' feature keys as above. Throws as find, and
+    /// invalid_input for float rows or a row double contacts do not accept,
+    /// before the frame changes anything. Rows of rect_pose64 are copied into
+    /// 64-byte records each frame (memory kept for the next one). Valid
+    /// until the next call.
+    const scene_contacts64& find_contacts64(box_view boxes);
+    /// The pairs of find(a, b) with their double contacts, as above.
+    const scene_contacts64& find_contacts64(box_view a, box_view b);
 
     /// What the last call did.
     const find_pairs_stats& stats() const;
@@ -365,10 +380,12 @@ public:
 
 private:
     const scene_contacts& frame_contacts(const box_view& a, const box_view* b);
+    const scene_contacts64& frame_contacts64(const box_view& a, const box_view* b);
 
     std::unique_ptr<detail::pair_search> search_;
     std::unique_ptr<detail::pair_events> events_;  ///< nullptr while events are off
     std::unique_ptr<scene_contacts> contacts_;     ///< find_contacts' last answer, nullptr before its first call
+    std::unique_ptr<detail::frame_contacts64> contacts64_;  ///< find_contacts64's, nullptr before its first call
 };
 
 }  // namespace obbsat

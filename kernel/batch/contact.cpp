@@ -1,9 +1,9 @@
 // The contact and distance entry points (obbsat/contact.hpp): check the
 // input, resolve the backend once, split the pairs over threads, run the
 // backend's kernel on each part.
-#include "batch/contact_acceptance.hpp"
 #include "dispatch/backend_registry.hpp"
 #include "dispatch/contact_kernel_table.hpp"
+#include "store/contact_acceptance.hpp"
 #include "store/finite_check.hpp"
 #include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
@@ -151,7 +151,7 @@ void require_each_pose_accepted(const float* records, std::size_t count) {
 /// As require_each_pose_accepted, in one branch-free pass when all are accepted.
 void require_rows_accepted(const rect_pose* poses, std::size_t count) {
     const auto* rows = reinterpret_cast<const float*>(poses);
-    if (!detail::poses_all_accepted<pose_row_floats>(rows, count)) {
+    if (!detail::poses_all_accepted(rows, pose_row_floats, count)) {
         require_each_pose_accepted<pose_row_floats>(rows, count);
     }
 }

@@ -12,6 +12,7 @@
 #include "scene/query_input.hpp"
 #include "scene/search_common.hpp"
 #include "scene/spare_search.hpp"
+#include "store/contact_acceptance.hpp"
 #include "support/executor_scope.hpp"
 #include "support/fetch_ahead.hpp"
 
@@ -103,16 +104,8 @@ template <class Real>
 std::size_t first_unaccepted(const box_view& boxes) {
     const Real* v = values_of<Real>(boxes);
     const std::size_t stride = boxes.stride();
-    if (boxes.kind() == store_kind::poses) {
-        bool all = true;
-        for (std::size_t row = 0; row < boxes.size(); ++row) {
-            const Real c = v[stride * row + 4], s = v[stride * row + 5];
-            const Real q = (c * c) + (s * s);
-            all &= (q >= std::numeric_limits<Real>::min()) & (q <= std::numeric_limits<Real>::max());
-        }
-        if (all) {
-            return no_row;
-        }
+    if (boxes.kind() == store_kind::poses && detail::poses_all_accepted(v, stride, boxes.size())) {
+        return no_row;
     }
     for (std::size_t row = 0; row < boxes.size(); ++row) {
         const Real* r = v + stride * row;

@@ -197,9 +197,10 @@ detail::contact64_fn contact_kernel_of(const detail::contact_kernel_table& table
     return in_l2 ? table.poses64_in_l2 : table.poses64;
 }
 
-/// The checks find_contacts makes before any work: the rows' precision, the
-/// method on their kind, and that contacts accept every row (the query
-/// checks the rows themselves). Returns the contact kernel.
+/// The first checks find_contacts makes before any work: the rows'
+/// precision and the method on their kind (accepted_rows checks that
+/// contacts accept every row, the query the rows themselves). Returns the
+/// contact kernel.
 template <class Real>
 typename detail::contact_types<Real>::kernel checked_kernel(const box_view& boxes, const collide_options& options,
                                                             const char* call, std::size_t rows_read) {
@@ -210,7 +211,6 @@ typename detail::contact_types<Real>::kernel checked_kernel(const box_view& boxe
     } else {
         detail::require_method_on(options, boxes.kind());
     }
-    require_accepted<Real>(boxes);
     return contact_kernel_of(table, boxes, rows_read, Real(0));
 }
 
@@ -221,18 +221,23 @@ struct kernel_rows {
     std::size_t stride;  ///< in values
 };
 
-/// Float rows and 8-double records in place; rect_pose64 rows (six doubles)
-/// copied into `records` (the double kernels read whole records only).
+/// The rows of `boxes` as the contact kernels read them, once contacts are
+/// found to accept every one (require_accepted, before the query runs):
+/// float rows and 8-double records in place; rect_pose64 rows (six doubles)
+/// copied into `records` (the double kernels read whole records only),
+/// checked as they are copied rather than in a pass of their own.
 template <class Real>
-kernel_rows<Real> kernel_rows_of(const box_view& boxes, detail::double_pose_records* records, unsigned threads) {
-    if constexpr (std::is_same<Real, float>::value) {
-        return {boxes.floats(), boxes.stride()};
-    } else {
-        if (boxes.stride() == 8 || boxes.size() == 0) {
-            return {boxes.doubles(), 8};
+kernel_rows<Real> accepted_rows(const box_view& boxes, detail::double_pose_records* records, unsigned threads) {
+    if constexpr (std::is_same<Real, double>::value) {
+        if (boxes.stride() != 8 && boxes.size() != 0) {
+            if (!records->copy_accepted(boxes.doubles(), boxes.size(), threads)) {
+                require_accepted<Real>(boxes);  // the refused row's message
+            }
+            return {records->data(), 8};
         }
-        return {records->copy(boxes.doubles(), boxes.size(), threads), 8};
     }
+    require_accepted<Real>(boxes);
+    return {values_of<Real>(boxes), boxes.stride()};
 }
 
 /// The contact rows of a pair's sets a and b (the same set within one).
@@ -270,6 +275,11 @@ public:
         const std::lock_guard<std::mutex> lock(mutex());
         released = std::move(spare());
     }
+    /// Bytes of double pose records kept for the next call.
+    static std::size_t record_bytes() {
+        const std::lock_guard<std::mutex> lock(mutex());
+        return spare() ? spare()->records64.bytes() : 0;
+    }
 
 private:
     static std::mutex& mutex() {
@@ -284,15 +294,14 @@ private:
 };
 
 /// find_contacts once its checks have passed, margin 0: the method's pairs
-/// sorted straight into found.pairs, then their contacts into found.contacts.
+/// sorted straight into found.pairs, then their contacts on `rows` into found.contacts.
 template <class Real, class Found>
 void touching_contacts(const box_view& boxes, const collide_options& options,
-                       typename detail::contact_types<Real>::kernel kernel, detail::near_contacts& kept,
+                       typename detail::contact_types<Real>::kernel kernel, const kernel_rows<Real>& rows,
                        Found& found) {
     detail::spare_search spare(options);
     detail::pair_search& search = spare.get();
     search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), found.pairs);
-    const kernel_rows<Real> rows = kernel_rows_of<Real>(boxes, &kept.records64, options.threads);
     detail::contacts_of_answer(contact_rows_for(kernel, rows, rows, Real(0)), found.pairs, found.contacts,
                                options.threads);
 }
@@ -303,8 +312,8 @@ void touching_contacts(const box_view& boxes, const collide_options& options,
 /// at the margin has a point.
 template <class Real, class Found>
 void near_contacts_of(const box_view& boxes, const collide_options& options,
-                      typename detail::contact_types<Real>::kernel kernel, Real margin, detail::near_contacts& near,
-                      Found& found) {
+                      typename detail::contact_types<Real>::kernel kernel, const kernel_rows<Real>& rows, Real margin,
+                      detail::near_contacts& near, Found& found) {
     // The method's pairs first: this query also checks every box.
     {
         detail::spare_search spare(options);
@@ -324,7 +333,6 @@ void near_contacts_of(const box_view& boxes, const collide_options& options,
             search.bound_doubles(detail::input_of(box_view(near.stand_ins).with_filters(boxes.filters()), nullptr)),
             near.candidates);
     }
-    const kernel_rows<Real> rows = kernel_rows_of<Real>(boxes, &near.records64, options.threads);
     near.answer(contact_rows_for(kernel, rows, rows, margin), options.threads, found);
 }
 
@@ -338,11 +346,12 @@ void find_contacts_into(const box_view& boxes, const collide_options& options, R
     const detail::executor_scope scope(options.executor);
     const auto kernel = checked_kernel<Real>(boxes, options, call, boxes.size());
     kept_near_contacts kept;
+    const kernel_rows<Real> rows = accepted_rows<Real>(boxes, &kept.get().records64, options.threads);
     try {
         if (margin == Real(0)) {
-            touching_contacts<Real>(boxes, options, kernel, kept.get(), found);
+            touching_contacts<Real>(boxes, options, kernel, rows, found);
         } else {
-            near_contacts_of<Real>(boxes, options, kernel, margin, kept.get(), found);
+            near_contacts_of<Real>(boxes, options, kernel, rows, margin, kept.get(), found);
         }
     } catch (const invalid_input&) {
         throw;  // a box the query refused: found is as it was
@@ -368,10 +377,10 @@ void frame_contacts_of(pair_finder& finder, const collide_options& options, cons
     if (b != nullptr) {
         checked_kernel<Real>(*b, options, call, rows_read);
     }
+    const kernel_rows<Real> rows_a = accepted_rows<Real>(a, records_a, options.threads);
+    const kernel_rows<Real> rows_b = b == nullptr ? rows_a : accepted_rows<Real>(*b, records_b, options.threads);
     const std::vector<pair_index>& pairs = b == nullptr ? finder.find(a) : finder.find(a, *b);
     answer.pairs.assign(pairs.begin(), pairs.end());
-    const kernel_rows<Real> rows_a = kernel_rows_of<Real>(a, records_a, options.threads);
-    const kernel_rows<Real> rows_b = b == nullptr ? rows_a : kernel_rows_of<Real>(*b, records_b, options.threads);
     detail::contacts_of_answer(contact_rows_for(kernel, rows_a, rows_b, Real(0)), answer.pairs, answer.contacts,
                                options.threads);
 }
@@ -379,6 +388,8 @@ void frame_contacts_of(pair_finder& finder, const collide_options& options, cons
 }  // namespace
 
 void detail::release_kept_contacts() { kept_near_contacts::release(); }
+
+std::size_t detail::kept_contacts_record_bytes() { return kept_near_contacts::record_bytes(); }
 
 scene_contacts find_contacts(box_view boxes, const collide_options& options, float margin) {
     scene_contacts found;

@@ -1,12 +1,15 @@
 // The contacts of a scene query's sorted pairs, on the caller's rows (query_contacts.hpp).
 #include "scene/query_contacts.hpp"
 
+#include "store/contact_acceptance.hpp"
 #include "support/fetch_ahead.hpp"
 #include "support/huge_pages.hpp"
 #include "support/work_shares.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace obbsat::detail {
 
@@ -24,6 +27,10 @@ constexpr std::size_t appended_block = 2048;
 
 /// Double pose rows copied into records by one thread at least this many a part.
 constexpr std::size_t min_rows_per_copy = 16384;
+
+/// Records checked for contacts' acceptance right after each run of this
+/// many is copied (16 KiB, which L1 holds).
+constexpr std::size_t rows_per_checked_run = 256;
 
 /// Makes room in `out` for `count` elements without keeping its old ones
 /// (all are about to be overwritten): fresh memory, in huge pages for a
@@ -90,21 +97,28 @@ template void contacts_of_answer(const contact_rows&, const std::vector<pair_ind
 template void contacts_of_answer(const contact_rows64&, const std::vector<pair_index>&, std::vector<contact64>&,
                                  unsigned);
 
-const double* double_pose_records::copy(const double* rows, std::size_t count, unsigned threads) {
+bool double_pose_records::copy_accepted(const double* rows, std::size_t count, unsigned threads) {
     if (records_.size() < 8 * count) {
         records_ = scratch_records<double>(8 * count);  // unwritten until the copy writes it
     }
     double* out = records_.data();
     const std::size_t parts = parts_for(count, threads, min_rows_per_copy);
+    std::vector<std::uint8_t> part_accepted(parts, 1);
     run_parts(parts, [&](std::size_t part) {
         const auto [begin, end] = share_of(count, part, parts);
-        for (std::size_t row = begin; row < end; ++row) {
-            std::memcpy(out + 8 * row, rows + 6 * row, 6 * sizeof(double));
-            out[8 * row + 6] = 0.0;
-            out[8 * row + 7] = 0.0;
+        bool accepted = true;
+        for (std::size_t run_begin = begin; run_begin < end; run_begin += rows_per_checked_run) {
+            const std::size_t run_end = std::min(end, run_begin + rows_per_checked_run);
+            for (std::size_t row = run_begin; row < run_end; ++row) {
+                std::memcpy(out + 8 * row, rows + 6 * row, 6 * sizeof(double));
+                out[8 * row + 6] = 0.0;
+                out[8 * row + 7] = 0.0;
+            }
+            accepted &= poses_all_accepted(out + 8 * run_begin, 8, run_end - run_begin);
         }
+        part_accepted[part] = accepted ? 1 : 0;
     });
-    return out;
+    return std::all_of(part_accepted.begin(), part_accepted.end(), [](std::uint8_t a) { return a != 0; });
 }
 
 void near_contacts::answer(const contact_rows& rows, unsigned threads, scene_contacts& found) {

@@ -83,8 +83,15 @@ void contacts_of_answer(const contact_rows_of<Real>& rows, const std::vector<pai
 /// memory from one call to the next.
 class double_pose_records {
 public:
-    /// Copies `count` rows of six doubles from `rows`, split over `threads`; returns the records.
-    const double* copy(const double* rows, std::size_t count, unsigned threads);
+    /// Copies `count` rows of six doubles from `rows`, split over `threads`,
+    /// and tells whether contacts accept every one (obbsat/contact.hpp): the
+    /// check reads each run of records just copied, which L1 still holds,
+    /// rather than the caller's rows again (1M rows: 48 MB).
+    bool copy_accepted(const double* rows, std::size_t count, unsigned threads);
+    /// The records of the last copy_accepted.
+    const double* data() const { return records_.data(); }
+    /// Bytes of memory held.
+    std::size_t bytes() const { return records_.capacity() * sizeof(double); }
 
 private:
     scratch_records<double> records_;
@@ -126,8 +133,12 @@ struct frame_contacts64 {
     double_pose_records b_records;
 };
 
-/// Frees the near_contacts find_contacts keeps for its next call with a
-/// margin (find_contacts.cpp); a call running now keeps its own until it ends.
+/// Frees the near_contacts find_contacts keeps for its next call
+/// (find_contacts.cpp); a call running now keeps its own until it ends.
 void release_kept_contacts();
+
+/// Bytes of memory the near_contacts kept for find_contacts' next call hold
+/// in double pose records (0 when none is kept).
+std::size_t kept_contacts_record_bytes();
 
 }  // namespace obbsat::detail

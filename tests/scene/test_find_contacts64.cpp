@@ -263,6 +263,33 @@ std::string refusal_of(const Call& call) {
     return "";
 }
 
+TEST(FindContacts64, ARotationContactsRefuseIsNamedWhicheverThreadCopiesItsRow) {
+    // rect_pose64 rows are checked as each thread copies its share into
+    // records: the refused row is named on any thread count, and a row that
+    // is no box at all, later in the rows, is still refused first.
+    const std::vector<rect_pose64> rows = double_scene_of(40000, 25, far_x, far_y);
+    for (const unsigned threads : {1u, 2u, 3u}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        const auto options = exact_on(obbsat::backend::automatic, threads);
+        for (const std::size_t row : {std::size_t{7}, std::size_t{20000}, std::size_t{39999}}) {
+            std::vector<rect_pose64> bad = rows;
+            bad[row].rotation = {1e-200, 0.0};
+            const std::string message = refusal_of([&] { obbsat::find_contacts64(bad, options); });
+            EXPECT_NE(message.find("pose " + std::to_string(row) + ":"), std::string::npos) << message;
+            EXPECT_NE(message.find("normal double"), std::string::npos) << message;
+            obbsat::scene_contacts64 kept = obbsat::find_contacts64(rows, options);
+            const std::size_t pairs = kept.pairs.size();
+            EXPECT_NE(refusal_of([&] { obbsat::find_contacts(bad, options, 0.05, kept); }), "");
+            EXPECT_EQ(kept.pairs.size(), pairs);
+        }
+        std::vector<rect_pose64> bad = rows;
+        bad[100].rotation = {1e-200, 0.0};
+        bad[30000].center.x = std::numeric_limits<double>::quiet_NaN();
+        const std::string message = refusal_of([&] { obbsat::find_contacts64(bad, options); });
+        EXPECT_NE(message.find("pose 30000"), std::string::npos) << message;
+    }
+}
+
 TEST(FindContacts64, RefusesFloatRowsBadMarginsBadRowsAndMethods) {
     const std::vector<rect_pose64> rows = {{{far_x, far_y}, {1, 1}, {1, 0}}, {{far_x + 1, far_y}, {1, 1}, {1, 0}}};
     const auto options = exact_on(obbsat::backend::automatic, 1);

@@ -2,7 +2,9 @@
 // (kernel/scene/spare_search.hpp, obbsat::release_scratch): it is kept after
 // a query and freed by release_scratch, and a query in borrowed memory
 // answers as one in fresh memory, whatever ran before it, whatever runs
-// beside it.
+// beside it; the same for the double queries and find_contacts64's records
+// (kernel/scene/query_contacts.hpp).
+#include "scene/query_contacts.hpp"
 #include "scene/spare_search.hpp"
 
 #include <obbsat/collide.hpp>
@@ -15,6 +17,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -22,6 +26,7 @@ namespace {
 
 using obbsat::pair_index;
 using obbsat::rect_pose;
+using obbsat::rect_pose64;
 
 std::vector<rect_pose> scene_of(std::size_t boxes, obbsat::scene_sizes sizes, std::uint64_t seed) {
     obbsat::pose_scene_spec spec;
@@ -133,6 +138,88 @@ TEST(SpareSearch, ReleaseScratchLeavesFindContactsAnswering) {
     const obbsat::scene_contacts after = obbsat::find_contacts(boxes, options, 0.0f);
     EXPECT_TRUE(same(before.pairs, after.pairs));
     EXPECT_FALSE(after.pairs.empty());
+}
+
+/// A scene of rect_pose64 rows far from the origin (UTM-like coordinates),
+/// each center off the float grid, so that the query's float stand-ins and
+/// its double decisions both have work to do.
+std::vector<rect_pose64> double_scene_of(std::size_t boxes, obbsat::scene_sizes sizes, std::uint64_t seed) {
+    std::vector<rect_pose64> rows;
+    for (const rect_pose& p : scene_of(boxes, sizes, seed)) {
+        const double nudge = 0x1p-20 * static_cast<double>(rows.size() % 7);
+        rows.push_back({{500000.125 + p.center.x + nudge, 5712345.5 + p.center.y - nudge},
+                        {p.half_extents.x, p.half_extents.y},
+                        {p.rotation.x, p.rotation.y}});
+    }
+    return rows;
+}
+
+/// Same pairs and the same contacts bit for bit.
+bool same(const obbsat::scene_contacts64& x, const obbsat::scene_contacts64& y) {
+    return same(x.pairs, y.pairs) && x.contacts.size() == y.contacts.size() &&
+           std::equal(x.contacts.begin(), x.contacts.end(), y.contacts.begin(),
+                      [](const obbsat::contact64& p, const obbsat::contact64& q) {
+                          return std::memcmp(&p, &q, sizeof p) == 0;
+                      });
+}
+
+TEST(SpareSearch, DoubleQueriesKeepTheirMemoryAndReleaseScratchFreesIt) {
+    const std::vector<rect_pose64> boxes = double_scene_of(20000, obbsat::scene_sizes::uniform, 11);
+    obbsat::release_scratch();
+    EXPECT_EQ(obbsat::detail::spare_search_bytes(), 0u);
+    EXPECT_EQ(obbsat::detail::kept_contacts_record_bytes(), 0u);
+    const obbsat::scene_contacts64 found = obbsat::find_contacts64(boxes, options_of(1));
+    ASSERT_FALSE(found.pairs.empty());
+    // The query's double records in its order (64 bytes a box) and the float
+    // stand-ins of the double rows (32 bytes a box), at least.
+    EXPECT_GE(obbsat::detail::spare_search_bytes(), 96u * boxes.size());
+    // The caller's rect_pose64 rows as the records the contact kernels read.
+    EXPECT_GE(obbsat::detail::kept_contacts_record_bytes(), 64u * boxes.size());
+    obbsat::release_scratch();
+    EXPECT_EQ(obbsat::detail::spare_search_bytes(), 0u);
+    EXPECT_EQ(obbsat::detail::kept_contacts_record_bytes(), 0u);
+    // find_pairs on the same rows keeps its double records too.
+    EXPECT_TRUE(same(obbsat::find_pairs(boxes, options_of(2)), found.pairs));
+    EXPECT_GE(obbsat::detail::spare_search_bytes(), 64u * boxes.size());
+    obbsat::release_scratch();
+    EXPECT_EQ(obbsat::detail::spare_search_bytes(), 0u);
+}
+
+TEST(SpareSearch, DoubleAnswersInBorrowedMemoryAreThoseOfFreshMemory) {
+    // Double scenes of other sizes, float ones and contacts one after the
+    // other, each call borrowing what the last one left: larger records,
+    // another scene's stand-ins and order, a caller's answer kept or fresh.
+    const std::vector<rect_pose64> large = double_scene_of(30000, obbsat::scene_sizes::mixed, 12);
+    const std::vector<rect_pose64> small = double_scene_of(3000, obbsat::scene_sizes::uniform, 13);
+    const std::vector<rect_pose64> other = double_scene_of(20000, obbsat::scene_sizes::uniform, 14);
+    const std::vector<rect_pose> floats = scene_of(25000, obbsat::scene_sizes::uniform, 15);
+    for (const unsigned threads : {1u, 2u, 3u}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        const obbsat::collide_options options = options_of(threads);
+        obbsat::release_scratch();
+        const obbsat::scene_contacts64 want_large = obbsat::find_contacts64(large, options);
+        obbsat::release_scratch();
+        const obbsat::scene_contacts64 want_small = obbsat::find_contacts64(small, options);
+        obbsat::release_scratch();
+        const obbsat::scene_contacts64 want_other = obbsat::find_contacts64(other, options);
+        const std::vector<pair_index> want_floats = fresh_answer(floats, options);
+        ASSERT_GT(want_large.pairs.size(), 2 * want_small.pairs.size());
+        obbsat::scene_contacts64 kept;
+        for (int round = 0; round < 2; ++round) {
+            obbsat::find_contacts(small, options, 0.0, kept);
+            EXPECT_TRUE(same(kept, want_small));
+            EXPECT_TRUE(same(obbsat::find_contacts64(large, options), want_large));
+            EXPECT_TRUE(same(obbsat::find_pairs(floats, options), want_floats));
+            obbsat::find_contacts(large, options, 0.0, kept);
+            EXPECT_TRUE(same(kept, want_large));
+            EXPECT_TRUE(same(obbsat::find_pairs(other, options), want_other.pairs));
+            EXPECT_TRUE(same(obbsat::find_contacts64(small, options), want_small));
+            obbsat::find_contacts(other, options, 0.0, kept);
+            EXPECT_TRUE(same(kept, want_other));
+            EXPECT_GE(obbsat::detail::kept_contacts_record_bytes(), 64u * large.size());
+        }
+    }
+    obbsat::release_scratch();
 }
 
 }  // namespace

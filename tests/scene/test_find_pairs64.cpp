@@ -427,3 +427,63 @@ TEST(FindPairs64, PairFiltersDropTheirPairsFromTheDoubleQuery) {
         EXPECT_TRUE(same_pairs(got, want)) << threads << " threads";
     }
 }
+
+namespace {
+
+/// The message of the invalid_input find_pairs throws on `rows`, or "" when it takes them.
+template <class Rows>
+std::string refusal_of_rows(const Rows& rows, unsigned threads) {
+    try {
+        obbsat::find_pairs(rows, options_for(method::exact, threads));
+    } catch (const obbsat::invalid_input& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(FindPairs64, EveryBadFieldIsRefusedAtItsRowWhereverTheRowFalls) {
+    // Unchecked rows are checked a run of rows at a time: a bad value in any
+    // field, in the first, last or any row of a run or of a thread's share,
+    // is refused with its row; values at the edge of valid (a negative zero
+    // half extent, a subnormal rotation) are taken.
+    const std::vector<rect_pose64> poses = utm_scene(3000, 11, 900);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const unsigned threads : {1u, 2u}) {
+        for (const std::size_t row : {std::size_t{0}, std::size_t{255}, std::size_t{256}, std::size_t{2999}}) {
+            const std::string name = "pose " + std::to_string(row) + ":";
+            for (int field = 0; field < 6; ++field) {
+                for (const double bad : {nan, inf, -inf}) {
+                    std::vector<rect_pose64> rows = poses;
+                    (&rows[row].center.x)[field] = bad;
+                    EXPECT_NE(refusal_of_rows(rows, threads).find(name), std::string::npos)
+                        << "field " << field << " value " << bad << " threads " << threads;
+                }
+            }
+            for (const double below : {-1.0, -0x1p-1074}) {
+                std::vector<rect_pose64> rows = poses;
+                rows[row].half_extents.y = below;
+                EXPECT_NE(refusal_of_rows(rows, threads).find(name), std::string::npos) << below;
+            }
+            for (const obbsat::point64 zero : {obbsat::point64{0.0, 0.0}, obbsat::point64{-0.0, 0.0},
+                                               obbsat::point64{0.0, -0.0}}) {
+                std::vector<rect_pose64> rows = poses;
+                rows[row].rotation = zero;
+                EXPECT_NE(refusal_of_rows(rows, threads).find(name), std::string::npos);
+            }
+            std::vector<rect_pose64> edge = poses;
+            edge[row].half_extents.x = -0.0;
+            edge[row].rotation = {0x1p-1074, -0.0};
+            EXPECT_EQ(refusal_of_rows(edge, threads), "");
+            std::vector<rect64> rects = corners_of(poses);
+            for (int field = 0; field < 8; ++field) {
+                std::vector<rect64> rows = rects;
+                (&rows[row].ul.x)[field] = field % 2 == 0 ? nan : -inf;
+                EXPECT_NE(refusal_of_rows(rows, threads).find("rectangle " + std::to_string(row)), std::string::npos)
+                    << "field " << field;
+            }
+        }
+    }
+}
+
+}  // namespace

@@ -23,6 +23,18 @@ namespace obbsat::detail {
 /// The most working memory kept between calls: a query of about ten million boxes.
 constexpr std::size_t spare_search_limit = std::size_t{1} << 30;
 
+/// The working memory of a double query (query_input::doubles) a row, about:
+/// 1M rect_pose64 rows of the uniform scene took 121 bytes a row in
+/// find_pairs, 153 in find_contacts64, 100k rows 142 and 174.
+constexpr std::size_t double_query_bytes_per_row = 192;
+
+/// Whether a double query over `rows` rows fits spare_search_limit, so that
+/// the memory it works in is kept for the next query: such a query frees
+/// none of it before its answer is sorted (find_pairs.cpp).
+constexpr bool double_query_kept(std::size_t rows) {
+    return rows <= spare_search_limit / double_query_bytes_per_row;
+}
+
 /// A scene query in the working memory the last one left (see the top of this file).
 class spare_search {
 public:

@@ -197,10 +197,10 @@ detail::contact64_fn contact_kernel_of(const detail::contact_kernel_table& table
     return in_l2 ? table.poses64_in_l2 : table.poses64;
 }
 
-/// The first checks find_contacts makes before any work: the rows'
-/// precision and the method on their kind (accepted_rows checks that
-/// contacts accept every row, the query the rows themselves). Returns the
-/// contact kernel.
+/// The checks find_contacts makes before any work: the rows' precision and
+/// the method on their kind (the query checks the rows themselves, and
+/// kernel_rows_of or require_accepted that contacts accept every one).
+/// Returns the contact kernel.
 template <class Real>
 typename detail::contact_types<Real>::kernel checked_kernel(const box_view& boxes, const collide_options& options,
                                                             const char* call, std::size_t rows_read) {
@@ -221,23 +221,32 @@ struct kernel_rows {
     std::size_t stride;  ///< in values
 };
 
-/// The rows of `boxes` as the contact kernels read them, once contacts are
-/// found to accept every one (require_accepted, before the query runs):
-/// float rows and 8-double records in place; rect_pose64 rows (six doubles)
-/// copied into `records` (the double kernels read whole records only),
-/// checked as they are copied rather than in a pass of their own.
+/// Whether kernel_rows_of is still to check that contacts accept every row
+/// (require_accepted), or a check before it did.
+enum class acceptance { to_check, checked };
+
+/// The rows of `boxes` as the contact kernels read them: float rows and
+/// 8-double records in place; rect_pose64 rows (six doubles) copied into
+/// `records` (the double kernels read whole records only). Copied after the
+/// query, so that the cache still holds the last of them when the kernel
+/// starts (before it, the contacts of 1M boxes took some 3 ms more), and
+/// checked as they are copied rather than in a pass of their own. Throws
+/// invalid_input for a row contacts refuse when `check` is to_check.
 template <class Real>
-kernel_rows<Real> accepted_rows(const box_view& boxes, detail::double_pose_records* records, unsigned threads) {
+kernel_rows<Real> kernel_rows_of(const box_view& boxes, detail::double_pose_records* records, unsigned threads,
+                                 acceptance check) {
+    bool accepted = check == acceptance::checked;
+    kernel_rows<Real> rows{values_of<Real>(boxes), boxes.stride()};
     if constexpr (std::is_same<Real, double>::value) {
         if (boxes.stride() != 8 && boxes.size() != 0) {
-            if (!records->copy_accepted(boxes.doubles(), boxes.size(), threads)) {
-                require_accepted<Real>(boxes);  // the refused row's message
-            }
-            return {records->data(), 8};
+            accepted |= records->copy_accepted(boxes.doubles(), boxes.size(), threads);
+            rows = {records->data(), 8};
         }
     }
-    require_accepted<Real>(boxes);
-    return {values_of<Real>(boxes), boxes.stride()};
+    if (!accepted) {
+        require_accepted<Real>(boxes);
+    }
+    return rows;
 }
 
 /// The contact rows of a pair's sets a and b (the same set within one).
@@ -294,14 +303,22 @@ private:
 };
 
 /// find_contacts once its checks have passed, margin 0: the method's pairs
-/// sorted straight into found.pairs, then their contacts on `rows` into found.contacts.
+/// sorted straight into near.reported, which becomes found.pairs once
+/// contacts are found to accept every row (found is as it was until then),
+/// then their contacts into found.contacts. found.pairs' old memory is kept
+/// as near.reported for the next call: an answer kept by the caller between
+/// calls and this one take turns, and neither takes fresh pages.
 template <class Real, class Found>
 void touching_contacts(const box_view& boxes, const collide_options& options,
-                       typename detail::contact_types<Real>::kernel kernel, const kernel_rows<Real>& rows,
+                       typename detail::contact_types<Real>::kernel kernel, detail::near_contacts& near,
                        Found& found) {
-    detail::spare_search spare(options);
-    detail::pair_search& search = spare.get();
-    search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), found.pairs);
+    {
+        detail::spare_search spare(options);
+        detail::pair_search& search = spare.get();
+        search.collect_into(search.bound_doubles(detail::input_of(boxes, nullptr)), near.reported);
+    }
+    const kernel_rows<Real> rows = kernel_rows_of<Real>(boxes, &near.records64, options.threads, acceptance::to_check);
+    found.pairs.swap(near.reported);
     detail::contacts_of_answer(contact_rows_for(kernel, rows, rows, Real(0)), found.pairs, found.contacts,
                                options.threads);
 }
@@ -312,8 +329,8 @@ void touching_contacts(const box_view& boxes, const collide_options& options,
 /// at the margin has a point.
 template <class Real, class Found>
 void near_contacts_of(const box_view& boxes, const collide_options& options,
-                      typename detail::contact_types<Real>::kernel kernel, const kernel_rows<Real>& rows, Real margin,
-                      detail::near_contacts& near, Found& found) {
+                      typename detail::contact_types<Real>::kernel kernel, Real margin, detail::near_contacts& near,
+                      Found& found) {
     // The method's pairs first: this query also checks every box.
     {
         detail::spare_search spare(options);
@@ -333,6 +350,7 @@ void near_contacts_of(const box_view& boxes, const collide_options& options,
             search.bound_doubles(detail::input_of(box_view(near.stand_ins).with_filters(boxes.filters()), nullptr)),
             near.candidates);
     }
+    const kernel_rows<Real> rows = kernel_rows_of<Real>(boxes, &near.records64, options.threads, acceptance::to_check);
     near.answer(contact_rows_for(kernel, rows, rows, margin), options.threads, found);
 }
 
@@ -346,15 +364,14 @@ void find_contacts_into(const box_view& boxes, const collide_options& options, R
     const detail::executor_scope scope(options.executor);
     const auto kernel = checked_kernel<Real>(boxes, options, call, boxes.size());
     kept_near_contacts kept;
-    const kernel_rows<Real> rows = accepted_rows<Real>(boxes, &kept.get().records64, options.threads);
     try {
         if (margin == Real(0)) {
-            touching_contacts<Real>(boxes, options, kernel, rows, found);
+            touching_contacts<Real>(boxes, options, kernel, kept.get(), found);
         } else {
-            near_contacts_of<Real>(boxes, options, kernel, rows, margin, kept.get(), found);
+            near_contacts_of<Real>(boxes, options, kernel, margin, kept.get(), found);
         }
     } catch (const invalid_input&) {
-        throw;  // a box the query refused: found is as it was
+        throw;  // a box the query or contacts refused: found is as it was
     } catch (...) {
         // Out of memory once found may be partly written: never half an answer.
         found.pairs.clear();
@@ -374,13 +391,16 @@ void frame_contacts_of(pair_finder& finder, const collide_options& options, cons
     const detail::executor_scope scope(options.executor);
     const std::size_t rows_read = a.size() + (b == nullptr ? 0 : b->size());
     const auto kernel = checked_kernel<Real>(a, options, call, rows_read);
+    require_accepted<Real>(a);
     if (b != nullptr) {
         checked_kernel<Real>(*b, options, call, rows_read);
+        require_accepted<Real>(*b);
     }
-    const kernel_rows<Real> rows_a = accepted_rows<Real>(a, records_a, options.threads);
-    const kernel_rows<Real> rows_b = b == nullptr ? rows_a : accepted_rows<Real>(*b, records_b, options.threads);
     const std::vector<pair_index>& pairs = b == nullptr ? finder.find(a) : finder.find(a, *b);
     answer.pairs.assign(pairs.begin(), pairs.end());
+    const kernel_rows<Real> rows_a = kernel_rows_of<Real>(a, records_a, options.threads, acceptance::checked);
+    const kernel_rows<Real> rows_b =
+        b == nullptr ? rows_a : kernel_rows_of<Real>(*b, records_b, options.threads, acceptance::checked);
     detail::contacts_of_answer(contact_rows_for(kernel, rows_a, rows_b, Real(0)), answer.pairs, answer.contacts,
                                options.threads);
 }

@@ -97,13 +97,16 @@ private:
     scratch_records<double> records_;
 };
 
-/// What find_contacts with a margin, or on double rows, keeps from one call to the next (a
+/// What find_contacts keeps from one call to the next (a
 /// million boxes' worth is some 200 MB, and fresh memory costs the OS a page
 /// fault and a zeroing per page on every call), and the answer it makes of
 /// the candidates.
 class near_contacts {
 public:
-    std::vector<pair_index> reported;    ///< the pairs the method reports, sorted by (a, b)
+    /// The pairs the method reports, sorted by (a, b). At margin 0 they are
+    /// the answer's pairs until contacts accept every row, then swapped with
+    /// the caller's (find_contacts.cpp, touching_contacts).
+    std::vector<pair_index> reported;
     std::vector<rect_pose> stand_ins;    ///< each box's widened stand-in
     std::vector<pair_index> candidates;  ///< the pairs of stand-ins, sorted by (a, b)
     double_pose_records records64;       ///< double pose rows as records (at every margin)

@@ -227,11 +227,12 @@ enum class acceptance { to_check, checked };
 
 /// The rows of `boxes` as the contact kernels read them: float rows and
 /// 8-double records in place; rect_pose64 rows (six doubles) copied into
-/// `records` (the double kernels read whole records only). Copied after the
-/// query, so that the cache still holds the last of them when the kernel
-/// starts (before it, the contacts of 1M boxes took some 3 ms more), and
-/// checked as they are copied rather than in a pass of their own. Throws
-/// invalid_input for a row contacts refuse when `check` is to_check.
+/// `records` (the double kernels read whole records only). Called after the
+/// query, so that the cache still holds the last records when the kernel
+/// starts (copied before the query instead, the contacts of 1M boxes took
+/// some 3 ms more), and the rows checked as they are copied rather than in a
+/// pass of their own. Throws invalid_input for a row contacts refuse when
+/// `check` is to_check.
 template <class Real>
 kernel_rows<Real> kernel_rows_of(const box_view& boxes, detail::double_pose_records* records, unsigned threads,
                                  acceptance check) {

@@ -97,10 +97,10 @@ private:
     scratch_records<double> records_;
 };
 
-/// What find_contacts keeps from one call to the next (a
-/// million boxes' worth is some 200 MB, and fresh memory costs the OS a page
-/// fault and a zeroing per page on every call), and the answer it makes of
-/// the candidates.
+/// What find_contacts keeps from one call to the next (a million boxes'
+/// worth is some 200 MB, and fresh memory costs the OS a page fault and a
+/// zeroing per page on every call), and the answer it makes of the
+/// candidates at a margin.
 class near_contacts {
 public:
     /// The pairs the method reports, sorted by (a, b). At margin 0 they are

@@ -317,8 +317,9 @@ box_filters filters_of(std::uint64_t id, std::uint64_t changes) {
 
 class spawn_despawn_sequence final : public drifting_uniform_sequence {
 public:
-    spawn_despawn_sequence(std::size_t boxes, bool filtered)
-        : drifting_uniform_sequence(boxes, 41), filtered_(filtered) {
+    /// `swap_remove`: a removed row takes the last row in its place instead of the rows after it moving down.
+    spawn_despawn_sequence(std::size_t boxes, bool filtered, bool swap_remove = false)
+        : drifting_uniform_sequence(boxes, 41), filtered_(filtered), swap_remove_(swap_remove) {
         for (std::size_t i = 0; i < rows_.size(); ++i) {
             ids_.push_back(next_id_++);
             add_filters(ids_.back());
@@ -329,27 +330,10 @@ public:
         drift();
         const std::size_t churn = std::max<std::size_t>(1, rows_.size() / 100);
         choose(churn);
-        std::size_t kept = 0;
-        for (std::size_t i = 0; i < rows_.size(); ++i) {
-            if (chosen_[i] == 0) {
-                rows_[kept] = rows_[i];
-                velocity_[kept] = velocity_[i];
-                ids_[kept] = ids_[i];
-                if (filtered_) {
-                    categories_[kept] = categories_[i];
-                    masks_[kept] = masks_[i];
-                    groups_[kept] = groups_[i];
-                }
-                ++kept;
-            }
-        }
-        rows_.resize(kept);
-        velocity_.resize(kept);
-        ids_.resize(kept);
-        if (filtered_) {
-            categories_.resize(kept);
-            masks_.resize(kept);
-            groups_.resize(kept);
+        if (swap_remove_) {
+            remove_by_swap();
+        } else {
+            remove_in_order();
         }
         for (std::size_t k = 0; k < churn; ++k) {
             rows_.push_back(random_box());
@@ -381,6 +365,48 @@ public:
     }
 
 private:
+    /// Row `from`'s box, velocity, id and filters into row `to`.
+    void move_row(std::size_t from, std::size_t to) {
+        rows_[to] = rows_[from];
+        velocity_[to] = velocity_[from];
+        ids_[to] = ids_[from];
+        if (filtered_) {
+            categories_[to] = categories_[from];
+            masks_[to] = masks_[from];
+            groups_[to] = groups_[from];
+        }
+    }
+    void keep_rows(std::size_t count) {
+        rows_.resize(count);
+        velocity_.resize(count);
+        ids_.resize(count);
+        if (filtered_) {
+            categories_.resize(count);
+            masks_.resize(count);
+            groups_.resize(count);
+        }
+    }
+    /// The chosen rows removed, the rows after each moving down.
+    void remove_in_order() {
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            if (chosen_[i] == 0) {
+                move_row(i, kept++);
+            }
+        }
+        keep_rows(kept);
+    }
+    /// The chosen rows removed from the back, each hole taking the last row.
+    void remove_by_swap() {
+        std::size_t count = rows_.size();
+        for (std::size_t i = rows_.size(); i-- > 0;) {
+            if (chosen_[i] != 0) {
+                move_row(count - 1, i);
+                --count;
+            }
+        }
+        keep_rows(count);
+    }
     void add_filters(std::uint64_t id) {
         if (filtered_) {
             const box_filters f = filters_of(id, 0);
@@ -391,6 +417,7 @@ private:
     }
 
     bool filtered_;
+    bool swap_remove_;
     std::vector<std::uint64_t> ids_;
     std::uint64_t next_id_ = 0;
     std::vector<std::uint64_t> categories_, masks_;
@@ -449,6 +476,8 @@ const char* engine_scene_name(engine_scene scene) {
             return "spawn_despawn";
         case engine_scene::spawn_despawn_filtered:
             return "spawn_despawn_filtered";
+        case engine_scene::spawn_swap_remove:
+            return "spawn_swap_remove";
         case engine_scene::drift:
             return "drift";
         case engine_scene::drift_ids:
@@ -469,6 +498,8 @@ std::unique_ptr<engine_sequence> make_engine_sequence(engine_scene scene, std::s
             return std::make_unique<spawn_despawn_sequence>(boxes, false);
         case engine_scene::spawn_despawn_filtered:
             return std::make_unique<spawn_despawn_sequence>(boxes, true);
+        case engine_scene::spawn_swap_remove:
+            return std::make_unique<spawn_despawn_sequence>(boxes, false, true);
         case engine_scene::drift:
             return std::make_unique<drift_sequence>(boxes, false);
         case engine_scene::drift_ids:

@@ -40,6 +40,12 @@
 //                  to 4 boxes for 1 box in 16, drawn from the box's id; and
 //                  every frame 0.1% of the boxes, drawn at random, take new
 //                  filter values. The engine_frame row passes ids and filters.
+//   spawn_swap_remove
+//                  spawn_despawn's scene and motion, where each removed row
+//                  takes the last row in its place (swap-remove, as an ECS
+//                  stores its components) before as many new boxes are
+//                  appended: the rows that stay do not keep their order,
+//                  about 1% of them move. Ids as in spawn_despawn.
 //   drift          The same uniform drifting scene with no box removed or
 //                  added: spawn_despawn's frames without the change of rows,
 //                  the baseline its frame rows compare with.
@@ -62,13 +68,23 @@
 
 namespace obbsat_bench {
 
-enum class engine_scene { stacks, tumbler, spawn_despawn, spawn_despawn_filtered, drift, drift_ids, teleports };
+enum class engine_scene {
+    stacks,
+    tumbler,
+    spawn_despawn,
+    spawn_despawn_filtered,
+    spawn_swap_remove,
+    drift,
+    drift_ids,
+    teleports
+};
 
 inline constexpr engine_scene engine_scenes[] = {
-    engine_scene::stacks, engine_scene::tumbler,   engine_scene::spawn_despawn, engine_scene::spawn_despawn_filtered,
-    engine_scene::drift,  engine_scene::drift_ids, engine_scene::teleports};
+    engine_scene::stacks,       engine_scene::tumbler,           engine_scene::spawn_despawn,
+    engine_scene::spawn_despawn_filtered, engine_scene::spawn_swap_remove, engine_scene::drift,
+    engine_scene::drift_ids,    engine_scene::teleports};
 
-/// "stacks", "tumbler", "spawn_despawn", "spawn_despawn_filtered", "drift", "drift_ids" or "teleports".
+/// "stacks", "tumbler", "spawn_despawn", "spawn_despawn_filtered", "spawn_swap_remove", "drift", "drift_ids" or "teleports".
 const char* engine_scene_name(engine_scene scene);
 
 /// One run through a scene's frames, from frame 0.

@@ -69,7 +69,7 @@ std::size_t id_rows::find_place(std::uint64_t id) const {
 }
 
 bool id_rows::contains(std::uint64_t id) const {
-    return !keys_.empty() && used_places_[find_place(id)] != 0;
+    return used_ != 0 && id <= id_bound_ && used_places_[find_place(id)] != 0;
 }
 
 void id_rows::grow_for(std::size_t count) {
@@ -95,6 +95,7 @@ void id_rows::grow_for(std::size_t count) {
 }
 
 void id_rows::insert(std::uint64_t id) {
+    id_bound_ = used_ == 0 ? id : std::max(id_bound_, id);
     const std::size_t at = find_place(id);
     used_ += used_places_[at] == 0 ? std::size_t{1} : std::size_t{0};
     keys_[at] = id;

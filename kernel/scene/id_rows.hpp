@@ -86,6 +86,10 @@ private:
     std::vector<std::uint8_t> used_places_;  ///< 1 where keys_ holds an id
     std::size_t used_ = 0;
     std::size_t mask_ = 0;
+    /// At least the largest id in the set (ids counted up as boxes are
+    /// created make every new one larger): a larger id is not in the set,
+    /// with no read of it.
+    std::uint64_t id_bound_ = 0;
 };
 
 }  // namespace obbsat::detail

@@ -75,24 +75,38 @@ void fetch_filters(const query_input& input, std::size_t id) {
     }
 }
 
-/// std::lower_bound over one strip's sorted keys, started where `key` would
-/// lie if the keys were spread evenly between the first and the last (they
-/// are quantized x positions), then galloping to the answer: a probe or two
-/// where a binary search takes a dozen dependent reads.
+/// Where seek() first looks for `key` among one strip's sorted keys: where
+/// it would lie if the keys were spread evenly between the first and the
+/// last (they are quantized x positions).
 template <class Key>
-const Key* seek(const Key* begin, const Key* end, Key key) {
-    if (begin == end || key <= *begin) {
+const Key* first_probe(const Key* begin, const Key* end, Key key) {
+    if (end - begin < 2 || key <= *begin) {
         return begin;
     }
     const Key first = *begin;
     const Key last = *(end - 1);
     if (key > last) {
+        return end - 1;
+    }
+    const auto count = static_cast<std::size_t>(end - begin);
+    const double share = static_cast<double>(key - first) / static_cast<double>(last - first);
+    return begin + std::min(count - 1, static_cast<std::size_t>(share * static_cast<double>(count - 1)));
+}
+
+/// std::lower_bound over one strip's sorted keys, started at first_probe,
+/// then galloping to the answer: a probe or two where a binary search takes
+/// a dozen dependent reads.
+template <class Key>
+const Key* seek(const Key* begin, const Key* end, Key key) {
+    if (begin == end || key <= *begin) {
+        return begin;
+    }
+    if (key > *(end - 1)) {
         return end;
     }
     // first < key <= last: the answer lies in (begin, end - 1].
     const auto count = static_cast<std::size_t>(end - begin);
-    const double share = static_cast<double>(key - first) / static_cast<double>(last - first);
-    std::size_t at = std::min(count - 1, static_cast<std::size_t>(share * static_cast<double>(count - 1)));
+    const auto at = static_cast<std::size_t>(first_probe(begin, end, key) - begin);
     if (begin[at] < key) {
         // Forward: the answer is past `at`.
         std::size_t step = 1;
@@ -412,23 +426,44 @@ void pair_search::find_new_candidates(const query_input& input, std::size_t firs
             __builtin_prefetch(order + y);
             near.push_back(y);
         };
+        // Where the entries that may reach slot x in strip t start: reach to the left of x's lo.
+        const auto from_key = [&](std::uint32_t x, std::uint32_t t, std::uint32_t reach) {
+            const std::uint32_t q_lo = q_lo_[x];
+            return (t << q_bits) | (q_lo > reach ? q_lo - reach : 0);
+        };
         for (std::size_t batch_begin = first_new + unit_begin; batch_begin < first_new + unit_end;
              batch_begin += batch) {
             const std::size_t batch_end = std::min(first_new + unit_end, batch_begin + batch);
+            // The first probe of each of the batch's searches, fetched before
+            // any search: each is a read at a random place of a strip's keys
+            // (and of the visitors' slots), and fetched together they overlap.
+            for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
+                const auto x = static_cast<std::uint32_t>(xs);
+                const std::uint32_t low = keys[x] >> q_bits;
+                for (std::uint32_t t = low; t <= strip_hi_[x]; ++t) {
+                    __builtin_prefetch(first_probe(keys + own_begin_[t], keys + own_begin_[t + 1],
+                                                   from_key(x, t, kept_.full_reach[t])));
+                    if (t == low) {
+                        const std::uint32_t* const visits = visit_keys_.data();
+                        const std::uint32_t* const v = first_probe(visits + visit_begin_[t], visits + visit_begin_[t + 1],
+                                                                   from_key(x, t, kept_.full_reach[t]));
+                        __builtin_prefetch(v);
+                        __builtin_prefetch(visit_ids_.data() + (v - visits));
+                    }
+                }
+            }
             near.clear();
             for (std::size_t xs = batch_begin; xs < batch_end; ++xs) {
                 const auto x = static_cast<std::uint32_t>(xs);
                 const std::uint32_t low = keys[x] >> q_bits;
                 const std::uint32_t high = strip_hi_[x];
-                const std::uint32_t q_lo = q_lo_[x];
                 const std::uint32_t q_hi = q_hi_[x];
                 for (std::uint32_t t = low; t <= high; ++t) {
                     const std::uint32_t strip_key = t << q_bits;
                     const std::uint32_t hi_key = strip_key | q_hi;
                     // The full query's entries of strip t: its own, and on x's lowest strip its visitors.
                     {
-                        const std::uint32_t reach = kept_.full_reach[t];
-                        const std::uint32_t lo_key = strip_key | (q_lo > reach ? q_lo - reach : 0);
+                        const std::uint32_t lo_key = from_key(x, t, kept_.full_reach[t]);
                         const std::uint32_t* const begin = keys + own_begin_[t];
                         const std::uint32_t* const end = keys + own_begin_[t + 1];
                         for (const std::uint32_t* k = seek(begin, end, lo_key); k != end && *k <= hi_key; ++k) {
@@ -445,8 +480,7 @@ void pair_search::find_new_candidates(const query_input& input, std::size_t firs
                     }
                     // The slots added since, in the strip holding the larger of the two lowest strips.
                     {
-                        const std::uint32_t reach = kept_.added_reach[t];
-                        const std::uint64_t lo_key = std::uint64_t{strip_key | (q_lo > reach ? q_lo - reach : 0)} << 32;
+                        const std::uint64_t lo_key = std::uint64_t{from_key(x, t, kept_.added_reach[t])} << 32;
                         const std::uint64_t hi_entry = (std::uint64_t{hi_key} << 32) | 0xffffffffu;
                         const std::uint64_t* const strip_end = added + added_begin[t + 1];
                         for (const std::uint64_t* e = seek(added + added_begin[t], strip_end, lo_key);

@@ -22,7 +22,8 @@ struct few_pairs_sort_scratch {
 
 /// Sorts `pairs` by a then b (equal pairs in no particular order): stable
 /// counting sorts of the key a * 2^(bits of the largest b) + b, from its
-/// lowest digit up, 11 bits a pass, as many passes as the largest key needs.
+/// lowest digit up, 12 bits a pass, as many passes as the largest key needs,
+/// every pass's counts taken in one read of the pairs.
 void sort_few_pairs(std::vector<tagged_pair>& pairs, few_pairs_sort_scratch& scratch);
 
 }  // namespace obbsat::detail

@@ -22,7 +22,9 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace obbsat::detail {
@@ -167,6 +169,87 @@ TEST(kept_carry, spawn_frames_equal_fresh_queries_and_keep_the_same_candidates_o
     }
     // The frames of rows that came and went are answered from kept candidates, not by a full query.
     EXPECT_GE(reused + finders.size(), changed_frames);
+    EXPECT_GT(executor_ranges.load(), 0u);
+}
+
+TEST(kept_carry, edits_that_keep_or_break_the_rows_order_equal_fresh_queries_on_1_to_3_threads_and_an_executor) {
+    // Each frame drifts and makes one edit: those that keep the order of the
+    // rows that stay (removals anywhere, the first and last rows included,
+    // appends) and those that break it (swaps, a block moved, rows reversed),
+    // then everything removed and the scene filled again.
+    spawning_world w(40000, 23);
+    std::atomic<std::size_t> executor_ranges{0};
+    const obbsat::executor reversed{&enqueue_reversed, &finish_nothing, &executor_ranges};
+    std::vector<obbsat::pair_finder> finders;
+    for (unsigned threads = 1; threads <= 3; ++threads) {
+        finders.emplace_back(options_for(threads));
+    }
+    finders.emplace_back(options_for(3, &reversed));
+    const auto erase = [&](std::size_t at) {
+        w.boxes.erase(w.boxes.begin() + static_cast<std::ptrdiff_t>(at));
+        w.ids.erase(w.ids.begin() + static_cast<std::ptrdiff_t>(at));
+    };
+    const auto swap_rows = [&](std::size_t i, std::size_t j) {
+        std::swap(w.boxes[i], w.boxes[j]);
+        std::swap(w.ids[i], w.ids[j]);
+    };
+    const std::vector<std::pair<std::string, std::function<void()>>> edits = {
+        {"none", [] {}},
+        {"none", [] {}},
+        {"the first row removed", [&] { erase(0); }},
+        {"the last row removed, one appended", [&] { erase(w.boxes.size() - 1); w.spawn(); }},
+        {"1% removed in order, as many appended", [&] { w.spawn_frame(0.01); }},
+        {"the first and last rows removed, 1% appended", [&] {
+             erase(w.boxes.size() - 1);
+             erase(0);
+             for (int c = 0; c < 400; ++c) {
+                 w.spawn();
+             }
+         }},
+        {"two rows swapped", [&] { swap_rows(5, w.boxes.size() - 7); }},
+        {"the first and last rows swapped, 1% spawned", [&] {
+             swap_rows(0, w.boxes.size() - 1);
+             w.spawn_frame(0.01);
+         }},
+        {"a swap-remove", [&] { w.swap_remove(w.boxes.size() / 2); }},
+        {"a block moved to the front", [&] {
+             std::rotate(w.boxes.begin(), w.boxes.begin() + 300, w.boxes.begin() + 800);
+             std::rotate(w.ids.begin(), w.ids.begin() + 300, w.ids.begin() + 800);
+         }},
+        {"rows reversed", [&] {
+             std::reverse(w.boxes.begin() + 1000, w.boxes.begin() + 1400);
+             std::reverse(w.ids.begin() + 1000, w.ids.begin() + 1400);
+         }},
+        {"1% removed in order, as many appended", [&] { w.spawn_frame(0.01); }},
+        {"everything removed", [&] {
+             w.boxes.clear();
+             w.ids.clear();
+         }},
+        {"the scene filled again", [&] {
+             while (w.boxes.size() < 40000) {
+                 w.spawn();
+             }
+         }},
+        {"none", [] {}},
+        {"1% removed in order, as many appended", [&] { w.spawn_frame(0.01); }},
+    };
+    std::size_t reused = 0;
+    for (std::size_t f = 0; f < edits.size(); ++f) {
+        w.drift();
+        edits[f].second();
+        const obbsat::box_view view(w.boxes);
+        const std::vector<pair_index> want = obbsat::find_pairs(view, options_for(1));
+        for (std::size_t i = 0; i < finders.size(); ++i) {
+            const std::vector<pair_index>& got = finders[i].find(view.with_ids(w.ids));
+            ASSERT_TRUE(same_pairs(got, want)) << "finder " << i << ", frame " << f << " (" << edits[f].first
+                                               << "): " << got.size() << " pairs, want " << want.size();
+            EXPECT_EQ(finders[i].stats().kept_candidates, finders[0].stats().kept_candidates)
+                << "finder " << i << ", frame " << f;
+            reused += finders[i].stats().reused_candidates ? 1u : 0u;
+        }
+    }
+    // Most frames are answered from kept candidates carried over the edits.
+    EXPECT_GE(reused, 8 * finders.size());
     EXPECT_GT(executor_ranges.load(), 0u);
 }
 

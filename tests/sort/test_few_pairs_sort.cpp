@@ -1,5 +1,5 @@
-// sort_few_pairs against std::sort of the same pairs: keys that need one,
-// two, three and four passes, an empty and a one-pair list, equal pairs
+// sort_few_pairs against std::sort of the same pairs: keys that need one to
+// six passes, an empty and a one-pair list, equal pairs
 // with different tags, and scratch reused from a larger sort.
 #include "sort/few_pairs_sort.hpp"
 
@@ -61,14 +61,18 @@ std::vector<tagged_pair> random_pairs(std::size_t count, std::uint32_t a_below, 
 
 TEST(few_pairs_sort, sorts_like_std_sort_for_every_count_of_passes) {
     few_pairs_sort_scratch scratch;
-    // Keys of 6, 21, 24, 34 and 64 bits: one, two, three, four and six passes.
+    // Keys of 6, 21, 24 (two whole digits), 34, 37, 49 and 64 bits: one,
+    // two, two, three, four, five and six passes of 12 bits, every pass's
+    // counts taken in one read.
     expect_sorted_like_std(random_pairs(1000, 8, 8, 1), scratch);
     expect_sorted_like_std(random_pairs(5000, 2048, 1024, 2), scratch);
     expect_sorted_like_std(random_pairs(4000, 4096, 4096, 8), scratch);
     expect_sorted_like_std(random_pairs(7000, 100000, 100000, 3), scratch);
+    expect_sorted_like_std(random_pairs(6000, 1u << 19, 1u << 18, 9), scratch);
+    expect_sorted_like_std(random_pairs(6000, 1u << 25, 1u << 24, 10), scratch);
     expect_sorted_like_std(random_pairs(3000, 0xffffffffu, 0xffffffffu, 4), scratch);
-    // One pass of 11 bits and one of a single bit: a key of 12 bits.
-    expect_sorted_like_std(random_pairs(2000, 64, 64, 5), scratch);
+    // One pass of 12 bits and one of a single bit: a key of 13 bits.
+    expect_sorted_like_std(random_pairs(2000, 128, 64, 5), scratch);
 }
 
 TEST(few_pairs_sort, keeps_equal_pairs_and_handles_tiny_lists) {

@@ -31,6 +31,15 @@ inline std::size_t digit_of(std::uint64_t word, unsigned d) {
     return static_cast<std::size_t>(word >> (32 + d * digit_bits)) & (digit_values - 1);
 }
 
+/// Counts digits [0, digits) of words[0, n) into `counts` (added to it).
+void count_digits(const std::uint64_t* words, std::size_t n, unsigned digits, all_digit_counts& counts) {
+    for (std::size_t i = 0; i < n; ++i) {
+        for (unsigned d = 0; d < digits; ++d) {
+            ++counts[d][digit_of(words[i], d)];
+        }
+    }
+}
+
 /// The values of a sort: the caller's, values[i] with key i...
 struct given_values {
     const std::uint32_t* values;
@@ -61,20 +70,6 @@ void pack_and_count(const std::uint32_t* keys, Values values, std::size_t n, uns
     }
 }
 
-/// Offsets of digit `d` from its counts (each value's first slot): true
-/// unless every one of the n words has the same digit, when the pass would
-/// move nothing.
-bool slots_of(const digit_counts& counts, std::size_t n, digit_counts& slots) {
-    std::size_t sum = 0;
-    bool one_digit = false;
-    for (std::size_t v = 0; v < digit_values; ++v) {
-        one_digit = one_digit || counts[v] == n;
-        slots[v] = sum;
-        sum += counts[v];
-    }
-    return !one_digit;
-}
-
 /// Sorts the packed words[0, n) stably by digits [0, digits) of their keys,
 /// one pass a digit through `buffer` (n words), skipping a digit all of them
 /// share; `counts` holds each digit's counts over them. Then writes the keys
@@ -86,64 +81,22 @@ void sort_words(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsi
     for (unsigned d = 0; d < digits; ++d) {
         // A copy of its own, which the scatter's stores cannot alias: the
         // compiler then keeps no reload of a slot after each store.
-        digit_counts next;
-        if (!slots_of(counts[d], n, next)) {
+        digit_counts next = counts[d];
+        std::size_t sum = 0;
+        bool one_digit = false;
+        for (std::size_t& slot : next) {
+            const std::size_t here = slot;
+            one_digit = one_digit || here == n;
+            slot = sum;
+            sum += here;
+        }
+        if (one_digit) {
             continue;  // every key has this digit: the pass would move nothing
         }
         for (std::size_t i = 0; i < n; ++i) {
             to[next[digit_of(from[i], d)]++] = from[i];
         }
         std::swap(from, to);
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
-        values[i] = static_cast<std::uint32_t>(from[i]);
-    }
-}
-
-/// sort_words for a bucket of the split on several threads, in the caches:
-/// digit 0 is counted in a read of its own, each next digit during the pass
-/// before it, and the last pass writes the keys and values itself, so the
-/// words are read once a digit and not again to be written back.
-void sort_bucket(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsigned digits, std::uint32_t* keys,
-                 std::uint32_t* values) {
-    const std::uint64_t* from = words;
-    std::uint64_t* to = buffer;
-    digit_counts counts{};
-    if (digits > 0) {
-        for (std::size_t i = 0; i < n; ++i) {
-            ++counts[digit_of(from[i], 0)];
-        }
-    }
-    for (unsigned d = 0; d < digits; ++d) {
-        digit_counts next;  // a copy of its own, as in sort_words
-        const bool moves = slots_of(counts, n, next);
-        const bool last = d + 1 == digits;
-        counts = digit_counts{};
-        if (!moves) {
-            if (!last) {
-                for (std::size_t i = 0; i < n; ++i) {
-                    ++counts[digit_of(from[i], d + 1)];
-                }
-            }
-            continue;
-        }
-        if (last) {
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::uint64_t word = from[i];
-                const std::size_t slot = next[digit_of(word, d)]++;
-                keys[slot] = static_cast<std::uint32_t>(word >> 32);
-                values[slot] = static_cast<std::uint32_t>(word);
-            }
-            return;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint64_t word = from[i];
-            to[next[digit_of(word, d)]++] = word;
-            ++counts[digit_of(word, d + 1)];
-        }
-        from = to;
-        to = to == buffer ? words : buffer;
     }
     for (std::size_t i = 0; i < n; ++i) {
         keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
@@ -304,7 +257,9 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
     run_units(digit_values, threads, [&](std::size_t bucket) {
         const std::size_t begin = bucket_begin[bucket];
         const std::size_t size = bucket_begin[bucket + 1] - begin;
-        sort_bucket(spare + begin, packed + begin, size, first, keys + begin, values + begin);
+        all_digit_counts lower{};
+        count_digits(spare + begin, size, first, lower);
+        sort_words(spare + begin, packed + begin, size, first, lower, keys + begin, values + begin);
     });
 }
 

@@ -201,7 +201,10 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
         any_bits |= survey.any_bits;
         all_bits &= survey.all_bits;
     }
-    const std::uint32_t varying = any_bits & ~all_bits;
+    // Only the digits the keys may have count (key_bits).
+    const std::uint32_t digit_mask =
+        digits * digit_bits >= 32 ? ~std::uint32_t{0} : (std::uint32_t{1} << (digits * digit_bits)) - 1;
+    const std::uint32_t varying = any_bits & ~all_bits & digit_mask;
     if (varying == 0) {
         // Every key the same: the input is its own stable order.
         run_units(units, threads, [&](std::size_t unit) {

@@ -443,6 +443,27 @@ TEST(sorts_on_two_threads, cut_every_step_into_more_units_than_threads_with_the_
         EXPECT_NE(seen.most, 0u) << "radix_sort ran on no executor";
     }
     {
+        std::vector<std::uint32_t> given_keys, positions;
+        random_input(300000, 24, 9, given_keys, positions);
+        const keyed want = stably_sorted(given_keys, positions, 0);
+        std::vector<std::uint32_t> keys(given_keys.size()), indices(given_keys.size());
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::radix_buffer packed, spare;
+            obbsat::detail::radix_sort_indices(keys.data(), indices.data(), keys.size(), 24, packed, spare, threads,
+                                               [&](std::size_t begin, std::size_t end) {
+                                                   for (std::size_t i = begin; i < end; ++i) {
+                                                       keys[i] = given_keys[i];
+                                                   }
+                                               });
+        }
+        EXPECT_EQ(zipped(keys, indices), want);
+        EXPECT_GT(seen.fewest, threads) << "radix_sort_indices";
+        EXPECT_NE(seen.most, 0u) << "radix_sort_indices ran on no executor";
+    }
+    {
         const two_runs r = runs_of(120000, 80000, 12, 6);
         std::vector<std::uint32_t> out_keys(r.want.size()), out_values(r.want.size());
         units_seen seen;

@@ -23,6 +23,10 @@ constexpr std::size_t min_per_unit = 8192;
 // Keys a fill writes at once: few enough to be read again from the caches.
 constexpr std::size_t fill_slice = 4096;
 
+// The most keys a bucket of the split on several threads may hold to be
+// sorted in buffers of its own (two words a key, in a core's L2 cache).
+constexpr std::size_t cached_bucket = 16384;
+
 using digit_counts = std::array<std::size_t, digit_values>;
 using all_digit_counts = std::array<digit_counts, max_passes>;
 
@@ -70,14 +74,16 @@ void pack_and_count(const std::uint32_t* keys, Values values, std::size_t n, uns
     }
 }
 
-/// Sorts the packed words[0, n) stably by digits [0, digits) of their keys,
-/// one pass a digit through `buffer` (n words), skipping a digit all of them
-/// share; `counts` holds each digit's counts over them. Then writes the keys
-/// and values back, in their order.
-void sort_words(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsigned digits, all_digit_counts& counts,
-                std::uint32_t* keys, std::uint32_t* values) {
-    std::uint64_t* from = words;
-    std::uint64_t* to = buffer;
+/// Sorts the packed words source[0, n) stably by digits [0, digits) of their
+/// keys, one pass a digit into `first` and back and forth between `second`
+/// and `first` (n words each; `second` may be `source`, which is otherwise
+/// only read), skipping a digit all of them share; `counts` holds each
+/// digit's counts over them. Then writes the keys and values back, in their order.
+void sort_words(const std::uint64_t* source, std::uint64_t* first, std::uint64_t* second, std::size_t n,
+                unsigned digits, all_digit_counts& counts, std::uint32_t* keys, std::uint32_t* values) {
+    const std::uint64_t* from = source;
+    std::uint64_t* to = first;
+    std::uint64_t* other = second;
     for (unsigned d = 0; d < digits; ++d) {
         // A copy of its own, which the scatter's stores cannot alias: the
         // compiler then keeps no reload of a slot after each store.
@@ -96,7 +102,8 @@ void sort_words(std::uint64_t* words, std::uint64_t* buffer, std::size_t n, unsi
         for (std::size_t i = 0; i < n; ++i) {
             to[next[digit_of(from[i], d)]++] = from[i];
         }
-        std::swap(from, to);
+        from = to;
+        std::swap(to, other);
     }
     for (std::size_t i = 0; i < n; ++i) {
         keys[i] = static_cast<std::uint32_t>(from[i] >> 32);
@@ -161,7 +168,7 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
             }
             pack_and_count(keys + begin, given.from(begin), end - begin, digits, packed + begin, counts);
         }
-        sort_words(packed, spare, n, digits, counts, keys, values);
+        sort_words(packed, spare, packed, n, digits, counts, keys, values);
         return;
     }
     // On several threads the highest digit that varies goes first (most
@@ -262,7 +269,18 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
         const std::size_t size = bucket_begin[bucket + 1] - begin;
         all_digit_counts lower{};
         count_digits(spare + begin, size, first, lower);
-        sort_words(spare + begin, packed + begin, size, first, lower, keys + begin, values + begin);
+        if (size > cached_bucket) {
+            sort_words(spare + begin, packed + begin, spare + begin, size, first, lower, keys + begin,
+                       values + begin);
+            return;
+        }
+        // The passes go between two buffers of the unit's own, which stay in
+        // the caches, rather than through the lent memory: the bucket is only
+        // read there, so none of its lines is fetched to be written over, or
+        // written back.
+        scratch_vector<std::uint64_t> passes(2 * size);
+        sort_words(spare + begin, passes.data(), passes.data() + size, size, first, lower, keys + begin,
+                   values + begin);
     });
 }
 

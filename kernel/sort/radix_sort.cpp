@@ -182,7 +182,10 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
     // depend on the units or on who took them; no step makes both threads
     // wait for equal shares. The keys are packed as they are scattered, not
     // in a pass of their own, so the words go to memory once, not twice; and
-    // only the one digit the scatter needs is counted before it.
+    // only the one digit the scatter needs is counted before it. (The order
+    // of a 1M-box query on two threads took 6.2-6.4 ms of thread time this
+    // way, against 8.2-8.6 with a packing pass and the buckets sorted in the
+    // lent memory; 6.2-6.5 on one thread. A loaded machine.)
     const std::size_t units = units_for(n, threads, min_per_unit);
     const auto begin_of = [n, units](std::size_t unit) { return n * unit / units; };
     // Each unit clears its own counts: cleared here, the cache lines of the

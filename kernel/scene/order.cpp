@@ -32,8 +32,9 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
     // The repair needs this query's keys on the last grid (measure_extent).
     stats_.reused_order = keep_grid && keys_by_id_fresh_ && repair_order(parts);
     // A new order's keys are made by the units of the sort's first pass,
-    // each its own slice just before it packs it (radix_sort_filled): no
+    // each its own slice just before it reads it (radix_sort_indices): no
     // pass of their own, and no wait for every key before the sort starts.
+    // The order is the sort's indices, written once the keys are all made.
     if (!stats_.reused_order && !keys_by_id_fresh_) {
         // measure_extent left each box's lo_x and lo_y, widened as the sweep
         // will widen them, in keys_ and order_ (as bits).
@@ -43,7 +44,6 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 std::memcpy(&lo_x, &keys_[i], sizeof(float));
                 std::memcpy(&lo_y, &order_[i], sizeof(float));
                 keys_[i] = grid_.key_of(lo_x, lo_y);
-                order_[i] = static_cast<std::uint32_t>(i);
             }
         };
         // The records' memory, which copy_records fills next, is the sort's
@@ -65,8 +65,8 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
         for (std::size_t w = 0; w < 2 * n_; ++w) {
             ::new (static_cast<void*>(words + w)) std::uint64_t;  // no code: words begin to live here
         }
-        radix_sort_filled(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts,
-                          keys_from_corners);
+        radix_sort_indices(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts,
+                           keys_from_corners);
     } else if (!stats_.reused_order) {
         const radix_fill keys_from_rows = [&](std::size_t begin, std::size_t end) {
             bounds_run b;
@@ -76,11 +76,10 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 widen(b, run_end - run_begin);
                 for (std::size_t i = run_begin; i < run_end; ++i) {
                     keys_[i] = grid_.key_of(b.lo_x[i - run_begin], b.lo_y[i - run_begin]);
-                    order_[i] = static_cast<std::uint32_t>(i);
                 }
             }
         };
-        radix_sort_filled(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts, keys_from_rows);
+        radix_sort_indices(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts, keys_from_rows);
     }
     have_order_ = true;
     ordered_n_ = n_;

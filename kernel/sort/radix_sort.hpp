@@ -2,11 +2,13 @@
 // over the pairs packed into 64-bit words, 8 bits per pass (256 write streams,
 // few enough for the TLB and the store buffers), skipping passes whose digit
 // is the same for every key, in memory backed by huge pages where the OS
-// offers them (or lent by the caller). Every digit is counted while the keys
-// are packed. On one thread the passes go from the least significant digit
-// up; on several, the highest digit that varies splits the keys into 256
-// buckets first, and each bucket is then sorted on its own from its least
-// significant digit up, the buckets taken as they come by the threads.
+// offers them (or lent by the caller). On one thread every digit is counted
+// while the keys are packed, and the passes go from the least significant
+// digit up; on several, the highest digit that varies splits the keys into
+// 256 buckets first, the keys packed as they are scattered, and each bucket
+// is then sorted on its own from its least significant digit up, the buckets
+// taken as they come by the threads. The values may be the keys' indices
+// (radix_sort_indices), which are then never read.
 // Internal to the library.
 #pragma once
 
@@ -34,19 +36,22 @@ void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsig
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
                 std::uint64_t* spare, std::size_t parts = 1);
 
-/// Writes keys[begin, end) and values[begin, end) of a sort to come (radix_sort_filled).
+/// Writes keys[begin, end) of a sort to come (radix_sort_indices).
 using radix_fill = std::function<void(std::size_t begin, std::size_t end)>;
 
-/// radix_sort of keys and values that `fill` writes first: fill is called
-/// over slices that tile [0, n), each slice packed just after it is filled,
-/// by the same unit of the sort's first pass. Making the keys then takes no
-/// pass of its own and no wait for all of them before the sort starts.
-void radix_sort_filled(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
-                       radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill);
+/// Sorts the indices 0 .. n - 1 by the keys that `fill` writes, stably:
+/// afterwards keys[0, n) holds the keys sorted and indices[k] the index of
+/// keys[k] before the sort. fill is called over slices that tile [0, n), each
+/// slice's keys read just after it is filled, by the same unit of the sort's
+/// first pass: making the keys takes no pass of its own and no wait for all
+/// of them before the sort starts. `indices` is only written, once every key
+/// is filled, so fill may read what it held before.
+void radix_sort_indices(std::uint32_t* keys, std::uint32_t* indices, std::size_t n, unsigned key_bits,
+                        radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill);
 
-/// radix_sort_filled in working memory the caller lends, as radix_sort's.
-void radix_sort_filled(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits,
-                       std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill);
+/// radix_sort_indices in working memory the caller lends, as radix_sort's.
+void radix_sort_indices(std::uint32_t* keys, std::uint32_t* indices, std::size_t n, unsigned key_bits,
+                        std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill);
 
 /// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
 /// (every bucket below `buckets`): starts[b] is the first i whose bucket is

@@ -1,8 +1,9 @@
 // The scene queries' sorts against std::stable_sort: radix_sort on one
 // thread and split over two (the same result either way, equal keys in their
 // input order), in its own buffers and in memory the caller lends, merge_by_key against std::merge in shares split by key, and
-// repair_sort on nearly sorted input and past its move budget; radix_sort_filled,
-// whose keys come from a fill over slices that tile them, each filled once; bucket_starts
+// repair_sort on nearly sorted input and past its move budget; radix_sort_indices,
+// whose keys come from a fill over slices that tile them, each filled once, and
+// whose values are the keys' indices; bucket_starts
 // against prefix counts; sort_pairs against std::sort by (a, b). On two
 // threads every step of the sorts is cut into more units than threads, taken
 // in any order, with the answer of one thread.
@@ -111,43 +112,70 @@ TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) 
     }
 }
 
-TEST(radix_sort_filled, fills_each_key_once_over_slices_that_tile_the_keys_and_sorts_them_stably) {
+TEST(radix_sort_indices, fills_each_key_once_over_slices_that_tile_the_keys_and_sorts_the_indices_stably) {
     // The keys come only from `fill`: arrays holding other values beforehand
     // must not leak into the answer, and every index is filled exactly once,
-    // in its own memory or in lent memory, on one thread and on two.
+    // in its own memory or in lent memory, on one thread and on two. The
+    // indices array is only written, once every key is made: the fill reads
+    // the key it makes from there.
     for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{5000}, std::size_t{300000}}) {
         for (const std::size_t parts : {std::size_t{1}, std::size_t{2}}) {
             for (const bool lend : {false, true}) {
-                std::vector<std::uint32_t> given_keys, given_values;
-                random_input(n, 20, 3 * n + parts, given_keys, given_values);
-                const keyed want = stably_sorted(given_keys, given_values, 0);
-                std::vector<std::uint32_t> keys(n, 0xffffffffu), values(n, 0xffffffffu);
+                std::vector<std::uint32_t> given_keys, positions;
+                random_input(n, 20, 3 * n + parts, given_keys, positions);
+                const keyed want = stably_sorted(given_keys, positions, 0);
+                std::vector<std::uint32_t> keys(n, 0xffffffffu), indices = given_keys;
                 std::vector<std::atomic<unsigned>> filled(n);
                 std::atomic<bool> outside{false};
                 const obbsat::detail::radix_fill fill = [&](std::size_t begin, std::size_t end) {
                     outside.store(outside.load() || begin > end || end > n);
                     for (std::size_t i = begin; i < end && i < n; ++i) {
-                        keys[i] = given_keys[i];
-                        values[i] = given_values[i];
+                        keys[i] = indices[i];
                         filled[i].fetch_add(1);
                     }
                 };
                 if (lend) {
                     std::vector<std::uint64_t> lent(2 * n + 1);
-                    obbsat::detail::radix_sort_filled(keys.data(), values.data(), n, 20, lent.data(),
-                                                      lent.data() + n, parts, fill);
+                    obbsat::detail::radix_sort_indices(keys.data(), indices.data(), n, 20, lent.data(),
+                                                       lent.data() + n, parts, fill);
                 } else {
                     obbsat::detail::radix_buffer packed, spare;
-                    obbsat::detail::radix_sort_filled(keys.data(), values.data(), n, 20, packed, spare, parts, fill);
+                    obbsat::detail::radix_sort_indices(keys.data(), indices.data(), n, 20, packed, spare, parts,
+                                                       fill);
                 }
                 const std::string what = std::to_string(n) + " keys, " + std::to_string(parts) + " parts" +
                                          (lend ? ", lent memory" : "");
                 EXPECT_FALSE(outside.load()) << what;
                 EXPECT_EQ(std::count_if(filled.begin(), filled.end(), [](const auto& f) { return f.load() != 1; }), 0)
                     << what;
-                EXPECT_EQ(zipped(keys, values), want) << what;
+                EXPECT_EQ(zipped(keys, indices), want) << what;
             }
         }
+    }
+}
+
+TEST(radix_sort_indices, on_two_threads_splits_by_the_highest_digit_that_varies) {
+    // 24 key bits asked for: keys of 16 bits (the highest digit, the one
+    // counted first, the same for all), keys that vary in the highest digit
+    // only, and all one key, whose order is the indices themselves.
+    const std::vector<std::pair<std::uint32_t, const char*>> masks = {
+        {0x00ffffu, "16 low bits"}, {0xff0000u, "the high digit"}, {0u, "one key"}};
+    for (const auto& [mask, what] : masks) {
+        std::vector<std::uint32_t> given_keys, positions;
+        random_input(200000, 24, 29, given_keys, positions);
+        for (std::uint32_t& key : given_keys) {
+            key = (key & mask) | 0x00a000u;
+        }
+        const keyed want = stably_sorted(given_keys, positions, 0);
+        std::vector<std::uint32_t> keys(given_keys.size()), indices(given_keys.size(), 0xffffffffu);
+        obbsat::detail::radix_buffer packed, spare;
+        obbsat::detail::radix_sort_indices(keys.data(), indices.data(), keys.size(), 24, packed, spare, 2,
+                                           [&](std::size_t begin, std::size_t end) {
+                                               std::copy(given_keys.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                         given_keys.begin() + static_cast<std::ptrdiff_t>(end),
+                                                         keys.begin() + static_cast<std::ptrdiff_t>(begin));
+                                           });
+        EXPECT_EQ(zipped(keys, indices), want) << what;
     }
 }
 
@@ -413,6 +441,27 @@ TEST(sorts_on_two_threads, cut_every_step_into_more_units_than_threads_with_the_
         EXPECT_EQ(zipped(keys, values), want);
         EXPECT_GT(seen.fewest, threads) << "radix_sort";
         EXPECT_NE(seen.most, 0u) << "radix_sort ran on no executor";
+    }
+    {
+        std::vector<std::uint32_t> given_keys, positions;
+        random_input(300000, 24, 9, given_keys, positions);
+        const keyed want = stably_sorted(given_keys, positions, 0);
+        std::vector<std::uint32_t> keys(given_keys.size()), indices(given_keys.size());
+        units_seen seen;
+        const obbsat::executor last_first{&enqueue_last_first, &finish_nothing, &seen};
+        {
+            const obbsat::detail::executor_scope scope(&last_first);
+            obbsat::detail::radix_buffer packed, spare;
+            obbsat::detail::radix_sort_indices(keys.data(), indices.data(), keys.size(), 24, packed, spare, threads,
+                                               [&](std::size_t begin, std::size_t end) {
+                                                   for (std::size_t i = begin; i < end; ++i) {
+                                                       keys[i] = given_keys[i];
+                                                   }
+                                               });
+        }
+        EXPECT_EQ(zipped(keys, indices), want);
+        EXPECT_GT(seen.fewest, threads) << "radix_sort_indices";
+        EXPECT_NE(seen.most, 0u) << "radix_sort_indices ran on no executor";
     }
     {
         const two_runs r = runs_of(120000, 80000, 12, 6);

@@ -51,6 +51,10 @@ void pair_search::swap_working_memory(pair_search& other) {
     // Each query sets every field of a unit it sweeps (sweep) and clears
     // what the unit found; its blocks of pairs and strip arrays stay.
     parts_.swap(other.parts_);
+    for (std::size_t i = 0; i < 2; ++i) {
+        std::swap(strip_entries_[i], other.strip_entries_[i]);
+    }
+    far_visits_.swap(other.far_visits_);
     sort_scratch_.swap(other.sort_scratch_);
 }
 
@@ -67,6 +71,15 @@ std::size_t pair_search::working_bytes() {
         add(p.verdicts);
         bytes += p.found.bytes();
     }
+    for (const strip_entries& entries : strip_entries_) {
+        add(entries.q_lo);
+        add(entries.q_hi);
+        add(entries.id);
+        for (const auto* v : {&entries.store, &entries.lo_x, &entries.lo_y, &entries.hi_x, &entries.hi_y}) {
+            add(*v);
+        }
+    }
+    add(far_visits_);
     for (const pair_sort_scratch<pair_index>& s : sort_scratch_) {
         add(s.spare);
         add(s.counts);
@@ -151,12 +164,18 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
         (repair ? kept_.repair_seconds : kept_.sort_seconds) = std::max(bounds_and_order, 1e-9);
     }
     start = clock_type::now();
-    copy_records(input, parts);
-    collect_visits(parts);
-    stats_.order_seconds = seconds_since(start);
-    start = clock_type::now();
-    sweep(parts, emit ? &emit : nullptr);
-    stats_.sweep_seconds = seconds_since(start);
+    if (sweeps_strip_by_strip(parts)) {
+        // The copy and the visits are timed with the sweep they are part of.
+        copy_and_sweep(input, emit ? &emit : nullptr);
+        stats_.sweep_seconds = seconds_since(start);
+    } else {
+        copy_records(input, parts);
+        collect_visits(parts);
+        stats_.order_seconds = seconds_since(start);
+        start = clock_type::now();
+        sweep(parts, emit ? &emit : nullptr);
+        stats_.sweep_seconds = seconds_since(start);
+    }
     if (options_.slow_path_pairs != nullptr) {
         *options_.slow_path_pairs = stats_.slow_path_pairs;
     }

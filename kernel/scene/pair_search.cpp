@@ -55,6 +55,7 @@ void pair_search::swap_working_memory(pair_search& other) {
         std::swap(strip_entries_[i], other.strip_entries_[i]);
     }
     far_visits_.swap(other.far_visits_);
+    climbing_.swap(other.climbing_);
     sort_scratch_.swap(other.sort_scratch_);
 }
 
@@ -80,6 +81,7 @@ std::size_t pair_search::working_bytes() {
         }
     }
     add(far_visits_);
+    add(climbing_);
     for (const pair_sort_scratch<pair_index>& s : sort_scratch_) {
         add(s.spare);
         add(s.counts);

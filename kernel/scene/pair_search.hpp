@@ -307,6 +307,11 @@ private:
     /// own_begin_ and stats' strips and visits; leaves the scene's sweep
     /// arrays (in_lo_x_ ... strip_hi_, side_) and visits unwritten.
     void copy_and_sweep(const query_input& input, const pair_chunk_sink* emit);
+    /// Copies the records of the rectangles whose lowest strip is `strip`
+    /// (here.own of them) into records_, and their entries into `here` from
+    /// entry 0; lists in climbing_ those that visit the strip above, and
+    /// puts their visits beyond it in far_visits_. Returns how many climb.
+    std::size_t copy_own_entries(const query_input& input, std::uint32_t strip, strip_entries& here);
     /// Merges the own entries of `entries` with its visitors by q_lo into p's strip arrays.
     static void merge_strip(const strip_entries& entries, part& p);
 
@@ -433,6 +438,7 @@ private:
     std::vector<part> parts_;
     strip_entries strip_entries_[2];        ///< copy_and_sweep's strip and the one above
     std::vector<far_visit> far_visits_;     ///< copy_and_sweep's visits beyond the strip above, a heap
+    std::vector<std::uint32_t> climbing_;   ///< copy_own_entries: the strip's entries that visit the strip above
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;

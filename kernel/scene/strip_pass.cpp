@@ -77,15 +77,87 @@ void pair_search::far_visit::put(strip_entries& to, std::size_t at) const {
     to.hi_y[at] = hi_y;
 }
 
+std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_t strip, strip_entries& here) {
+    const std::size_t own_first = own_begin_[strip];
+    const std::size_t own = here.own;
+    const bounds_fn bounds = kernels_for(ran_).bounds;
+    const double y_low = grid_.y_low, y_scale = grid_.y_scale, x_low = grid_.x_low, x_scale = grid_.x_scale;
+    const std::uint32_t q_top = grid_.q_max, strip_top = grid_.strips - 1;
+    const auto second_store = static_cast<std::uint32_t>(self_ ? n_ : a_count_);
+    if (climbing_.size() < own + 1) {
+        climbing_.resize(std::max(own + 1, 2 * climbing_.size()));
+    }
+    std::size_t near = 0;
+    for (std::size_t run = 0; run < own; run += bounds_run::size) {
+        const std::size_t run_end = std::min(own, run + bounds_run::size);
+        for (std::size_t i = run; i < run_end; ++i) {
+            const std::size_t k = own_first + i;
+            if (k + random_rows_ahead < n_) {
+                fetch_into_l2(record_at(input, order_[k + random_rows_ahead]));
+            }
+            ::new (static_cast<void*>(&records_[k])) record;  // its memory may have held the sort's words
+            copy_row(input, order_[k], records_[k].v);
+        }
+        if (filtered_) {
+            for (std::size_t i = run; i < run_end; ++i) {
+                filters_[own_first + i] = filter_of(input, order_[own_first + i]);
+            }
+        }
+        bounds_run b;
+        bounds(kind_, records_[own_first + run].v, run_end - run, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+        // The grid's maps on locals and pointers that alias nothing, as in
+        // store_sweep_bounds, so that the loop takes no branch and reads
+        // nothing again after each store.
+        const std::size_t count = run_end - run;
+        std::uint32_t* __restrict const q_lo = here.q_lo.data() + run;
+        std::uint32_t* __restrict const q_hi = here.q_hi.data() + run;
+        std::uint32_t* __restrict const ids = here.id.data() + run;
+        float* __restrict const store = here.store.data() + run;
+        float* __restrict const lo_x = here.lo_x.data() + run;
+        float* __restrict const lo_y = here.lo_y.data() + run;
+        float* __restrict const hi_x = here.hi_x.data() + run;
+        float* __restrict const hi_y = here.hi_y.data() + run;
+        const std::uint32_t* __restrict const rows = order_.data() + own_first + run;
+        alignas(64) std::uint32_t high[bounds_run::size];
+        for (std::size_t r = 0; r < count; ++r) {
+            q_lo[r] = strip_grid::clamped_floor((static_cast<double>(b.lo_x[r]) - x_low) * x_scale, q_top);
+            q_hi[r] = strip_grid::clamped_floor((static_cast<double>(b.hi_x[r]) - x_low) * x_scale, q_top);
+            high[r] = strip_grid::clamped_floor((static_cast<double>(b.hi_y[r]) - y_low) * y_scale, strip_top);
+            ids[r] = static_cast<std::uint32_t>(own_first + run + r);
+            store[r] = rows[r] >= second_store ? 1.0f : 0.0f;
+            lo_x[r] = b.lo_x[r];
+            lo_y[r] = b.lo_y[r];
+            hi_x[r] = b.hi_x[r];
+            hi_y[r] = b.hi_y[r];
+        }
+        // Whether a rectangle visits the strip above is as random as the
+        // scene: each one writes itself to the next slot, which the next
+        // visitor overwrites if this one was none (visits.cpp). A highest
+        // strip below this one (rows changed between the order's read and
+        // this one) is taken as this one: no visit.
+        std::uint32_t* __restrict const climbing = climbing_.data();
+        for (std::size_t r = 0; r < count; ++r) {
+            const std::uint32_t top = std::max(high[r], strip);
+            climbing[near] = static_cast<std::uint32_t>(run + r);
+            near += top != strip ? 1u : 0u;
+            if (top > strip + 1) {
+                far_visits_.push_back(far_visit{strip + 2, top, q_lo[r], q_hi[r], ids[r], store[r], lo_x[r], lo_y[r],
+                                                hi_x[r], hi_y[r]});
+                std::push_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
+            }
+        }
+    }
+    return near;
+}
+
 void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink* emit) {
     const std::uint32_t strips = grid_.strips;
-    const unsigned q_bits = grid_.q_bits;
     records_.resize(n_);
     if (filtered_) {
         filters_.resize(n_);
     }
     own_begin_.resize(strips + 1);
-    bucket_starts(keys_.data(), n_, q_bits, strips, 0, n_, own_begin_.data());
+    bucket_starts(keys_.data(), n_, grid_.q_bits, strips, 0, n_, own_begin_.data());
     if (parts_.empty()) {
         parts_.resize(1);
     }
@@ -96,15 +168,9 @@ void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink
     above->visitors = 0;
     far_visits_.clear();
     std::size_t visits = 0;
-    const bounds_fn bounds = kernels_for(ran_).bounds;
-    const double y_low = grid_.y_low, y_scale = grid_.y_scale, x_low = grid_.x_low, x_scale = grid_.x_scale;
-    const std::uint32_t q_top = grid_.q_max, strip_top = strips - 1;
-    const auto second_store = static_cast<std::uint32_t>(self_ ? n_ : a_count_);
     sweep_units(1, 1, emit, [&](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {
         for (std::uint32_t s = 0; s < strips && !failed.load(); ++s) {
-            const std::size_t own_first = own_begin_[s];
-            const std::size_t own = own_begin_[s + 1] - own_first;
-            const std::size_t above_own = s + 1 < strips ? own_begin_[s + 2] - own_begin_[s + 1] : 0;
+            const std::size_t own = own_begin_[s + 1] - own_begin_[s];
             here->own = own;
             // Visitors from two or more strips below come after those from
             // the strip just below; either run is in order, both together
@@ -125,104 +191,31 @@ void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink
                     far_visits_.pop_back();
                 }
             }
-            // The visits of this strip's rectangles to the one above go after
-            // that strip's own rectangles, in this strip's order (its key
-            // order), so sorted by q_lo as well.
-            above->make_room(above_own + own + 1);
-            std::size_t near = 0;
-            std::uint32_t last_q = 0;
-            unsigned near_sorted = 1;
-            for (std::size_t run = 0; run < own; run += bounds_run::size) {
-                const std::size_t run_end = std::min(own, run + bounds_run::size);
-                for (std::size_t i = run; i < run_end; ++i) {
-                    const std::size_t k = own_first + i;
-                    if (k + random_rows_ahead < n_) {
-                        fetch_into_l2(record_at(input, order_[k + random_rows_ahead]));
-                    }
-                    ::new (static_cast<void*>(&records_[k])) record;  // its memory may have held the sort's words
-                    copy_row(input, order_[k], records_[k].v);
-                }
-                if (filtered_) {
-                    for (std::size_t i = run; i < run_end; ++i) {
-                        filters_[own_first + i] = filter_of(input, order_[own_first + i]);
-                    }
-                }
-                bounds_run b;
-                bounds(kind_, records_[own_first + run].v, run_end - run, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
-                // Local pointers that alias nothing, as in store_sweep_bounds: no branch, no reload after a store.
-                std::uint32_t* __restrict const q_lo = here->q_lo.data();
-                std::uint32_t* __restrict const q_hi = here->q_hi.data();
-                std::uint32_t* __restrict const ids = here->id.data();
-                float* __restrict const store = here->store.data();
-                float* __restrict const lo_x = here->lo_x.data();
-                float* __restrict const lo_y = here->lo_y.data();
-                float* __restrict const hi_x = here->hi_x.data();
-                float* __restrict const hi_y = here->hi_y.data();
-                std::uint32_t* __restrict const up_q_lo = above->q_lo.data();
-                std::uint32_t* __restrict const up_q_hi = above->q_hi.data();
-                std::uint32_t* __restrict const up_ids = above->id.data();
-                float* __restrict const up_store = above->store.data();
-                float* __restrict const up_lo_x = above->lo_x.data();
-                float* __restrict const up_lo_y = above->lo_y.data();
-                float* __restrict const up_hi_x = above->hi_x.data();
-                float* __restrict const up_hi_y = above->hi_y.data();
-                for (std::size_t i = run; i < run_end; ++i) {
-                    const std::size_t r = i - run;
-                    const auto k = static_cast<std::uint32_t>(own_first + i);
-                    const std::uint32_t entry_q_lo =
-                        strip_grid::clamped_floor((static_cast<double>(b.lo_x[r]) - x_low) * x_scale, q_top);
-                    const std::uint32_t entry_q_hi =
-                        strip_grid::clamped_floor((static_cast<double>(b.hi_x[r]) - x_low) * x_scale, q_top);
-                    const float entry_store = order_[k] >= second_store ? 1.0f : 0.0f;
-                    q_lo[i] = entry_q_lo;
-                    q_hi[i] = entry_q_hi;
-                    ids[i] = k;
-                    store[i] = entry_store;
-                    lo_x[i] = b.lo_x[r];
-                    lo_y[i] = b.lo_y[r];
-                    hi_x[i] = b.hi_x[r];
-                    hi_y[i] = b.hi_y[r];
-                    // A highest strip below this one (rows changed between
-                    // the order's read and this one) is taken as this one: no visit.
-                    const std::uint32_t high = std::max(
-                        strip_grid::clamped_floor((static_cast<double>(b.hi_y[r]) - y_low) * y_scale, strip_top), s);
-                    // Whether a rectangle visits is as random as the scene:
-                    // each one writes a would-be visit to the next slot, which
-                    // the next visit overwrites if this was none (visits.cpp).
-                    const std::uint32_t is_near = high != s ? 1u : 0u;
-                    const std::size_t slot = above_own + near;
-                    up_q_lo[slot] = entry_q_lo;
-                    up_q_hi[slot] = entry_q_hi;
-                    up_ids[slot] = k;
-                    up_store[slot] = entry_store;
-                    up_lo_x[slot] = b.lo_x[r];
-                    up_lo_y[slot] = b.lo_y[r];
-                    up_hi_x[slot] = b.hi_x[r];
-                    up_hi_y[slot] = b.hi_y[r];
-                    near_sorted &= static_cast<unsigned>(entry_q_lo >= last_q) | (is_near ^ 1u);
-                    last_q = is_near != 0 ? entry_q_lo : last_q;
-                    near += is_near;
-                    if (high > s + 1) {
-                        far_visits_.push_back(far_visit{s + 2, high, entry_q_lo, entry_q_hi, k, entry_store,
-                                                        b.lo_x[r], b.lo_y[r], b.hi_x[r], b.hi_y[r]});
-                        std::push_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
-                    }
-                }
-            }
+            const std::size_t near = copy_own_entries(input, s, *here);
             if (near_visitors > 0 && here->visitors > near_visitors) {
                 here->sort_visitors();
             }
             visits += here->visitors;
-            const std::size_t m = own + here->visitors;
-            if (own > 0 && m >= 2) {
+            if (own > 0 && own + here->visitors >= 2) {
                 merge_strip(*here, p);
-                sweep_merged(p, m, after_flush);
+                sweep_merged(p, own + here->visitors, after_flush);
+            }
+            // The visits to the strip above go after its own rectangles, in
+            // this strip's key order: sorted by q_lo, as the keys are made
+            // from the same bounds. Were they not (rows changed while the
+            // query read them), they are sorted.
+            const std::size_t above_own = s + 1 < strips ? own_begin_[s + 2] - own_begin_[s + 1] : 0;
+            above->own = above_own;
+            above->make_room(above_own + near + 1);
+            unsigned sorted = 1;
+            for (std::size_t j = 0; j < near; ++j) {
+                above->take(above_own + j, *here, climbing_[j]);
+                sorted &= j == 0 || here->q_lo[climbing_[j - 1]] <= here->q_lo[climbing_[j]] ? 1u : 0u;
             }
             std::swap(here, above);
             here->visitors = near;
             above->visitors = 0;
-            if (near_sorted == 0) {
-                here->own = above_own;
+            if (sorted == 0) {
                 here->sort_visitors();
             }
         }

@@ -52,9 +52,12 @@ void pair_search::swap_working_memory(pair_search& other) {
     // what the unit found; its blocks of pairs and strip arrays stay.
     parts_.swap(other.parts_);
     for (std::size_t i = 0; i < 2; ++i) {
-        std::swap(strip_entries_[i], other.strip_entries_[i]);
+        std::swap(visitors_[i], other.visitors_[i]);
     }
     far_visits_.swap(other.far_visits_);
+    own_at_.swap(other.own_at_);
+    visitor_at_.swap(other.visitor_at_);
+    own_q_.swap(other.own_q_);
     climbing_.swap(other.climbing_);
     sort_scratch_.swap(other.sort_scratch_);
 }
@@ -72,16 +75,18 @@ std::size_t pair_search::working_bytes() {
         add(p.verdicts);
         bytes += p.found.bytes();
     }
-    for (const strip_entries& entries : strip_entries_) {
-        add(entries.q_lo);
-        add(entries.q_hi);
-        add(entries.id);
-        for (const auto* v : {&entries.store, &entries.lo_x, &entries.lo_y, &entries.hi_x, &entries.hi_y}) {
+    for (const strip_visitors& visitors : visitors_) {
+        for (const auto* v : {&visitors.q_lo, &visitors.q_hi, &visitors.id}) {
+            add(*v);
+        }
+        for (const auto* v : {&visitors.store, &visitors.lo_x, &visitors.lo_y, &visitors.hi_x, &visitors.hi_y}) {
             add(*v);
         }
     }
     add(far_visits_);
-    add(climbing_);
+    for (const auto* v : {&own_at_, &visitor_at_, &own_q_, &climbing_}) {
+        add(*v);
+    }
     for (const pair_sort_scratch<pair_index>& s : sort_scratch_) {
         add(s.spare);
         add(s.counts);

@@ -266,33 +266,30 @@ private:
     void test_candidates(part& p, std::size_t count) const;
 
     // Steps 2 (the records' copy) to 5 strip by strip, on one thread (strip_pass.cpp).
-    /// One strip's entries before its merge, in structure-of-arrays form: the
-    /// rectangles whose lowest strip it is from entry 0 (`own` of them, in
-    /// the order's key order), then the strip's visitors (sorted by q_lo),
-    /// then a spare entry the merge may read. Two of them are kept, the strip
-    /// being swept and the one above, which its visits fill.
-    struct strip_entries {
+    /// The visitors of one strip from the strips below, sorted by q_lo, in
+    /// structure-of-arrays form. Two are kept: the strip being swept and the
+    /// one above, which its rectangles' visits fill.
+    struct strip_visitors {
         std::vector<std::uint32_t> q_lo, q_hi, id;
         std::vector<float> store, lo_x, lo_y, hi_x, hi_y;
-        std::size_t own = 0;
-        std::size_t visitors = 0;
-        /// Room for `count` entries, what they hold kept.
-        void make_room(std::size_t count);
+        std::size_t count = 0;
+        /// Room for `entries` entries, what they hold kept.
+        void make_room(std::size_t entries);
         /// Entry `to` := entry `at` of `from`.
-        void take(std::size_t to, const strip_entries& from, std::size_t at);
-        /// Sorts the visitors by q_lo, equal ones kept in their order.
-        void sort_visitors();
+        void take(std::size_t to, const strip_visitors& from, std::size_t at);
+        /// Sorts the entries by q_lo, equal ones kept in their order.
+        void sort_by_q_lo();
     };
     /// A visit to a strip beyond the one just above a rectangle's lowest,
     /// waiting for its strip (a heap by strip, then q_lo, then rectangle);
-    /// once taken, it waits again for the next strip up to `high`.
+    /// once taken, it waits again for the next strip, up to `high`.
     struct far_visit {
         std::uint32_t strip, high, q_lo, q_hi, id;
         float store, lo_x, lo_y, hi_x, hi_y;
         /// The heap's order: x after y.
         static bool later(const far_visit& x, const far_visit& y);
         /// Writes this visit as entry `at` of `to`.
-        void put(strip_entries& to, std::size_t at) const;
+        void put(strip_visitors& to, std::size_t at) const;
     };
     /// The query takes steps 2 to 5 strip by strip (copy_and_sweep): a plain
     /// float query on one thread. On more, the steps are taken one at a time,
@@ -301,19 +298,26 @@ private:
     /// they write.
     bool sweeps_strip_by_strip(std::size_t parts) const { return parts == 1 && !doubles_ && !kept_.keep; }
     /// copy_records, collect_visits and sweep, one strip after the other, on
-    /// the calling thread: for each strip its records copied and bounded, its
-    /// visits to the strips above written to the next strip's entries, its
-    /// own merged with its visitors, and swept. Fills records_ (and filters_),
-    /// own_begin_ and stats' strips and visits; leaves the scene's sweep
-    /// arrays (in_lo_x_ ... strip_hi_, side_) and visits unwritten.
+    /// the calling thread: for each strip the places of its entries in the
+    /// merge, its records copied and bounded straight into their places, its
+    /// visits to the strips above kept for them, and the strip swept. Fills
+    /// records_ (and filters_), own_begin_ and stats' strips and visits;
+    /// leaves the scene's sweep arrays (in_lo_x_ ... strip_hi_, side_) and
+    /// visits unwritten.
     void copy_and_sweep(const query_input& input, const pair_chunk_sink* emit);
-    /// Copies the records of the rectangles whose lowest strip is `strip`
-    /// (here.own of them) into records_, and their entries into `here` from
-    /// entry 0; lists in climbing_ those that visit the strip above, and
-    /// puts their visits beyond it in far_visits_. Returns how many climb.
-    std::size_t copy_own_entries(const query_input& input, std::uint32_t strip, strip_entries& here);
-    /// Merges the own entries of `entries` with its visitors by q_lo into p's strip arrays.
-    static void merge_strip(const strip_entries& entries, part& p);
+    /// The places in the merged strip of its `own` rectangles (own_at_, by
+    /// their keys) and of its visitors (visitor_at_); writes the visitors
+    /// there in p's strip arrays, with room for the sentinels.
+    void place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p);
+    /// Copies the records of the `own` rectangles whose lowest strip is
+    /// `strip` into records_, and their entries to their places in p
+    /// (place_strip); lists in climbing_ the places of those that visit the
+    /// strip above, and puts their visits beyond it in far_visits_. Returns
+    /// how many climb.
+    std::size_t copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p);
+    /// The `near` entries of p that climb (climbing_) as the visitors of the
+    /// strip above; false if they are not sorted by q_lo.
+    bool climb(const part& p, std::size_t near, strip_visitors& above) const;
 
     // The answer as one sorted list (output.cpp).
     void sort_found();
@@ -436,9 +440,11 @@ private:
     bool visits_counted_ = false;            ///< copy_records counted this query's visits
 
     std::vector<part> parts_;
-    strip_entries strip_entries_[2];        ///< copy_and_sweep's strip and the one above
+    strip_visitors visitors_[2];           ///< copy_and_sweep: the visitors of its strip and of the one above
     std::vector<far_visit> far_visits_;     ///< copy_and_sweep's visits beyond the strip above, a heap
-    std::vector<std::uint32_t> climbing_;   ///< copy_own_entries: the strip's entries that visit the strip above
+    std::vector<std::uint32_t> own_at_, visitor_at_;  ///< place_strip: the places of a strip's entries
+    std::vector<std::uint32_t> own_q_;  ///< place_strip: the q_lo of a strip's own rectangles, from their keys
+    std::vector<std::uint32_t> climbing_;   ///< copy_own_entries: the places of the entries that visit the strip above
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;

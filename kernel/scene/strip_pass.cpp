@@ -1,11 +1,13 @@
 // Steps 2 to 5 of the scene query (pair_search.hpp) strip by strip, for a
 // plain float query on one thread: each strip's records copied into the
 // query's order, their bounds, their visits to the strips above, the merge
-// with the strip's own visitors and the sweep, in one go while the strip's
+// with the strip's visitors and the sweep, in one go while the strip's
 // entries are in the cache. The steps taken one at a time write every
 // rectangle's sweep bounds to arrays of the whole scene (records_copy.cpp)
 // and read them back in each strip's merge (sweep.cpp), visitors at random;
-// here they pass through two buffers of a strip each (strip_entries).
+// here a strip's own rectangles go from their bounds straight to their
+// places in the swept strip, and only its visitors pass through a buffer
+// (strip_visitors) between two strips.
 #include "scene/pair_search.hpp"
 
 #include "dispatch/backend_registry.hpp"
@@ -21,20 +23,26 @@
 
 namespace obbsat::detail {
 
-void pair_search::strip_entries::make_room(std::size_t count) {
-    if (id.size() < count) {
-        // Grown with room to spare: the next strips are about as large.
-        const std::size_t size = std::max(count, 2 * id.size());
-        for (auto* v : {&q_lo, &q_hi, &id}) {
-            v->resize(size);
-        }
-        for (auto* v : {&store, &lo_x, &lo_y, &hi_x, &hi_y}) {
-            v->resize(size);
-        }
+namespace {
+
+/// Room for `count` entries in each of `arrays`, grown with room to spare
+/// (the next strips are about as large), what they hold kept.
+template <class... Vectors>
+void grow_to(std::size_t count, Vectors*... arrays) {
+    const std::size_t size = std::max(count, 2 * std::min({arrays->size()...}));
+    if (std::min({arrays->size()...}) < count) {
+        (arrays->resize(size), ...);
     }
 }
 
-void pair_search::strip_entries::take(std::size_t to, const strip_entries& from, std::size_t at) {
+}  // namespace
+
+void pair_search::strip_visitors::make_room(std::size_t entries) {
+    grow_to(entries, &q_lo, &q_hi, &id);
+    grow_to(entries, &store, &lo_x, &lo_y, &hi_x, &hi_y);
+}
+
+void pair_search::strip_visitors::take(std::size_t to, const strip_visitors& from, std::size_t at) {
     q_lo[to] = from.q_lo[at];
     q_hi[to] = from.q_hi[at];
     id[to] = from.id[at];
@@ -45,20 +53,19 @@ void pair_search::strip_entries::take(std::size_t to, const strip_entries& from,
     hi_y[to] = from.hi_y[at];
 }
 
-void pair_search::strip_entries::sort_visitors() {
-    // Rare (a strip with visitors from more than one strip below, or rows
-    // changed while the query read them): sorted through a copy.
-    const std::size_t first = own;
-    std::vector<std::uint32_t> by_q(visitors);
-    std::iota(by_q.begin(), by_q.end(), static_cast<std::uint32_t>(first));
+void pair_search::strip_visitors::sort_by_q_lo() {
+    // Rare (a strip with visitors from the strip below and from further
+    // down, or rows changed while the query read them): sorted through a copy.
+    std::vector<std::uint32_t> by_q(count);
+    std::iota(by_q.begin(), by_q.end(), 0u);
     std::stable_sort(by_q.begin(), by_q.end(), [this](std::uint32_t x, std::uint32_t y) { return q_lo[x] < q_lo[y]; });
-    strip_entries sorted;
-    sorted.make_room(visitors);
-    for (std::size_t i = 0; i < visitors; ++i) {
+    strip_visitors sorted;
+    sorted.make_room(count);
+    for (std::size_t i = 0; i < count; ++i) {
         sorted.take(i, *this, by_q[i]);
     }
-    for (std::size_t i = 0; i < visitors; ++i) {
-        take(first + i, sorted, i);
+    for (std::size_t i = 0; i < count; ++i) {
+        take(i, sorted, i);
     }
 }
 
@@ -66,7 +73,7 @@ bool pair_search::far_visit::later(const far_visit& x, const far_visit& y) {
     return x.strip != y.strip ? x.strip > y.strip : x.q_lo != y.q_lo ? x.q_lo > y.q_lo : x.id > y.id;
 }
 
-void pair_search::far_visit::put(strip_entries& to, std::size_t at) const {
+void pair_search::far_visit::put(strip_visitors& to, std::size_t at) const {
     to.q_lo[at] = q_lo;
     to.q_hi[at] = q_hi;
     to.id[at] = id;
@@ -77,16 +84,75 @@ void pair_search::far_visit::put(strip_entries& to, std::size_t at) const {
     to.hi_y[at] = hi_y;
 }
 
-std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_t strip, strip_entries& here) {
+void pair_search::place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p) {
+    // The merge by quantized lo_x (a rectangle before a visitor on equal
+    // keys), on the keys alone: a rectangle's key holds the q_lo its bounds
+    // give (the keys are made from the same bounds), so its place is known
+    // before its row is read. A merge step by step waits on each choice
+    // (the next read depends on it); here each visitor finds how many own
+    // rectangles go before it by a binary search of its own, independent of
+    // the others', and each own rectangle is moved on by the visitors before
+    // it, counted in one pass.
+    const std::size_t count = visitors.count;
+    make_strip_room(p, own + count);
+    grow_to(own + 1, &own_at_, &own_q_);
+    grow_to(count, &visitor_at_);
+    std::uint32_t* const own_at = own_at_.data();
+    std::uint32_t* const visitor_at = visitor_at_.data();
+    std::uint32_t* const own_q = own_q_.data();
+    const std::uint32_t q_mask = grid_.q_max;
+    const std::uint32_t* const keys = keys_.data() + own_first;
+    for (std::size_t i = 0; i < own; ++i) {
+        own_q[i] = keys[i] & q_mask;
+    }
+    // own_at counts, for each i, the visitors that go before own rectangle i
+    // and not before i - 1; then their running sum plus i is its place.
+    std::fill(own_at, own_at + own + 1, 0u);
+    if (own > 0) {
+        for (std::size_t j = 0; j < count; ++j) {
+            // Own rectangles whose q_lo is at most the visitor's: a search
+            // whose steps depend only on `own`, so it takes no branch on the data.
+            const std::uint32_t q = visitors.q_lo[j];
+            const std::uint32_t* first = own_q;
+            std::size_t left = own;
+            while (left > 1) {
+                const std::size_t half = left / 2;
+                first = first[half] <= q ? first + half : first;
+                left -= half;
+            }
+            const std::size_t before = static_cast<std::size_t>(first - own_q) + (*first <= q ? 1u : 0u);
+            visitor_at[j] = static_cast<std::uint32_t>(j + before);
+            ++own_at[before];
+        }
+    } else {
+        std::iota(visitor_at, visitor_at + count, 0u);
+    }
+    std::uint32_t passed = 0;
+    for (std::size_t i = 0; i < own; ++i) {
+        passed += own_at[i];
+        own_at[i] = static_cast<std::uint32_t>(i) + passed;
+    }
+    for (std::size_t j = 0; j < count; ++j) {
+        const std::size_t e = visitor_at[j];
+        p.q_lo[e] = static_cast<float>(visitors.q_lo[j]);
+        p.q_hi[e] = static_cast<float>(visitors.q_hi[j]);
+        p.id[e] = static_cast<std::int32_t>(visitors.id[j]);
+        p.starts[e] = 0.0f;
+        p.store[e] = visitors.store[j];
+        p.lo_x[e] = visitors.lo_x[j];
+        p.lo_y[e] = visitors.lo_y[j];
+        p.hi_x[e] = visitors.hi_x[j];
+        p.hi_y[e] = visitors.hi_y[j];
+    }
+}
+
+std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p) {
     const std::size_t own_first = own_begin_[strip];
-    const std::size_t own = here.own;
     const bounds_fn bounds = kernels_for(ran_).bounds;
     const double y_low = grid_.y_low, y_scale = grid_.y_scale, x_low = grid_.x_low, x_scale = grid_.x_scale;
     const std::uint32_t q_top = grid_.q_max, strip_top = grid_.strips - 1;
     const auto second_store = static_cast<std::uint32_t>(self_ ? n_ : a_count_);
-    if (climbing_.size() < own + 1) {
-        climbing_.resize(std::max(own + 1, 2 * climbing_.size()));
-    }
+    grow_to(own + 1, &climbing_);
     std::size_t near = 0;
     for (std::size_t run = 0; run < own; run += bounds_run::size) {
         const std::size_t run_end = std::min(own, run + bounds_run::size);
@@ -105,30 +171,36 @@ std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_
         }
         bounds_run b;
         bounds(kind_, records_[own_first + run].v, run_end - run, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
-        // The grid's maps on locals and pointers that alias nothing, as in
-        // store_sweep_bounds, so that the loop takes no branch and reads
-        // nothing again after each store.
+        // Each entry to its place in the strip (place_strip). The grid's maps
+        // on locals and pointers that alias nothing, as in store_sweep_bounds,
+        // so that the loop takes no branch and reads nothing again after each store.
         const std::size_t count = run_end - run;
-        std::uint32_t* __restrict const q_lo = here.q_lo.data() + run;
-        std::uint32_t* __restrict const q_hi = here.q_hi.data() + run;
-        std::uint32_t* __restrict const ids = here.id.data() + run;
-        float* __restrict const store = here.store.data() + run;
-        float* __restrict const lo_x = here.lo_x.data() + run;
-        float* __restrict const lo_y = here.lo_y.data() + run;
-        float* __restrict const hi_x = here.hi_x.data() + run;
-        float* __restrict const hi_y = here.hi_y.data() + run;
+        float* __restrict const q_lo = p.q_lo.data();
+        float* __restrict const q_hi = p.q_hi.data();
+        std::int32_t* __restrict const ids = p.id.data();
+        float* __restrict const starts = p.starts.data();
+        float* __restrict const store = p.store.data();
+        float* __restrict const lo_x = p.lo_x.data();
+        float* __restrict const lo_y = p.lo_y.data();
+        float* __restrict const hi_x = p.hi_x.data();
+        float* __restrict const hi_y = p.hi_y.data();
+        const std::uint32_t* __restrict const at = own_at_.data() + run;
         const std::uint32_t* __restrict const rows = order_.data() + own_first + run;
         alignas(64) std::uint32_t high[bounds_run::size];
         for (std::size_t r = 0; r < count; ++r) {
-            q_lo[r] = strip_grid::clamped_floor((static_cast<double>(b.lo_x[r]) - x_low) * x_scale, q_top);
-            q_hi[r] = strip_grid::clamped_floor((static_cast<double>(b.hi_x[r]) - x_low) * x_scale, q_top);
+            const std::size_t e = at[r];
+            q_lo[e] = static_cast<float>(
+                strip_grid::clamped_floor((static_cast<double>(b.lo_x[r]) - x_low) * x_scale, q_top));
+            q_hi[e] = static_cast<float>(
+                strip_grid::clamped_floor((static_cast<double>(b.hi_x[r]) - x_low) * x_scale, q_top));
             high[r] = strip_grid::clamped_floor((static_cast<double>(b.hi_y[r]) - y_low) * y_scale, strip_top);
-            ids[r] = static_cast<std::uint32_t>(own_first + run + r);
-            store[r] = rows[r] >= second_store ? 1.0f : 0.0f;
-            lo_x[r] = b.lo_x[r];
-            lo_y[r] = b.lo_y[r];
-            hi_x[r] = b.hi_x[r];
-            hi_y[r] = b.hi_y[r];
+            ids[e] = static_cast<std::int32_t>(own_first + run + r);
+            starts[e] = 1.0f;
+            store[e] = rows[r] >= second_store ? 1.0f : 0.0f;
+            lo_x[e] = b.lo_x[r];
+            lo_y[e] = b.lo_y[r];
+            hi_x[e] = b.hi_x[r];
+            hi_y[e] = b.hi_y[r];
         }
         // Whether a rectangle visits the strip above is as random as the
         // scene: each one writes itself to the next slot, which the next
@@ -138,16 +210,43 @@ std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_
         std::uint32_t* __restrict const climbing = climbing_.data();
         for (std::size_t r = 0; r < count; ++r) {
             const std::uint32_t top = std::max(high[r], strip);
-            climbing[near] = static_cast<std::uint32_t>(run + r);
+            climbing[near] = at[r];
             near += top != strip ? 1u : 0u;
             if (top > strip + 1) {
-                far_visits_.push_back(far_visit{strip + 2, top, q_lo[r], q_hi[r], ids[r], store[r], lo_x[r], lo_y[r],
-                                                hi_x[r], hi_y[r]});
+                const std::size_t e = at[r];
+                far_visits_.push_back(far_visit{strip + 2, top, static_cast<std::uint32_t>(q_lo[e]),
+                                                static_cast<std::uint32_t>(q_hi[e]),
+                                                static_cast<std::uint32_t>(ids[e]), store[e], lo_x[e], lo_y[e],
+                                                hi_x[e], hi_y[e]});
                 std::push_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
             }
         }
     }
     return near;
+}
+
+bool pair_search::climb(const part& p, std::size_t near, strip_visitors& above) const {
+    // In this strip's key order, so sorted by q_lo as the keys are made from
+    // the same bounds; were they not (rows changed while the query read
+    // them), the caller sorts them.
+    above.make_room(near + 1);
+    above.count = near;
+    unsigned sorted = 1;
+    float last_q = 0;
+    for (std::size_t j = 0; j < near; ++j) {
+        const std::size_t e = climbing_[j];
+        above.q_lo[j] = static_cast<std::uint32_t>(p.q_lo[e]);
+        above.q_hi[j] = static_cast<std::uint32_t>(p.q_hi[e]);
+        above.id[j] = static_cast<std::uint32_t>(p.id[e]);
+        above.store[j] = p.store[e];
+        above.lo_x[j] = p.lo_x[e];
+        above.lo_y[j] = p.lo_y[e];
+        above.hi_x[j] = p.hi_x[e];
+        above.hi_y[j] = p.hi_y[e];
+        sorted &= last_q <= p.q_lo[e] ? 1u : 0u;
+        last_q = p.q_lo[e];
+    }
+    return sorted != 0;
 }
 
 void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink* emit) {
@@ -162,28 +261,26 @@ void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink
         parts_.resize(1);
     }
     start_part(parts_[0], 0, strips);
-    strip_entries* here = &strip_entries_[0];
-    strip_entries* above = &strip_entries_[1];
-    here->visitors = 0;
-    above->visitors = 0;
+    strip_visitors* here = &visitors_[0];
+    strip_visitors* above = &visitors_[1];
+    here->count = 0;
+    above->count = 0;
     far_visits_.clear();
     std::size_t visits = 0;
     sweep_units(1, 1, emit, [&](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {
         for (std::uint32_t s = 0; s < strips && !failed.load(); ++s) {
-            const std::size_t own = own_begin_[s + 1] - own_begin_[s];
-            here->own = own;
+            const std::size_t own_first = own_begin_[s];
+            const std::size_t own = own_begin_[s + 1] - own_first;
             // Visitors from two or more strips below come after those from
             // the strip just below; either run is in order, both together
             // only once sorted.
-            const std::size_t near_visitors = here->visitors;
-            here->make_room(own + near_visitors + 1);
+            const std::size_t near_visitors = here->count;
             while (!far_visits_.empty() && far_visits_.front().strip == s) {
                 std::pop_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
                 far_visit& visit = far_visits_.back();
-                const std::size_t at = own + here->visitors;
-                here->make_room(at + 2);
-                visit.put(*here, at);
-                ++here->visitors;
+                here->make_room(here->count + 1);
+                visit.put(*here, here->count);
+                ++here->count;
                 if (visit.high > s) {
                     ++visit.strip;
                     std::push_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
@@ -191,85 +288,26 @@ void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink
                     far_visits_.pop_back();
                 }
             }
-            const std::size_t near = copy_own_entries(input, s, *here);
-            if (near_visitors > 0 && here->visitors > near_visitors) {
-                here->sort_visitors();
+            if (near_visitors > 0 && here->count > near_visitors) {
+                here->sort_by_q_lo();
             }
-            visits += here->visitors;
-            if (own > 0 && own + here->visitors >= 2) {
-                merge_strip(*here, p);
-                sweep_merged(p, own + here->visitors, after_flush);
-            }
-            // The visits to the strip above go after its own rectangles, in
-            // this strip's key order: sorted by q_lo, as the keys are made
-            // from the same bounds. Were they not (rows changed while the
-            // query read them), they are sorted.
-            const std::size_t above_own = s + 1 < strips ? own_begin_[s + 2] - own_begin_[s + 1] : 0;
-            above->own = above_own;
-            above->make_room(above_own + near + 1);
-            unsigned sorted = 1;
-            for (std::size_t j = 0; j < near; ++j) {
-                above->take(above_own + j, *here, climbing_[j]);
-                sorted &= j == 0 || here->q_lo[climbing_[j - 1]] <= here->q_lo[climbing_[j]] ? 1u : 0u;
+            visits += here->count;
+            const std::size_t m = own + here->count;
+            place_strip(*here, own_first, own, p);
+            const std::size_t near = copy_own_entries(input, s, own, p);
+            const bool climbers_sorted = climb(p, near, *above);
+            if (own > 0 && m >= 2) {
+                sweep_merged(p, m, after_flush);
             }
             std::swap(here, above);
-            here->visitors = near;
-            above->visitors = 0;
-            if (sorted == 0) {
-                here->sort_visitors();
+            above->count = 0;
+            if (!climbers_sorted) {
+                here->sort_by_q_lo();
             }
         }
     });
     stats_.strips = strips;
     stats_.visits = visits;
-}
-
-void pair_search::merge_strip(const strip_entries& entries, part& p) {
-    // By quantized lo_x, a rectangle before a visitor on equal keys, without
-    // a branch (which side comes next is as random as the scene): a side
-    // that has run out reads as the largest key, and every read stays in the
-    // buffer (the entry after the last visitor is spare).
-    const std::size_t own = entries.own;
-    const std::size_t end = own + entries.visitors;
-    make_strip_room(p, end);
-    constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-    const std::uint32_t* const from_q_lo = entries.q_lo.data();
-    const std::uint32_t* const from_q_hi = entries.q_hi.data();
-    const std::uint32_t* const from_id = entries.id.data();
-    const float* const from_store = entries.store.data();
-    const float* const from_lo_x = entries.lo_x.data();
-    const float* const from_lo_y = entries.lo_y.data();
-    const float* const from_hi_x = entries.hi_x.data();
-    const float* const from_hi_y = entries.hi_y.data();
-    float* const q_lo = p.q_lo.data();
-    float* const q_hi = p.q_hi.data();
-    std::int32_t* const ids = p.id.data();
-    float* const starts = p.starts.data();
-    float* const store = p.store.data();
-    float* const lo_x = p.lo_x.data();
-    float* const lo_y = p.lo_y.data();
-    float* const hi_x = p.hi_x.data();
-    float* const hi_y = p.hi_y.data();
-    std::size_t o = 0;
-    std::size_t v = own;
-    for (std::size_t e = 0; e < end; ++e) {
-        const std::uint32_t own_q = o < own ? from_q_lo[o] : none;
-        const std::uint32_t visit_q = v < end ? from_q_lo[v] : none;
-        const std::size_t take_own = own_q <= visit_q ? 1u : 0u;
-        const std::size_t own_mask = 0u - take_own;
-        const std::size_t k = (o & own_mask) | (v & ~own_mask);
-        o += take_own;
-        v += 1u - take_own;
-        q_lo[e] = static_cast<float>(from_q_lo[k]);
-        q_hi[e] = static_cast<float>(from_q_hi[k]);
-        ids[e] = static_cast<std::int32_t>(from_id[k]);
-        starts[e] = static_cast<float>(take_own);
-        store[e] = from_store[k];
-        lo_x[e] = from_lo_x[k];
-        lo_y[e] = from_lo_y[k];
-        hi_x[e] = from_hi_x[k];
-        hi_y[e] = from_hi_y[k];
-    }
 }
 
 }  // namespace obbsat::detail

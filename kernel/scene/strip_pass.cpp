@@ -109,20 +109,42 @@ void pair_search::place_strip(const strip_visitors& visitors, std::size_t own_fi
     // and not before i - 1; then their running sum plus i is its place.
     std::fill(own_at, own_at + own + 1, 0u);
     if (own > 0) {
-        for (std::size_t j = 0; j < count; ++j) {
-            // Own rectangles whose q_lo is at most the visitor's: a search
-            // whose steps depend only on `own`, so it takes no branch on the data.
-            const std::uint32_t q = visitors.q_lo[j];
-            const std::uint32_t* first = own_q;
-            std::size_t left = own;
-            while (left > 1) {
-                const std::size_t half = left / 2;
-                first = first[half] <= q ? first + half : first;
-                left -= half;
-            }
-            const std::size_t before = static_cast<std::size_t>(first - own_q) + (*first <= q ? 1u : 0u);
+        // Own rectangles whose q_lo is at most a visitor's: a search whose
+        // steps depend only on `own`, so it takes no branch on the data, run
+        // for `lanes` visitors at once so that their chains of loads overlap.
+        constexpr std::size_t lanes = 4;
+        const std::uint32_t* const visitor_q = visitors.q_lo.data();
+        const auto place = [&](std::size_t j, const std::uint32_t* first) {
+            const std::size_t before =
+                static_cast<std::size_t>(first - own_q) + (*first <= visitor_q[j] ? 1u : 0u);
             visitor_at[j] = static_cast<std::uint32_t>(j + before);
             ++own_at[before];
+        };
+        std::size_t j = 0;
+        for (; j + lanes <= count; j += lanes) {
+            const std::uint32_t* first[lanes];
+            for (std::size_t t = 0; t < lanes; ++t) {
+                first[t] = own_q;
+            }
+            for (std::size_t left = own; left > 1;) {
+                const std::size_t half = left / 2;
+                for (std::size_t t = 0; t < lanes; ++t) {
+                    first[t] = first[t][half] <= visitor_q[j + t] ? first[t] + half : first[t];
+                }
+                left -= half;
+            }
+            for (std::size_t t = 0; t < lanes; ++t) {
+                place(j + t, first[t]);
+            }
+        }
+        for (; j < count; ++j) {
+            const std::uint32_t* first = own_q;
+            for (std::size_t left = own; left > 1;) {
+                const std::size_t half = left / 2;
+                first = first[half] <= visitor_q[j] ? first + half : first;
+                left -= half;
+            }
+            place(j, first);
         }
     } else {
         std::iota(visitor_at, visitor_at + count, 0u);

@@ -33,7 +33,10 @@
 //   6. The answer: the found pairs streamed to the caller's sink as they
 //      come [sweep.cpp], or sorted into one list [output.cpp].
 // The query's rows are read through query_input.hpp; run() in
-// pair_search.cpp takes the steps in turn.
+// pair_search.cpp takes the steps in turn. A plain float query on one
+// thread takes the copy of step 2 and steps 3 to 5 strip by strip instead,
+// each strip's entries written straight to their places in the swept strip,
+// with no arrays of the whole scene between the steps [strip_pass.cpp].
 //
 // A persistent query (collect, for pair_finder) answers its first call on a
 // scene as a plain query; later full queries widen every bounds by a

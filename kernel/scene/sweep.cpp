@@ -181,27 +181,19 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p, const flush_callback
 }
 
 void pair_search::sweep_merged(part& p, std::size_t m, const flush_callback& after_flush) const {
-    float* const q_lo = p.q_lo.data();
-    float* const q_hi = p.q_hi.data();
-    std::int32_t* const ids = p.id.data();
-    float* const starts = p.starts.data();
-    float* const store = p.store.data();
-    float* const lo_x = p.lo_x.data();
-    float* const lo_y = p.lo_y.data();
-    float* const hi_x = p.hi_x.data();
-    float* const hi_y = p.hi_y.data();
     for (std::size_t e = m; e < m + strip_padding; ++e) {
-        q_lo[e] = std::numeric_limits<float>::infinity();
-        q_hi[e] = 0;
-        ids[e] = 0;
-        starts[e] = -1;  // never at least an entry's starts_needed (0 or 1): never taken
-        store[e] = 0;
-        lo_x[e] = std::numeric_limits<float>::infinity();
-        lo_y[e] = 0;
-        hi_x[e] = 0;
-        hi_y[e] = 0;
+        p.q_lo[e] = std::numeric_limits<float>::infinity();
+        p.q_hi[e] = 0;
+        p.id[e] = 0;
+        p.starts[e] = -1;  // never at least an entry's starts_needed (0 or 1): never taken
+        p.store[e] = 0;
+        p.lo_x[e] = std::numeric_limits<float>::infinity();
+        p.lo_y[e] = 0;
+        p.hi_x[e] = 0;
+        p.hi_y[e] = 0;
     }
-    const strip_view view{q_lo, q_hi, ids, starts, store, lo_x, lo_y, hi_x, hi_y, m, !self_};
+    const strip_view view{p.q_lo.data(), p.q_hi.data(), p.id.data(),   p.starts.data(), p.store.data(),
+                          p.lo_x.data(), p.lo_y.data(), p.hi_x.data(), p.hi_y.data(),   m, !self_};
     const strip_sweep_fn sweep_kernel = kernels_for(ran_).strip_sweep;
     sweep_cursor cursor;
     while (cursor.e + 1 < m) {

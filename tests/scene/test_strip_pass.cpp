@@ -117,29 +117,28 @@ answer sorted(std::vector<pair_index> pairs, const pair_search& search) {
     return answer{pairs, search.stats().visits, search.stats().candidates};
 }
 
-answer strip_by_strip(const query_input& input, method m) {
+/// The answer of a query on one thread, strip by strip (run) or with the steps one at a time.
+answer one_thread(const query_input& input, method m, bool strip_pass) {
     collide_options options;
     options.test = m;
     options.threads = 1;
     pair_search search(options);
     std::vector<pair_index> pairs;
-    search.run(input, [&](const pair_index* p, std::size_t count) { pairs.insert(pairs.end(), p, p + count); });
-    // The query took the strip pass: no sweep bounds of the whole scene were written.
-    EXPECT_EQ(pair_search_test_access::scene_sweep_bytes(search), 0u);
+    const auto keep = [&](const pair_index* p, std::size_t count) { pairs.insert(pairs.end(), p, p + count); };
+    if (strip_pass) {
+        search.run(input, keep);
+        // The query took the strip pass: no sweep bounds of the whole scene were written.
+        EXPECT_EQ(pair_search_test_access::scene_sweep_bytes(search), 0u);
+    } else {
+        pair_search_test_access::run_in_steps(search, input, keep);
+        EXPECT_GT(pair_search_test_access::scene_sweep_bytes(search), 0u);
+    }
     return sorted(pairs, search);
 }
 
-answer in_steps(const query_input& input, method m) {
-    collide_options options;
-    options.test = m;
-    options.threads = 1;
-    pair_search search(options);
-    std::vector<pair_index> pairs;
-    pair_search_test_access::run_in_steps(
-        search, input, [&](const pair_index* p, std::size_t count) { pairs.insert(pairs.end(), p, p + count); });
-    EXPECT_GT(pair_search_test_access::scene_sweep_bytes(search), 0u);
-    return sorted(pairs, search);
-}
+answer strip_by_strip(const query_input& input, method m) { return one_thread(input, m, true); }
+
+answer in_steps(const query_input& input, method m) { return one_thread(input, m, false); }
 
 void expect_same(const answer& got, const answer& wanted) {
     EXPECT_EQ(got.visits, wanted.visits);

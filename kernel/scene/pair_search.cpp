@@ -54,6 +54,7 @@ void pair_search::swap_working_memory(pair_search& other) {
     for (std::size_t i = 0; i < 2; ++i) {
         std::swap(visitors_[i], other.visitors_[i]);
     }
+    std::swap(merged_visitors_, other.merged_visitors_);
     far_visits_.swap(other.far_visits_);
     own_at_.swap(other.own_at_);
     visitor_at_.swap(other.visitor_at_);
@@ -75,7 +76,8 @@ std::size_t pair_search::working_bytes() {
         add(p.verdicts);
         bytes += p.found.bytes();
     }
-    for (const strip_visitors& visitors : visitors_) {
+    for (const strip_visitors* each : {&visitors_[0], &visitors_[1], &merged_visitors_}) {
+        const strip_visitors& visitors = *each;
         for (const auto* v : {&visitors.q_lo, &visitors.q_hi, &visitors.id}) {
             add(*v);
         }

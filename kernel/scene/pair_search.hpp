@@ -282,6 +282,9 @@ private:
         void take(std::size_t to, const strip_visitors& from, std::size_t at);
         /// Sorts the entries by q_lo, equal ones kept in their order.
         void sort_by_q_lo();
+        /// Merges the two runs [0, second) and [second, count), each sorted by
+        /// q_lo, into `spare`, and swaps the result in (spare gets the old arrays).
+        void merge_runs(std::size_t second, strip_visitors& spare);
     };
     /// A visit to a strip beyond the one just above a rectangle's lowest,
     /// waiting for its strip (a heap by strip, then q_lo, then rectangle);
@@ -444,6 +447,7 @@ private:
 
     std::vector<part> parts_;
     strip_visitors visitors_[2];           ///< copy_and_sweep: the visitors of its strip and of the one above
+    strip_visitors merged_visitors_;       ///< copy_and_sweep: the buffer strip_visitors::merge_runs merges into
     std::vector<far_visit> far_visits_;     ///< copy_and_sweep's visits beyond the strip above, a heap
     std::vector<std::uint32_t> own_at_, visitor_at_;  ///< place_strip: the places of a strip's entries
     std::vector<std::uint32_t> own_q_;  ///< place_strip: the q_lo of a strip's own rectangles, from their keys

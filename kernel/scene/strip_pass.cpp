@@ -54,8 +54,7 @@ void pair_search::strip_visitors::take(std::size_t to, const strip_visitors& fro
 }
 
 void pair_search::strip_visitors::sort_by_q_lo() {
-    // Rare (a strip with visitors from the strip below and from further
-    // down, or rows changed while the query read them): sorted through a copy.
+    // Rare (rows changed while the query read them): sorted through a copy.
     std::vector<std::uint32_t> by_q(count);
     std::iota(by_q.begin(), by_q.end(), 0u);
     std::stable_sort(by_q.begin(), by_q.end(), [this](std::uint32_t x, std::uint32_t y) { return q_lo[x] < q_lo[y]; });
@@ -67,6 +66,21 @@ void pair_search::strip_visitors::sort_by_q_lo() {
     for (std::size_t i = 0; i < count; ++i) {
         take(i, sorted, i);
     }
+}
+
+void pair_search::strip_visitors::merge_runs(std::size_t second, strip_visitors& spare) {
+    // Visitors from the strip below and from further down, each run sorted:
+    // common where rectangles many strips tall meet (a drum's walls), so
+    // merged through a buffer kept for it, which then takes this one's place.
+    spare.make_room(count + 1);
+    std::size_t i = 0;
+    std::size_t j = second;
+    for (std::size_t t = 0; t < count; ++t) {
+        const bool first_run = j == count || (i < second && q_lo[i] <= q_lo[j]);
+        spare.take(t, *this, first_run ? i++ : j++);
+    }
+    spare.count = count;
+    std::swap(*this, spare);
 }
 
 bool pair_search::far_visit::later(const far_visit& x, const far_visit& y) {
@@ -311,7 +325,7 @@ void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink
                 }
             }
             if (near_visitors > 0 && here->count > near_visitors) {
-                here->sort_by_q_lo();
+                here->merge_runs(near_visitors, merged_visitors_);
             }
             visits += here->count;
             const std::size_t m = own + here->count;

@@ -51,6 +51,15 @@ void pair_search::swap_working_memory(pair_search& other) {
     // Each query sets every field of a unit it sweeps (sweep) and clears
     // what the unit found; its blocks of pairs and strip arrays stay.
     parts_.swap(other.parts_);
+    for (std::size_t i = 0; i < 2; ++i) {
+        std::swap(visitors_[i], other.visitors_[i]);
+    }
+    std::swap(merged_visitors_, other.merged_visitors_);
+    far_visits_.swap(other.far_visits_);
+    own_at_.swap(other.own_at_);
+    visitor_at_.swap(other.visitor_at_);
+    own_q_.swap(other.own_q_);
+    climbing_.swap(other.climbing_);
     sort_scratch_.swap(other.sort_scratch_);
 }
 
@@ -66,6 +75,19 @@ std::size_t pair_search::working_bytes() {
         add(p.candidates);
         add(p.verdicts);
         bytes += p.found.bytes();
+    }
+    for (const strip_visitors* each : {&visitors_[0], &visitors_[1], &merged_visitors_}) {
+        const strip_visitors& visitors = *each;
+        for (const auto* v : {&visitors.q_lo, &visitors.q_hi, &visitors.id}) {
+            add(*v);
+        }
+        for (const auto* v : {&visitors.store, &visitors.lo_x, &visitors.lo_y, &visitors.hi_x, &visitors.hi_y}) {
+            add(*v);
+        }
+    }
+    add(far_visits_);
+    for (const auto* v : {&own_at_, &visitor_at_, &own_q_, &climbing_}) {
+        add(*v);
     }
     for (const pair_sort_scratch<pair_index>& s : sort_scratch_) {
         add(s.spare);
@@ -151,12 +173,18 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
         (repair ? kept_.repair_seconds : kept_.sort_seconds) = std::max(bounds_and_order, 1e-9);
     }
     start = clock_type::now();
-    copy_records(input, parts);
-    collect_visits(parts);
-    stats_.order_seconds = seconds_since(start);
-    start = clock_type::now();
-    sweep(parts, emit ? &emit : nullptr);
-    stats_.sweep_seconds = seconds_since(start);
+    if (sweeps_strip_by_strip(parts)) {
+        // The copy and the visits are timed with the sweep they are part of.
+        copy_and_sweep(input, emit ? &emit : nullptr);
+        stats_.sweep_seconds = seconds_since(start);
+    } else {
+        copy_records(input, parts);
+        collect_visits(parts);
+        stats_.order_seconds = seconds_since(start);
+        start = clock_type::now();
+        sweep(parts, emit ? &emit : nullptr);
+        stats_.sweep_seconds = seconds_since(start);
+    }
     if (options_.slow_path_pairs != nullptr) {
         *options_.slow_path_pairs = stats_.slow_path_pairs;
     }

@@ -33,7 +33,10 @@
 //   6. The answer: the found pairs streamed to the caller's sink as they
 //      come [sweep.cpp], or sorted into one list [output.cpp].
 // The query's rows are read through query_input.hpp; run() in
-// pair_search.cpp takes the steps in turn.
+// pair_search.cpp takes the steps in turn. A plain float query on one
+// thread takes the copy of step 2 and steps 3 to 5 strip by strip instead,
+// each strip's entries written straight to their places in the swept strip,
+// with no arrays of the whole scene between the steps [strip_pass.cpp].
 //
 // A persistent query (collect, for pair_finder) answers its first call on a
 // scene as a plain query; later full queries widen every bounds by a
@@ -233,10 +236,25 @@ private:
 
     // Steps 4 and 5, the sweep and the method's kernels (sweep.cpp).
     void sweep(std::size_t parts, const pair_chunk_sink* emit);
+    /// Called after each flush of candidates inside a strip: hands the found
+    /// pairs on if the query streams them; false when the query is to stop.
+    using flush_callback = std::function<bool()>;
+    /// Sweeps the strips of one unit (p.first_strip to p.end_strip), stopping
+    /// early once `failed` is set.
+    using unit_sweep = std::function<void(part& p, const flush_callback& after_flush, const std::atomic<bool>& failed)>;
+    /// Resets what unit `p` found, for strips [first_strip, end_strip).
+    static void start_part(part& p, std::uint32_t first_strip, std::uint32_t end_strip);
+    /// Runs `sweep_unit` on parts_[0, units) over `parts` threads, then tests what is
+    /// left of each unit's candidates, hands its pairs to `emit` (if not null), and
+    /// adds the units' counts to stats_; the first exception of a unit is rethrown.
+    void sweep_units(std::size_t units, std::size_t parts, const pair_chunk_sink* emit, const unit_sweep& sweep_unit);
     /// Sweeps one strip, its candidates flushed in blocks; after each flush
     /// inside the strip calls after_flush(), and stops if it returns false.
-    template <class AfterFlush>
-    void sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const;
+    void sweep_strip(std::uint32_t strip, part& p, const flush_callback& after_flush) const;
+    /// Room in p's strip arrays for m entries and their sentinels.
+    static void make_strip_room(part& p, std::size_t m);
+    /// Sweeps the m entries merged into p's strip arrays (make_strip_room), as sweep_strip.
+    void sweep_merged(part& p, std::size_t m, const flush_callback& after_flush) const;
     void flush_candidates(part& p) const;
     /// Drops from `count` candidates those the pair filters refuse, keeping
     /// the others in order at the front; returns how many are left.
@@ -249,6 +267,63 @@ private:
     /// The method's verdicts on `count` pairs of the query's records.
     void test_pairs(part& p, const pair_index* pairs, std::size_t count, std::uint8_t* verdicts) const;
     void test_candidates(part& p, std::size_t count) const;
+
+    // Steps 2 (the records' copy) to 5 strip by strip, on one thread (strip_pass.cpp).
+    /// The visitors of one strip from the strips below, sorted by q_lo, in
+    /// structure-of-arrays form. Two are kept: the strip being swept and the
+    /// one above, which its rectangles' visits fill.
+    struct strip_visitors {
+        std::vector<std::uint32_t> q_lo, q_hi, id;
+        std::vector<float> store, lo_x, lo_y, hi_x, hi_y;
+        std::size_t count = 0;
+        /// Room for `entries` entries, what they hold kept.
+        void make_room(std::size_t entries);
+        /// Entry `to` := entry `at` of `from`.
+        void take(std::size_t to, const strip_visitors& from, std::size_t at);
+        /// Sorts the entries by q_lo, equal ones kept in their order.
+        void sort_by_q_lo();
+        /// Merges the two runs [0, second) and [second, count), each sorted by
+        /// q_lo, into `spare`, and swaps the result in (spare gets the old arrays).
+        void merge_runs(std::size_t second, strip_visitors& spare);
+    };
+    /// A visit to a strip beyond the one just above a rectangle's lowest,
+    /// waiting for its strip (a heap by strip, then q_lo, then rectangle);
+    /// once taken, it waits again for the next strip, up to `high`.
+    struct far_visit {
+        std::uint32_t strip, high, q_lo, q_hi, id;
+        float store, lo_x, lo_y, hi_x, hi_y;
+        /// The heap's order: x after y.
+        static bool later(const far_visit& x, const far_visit& y);
+        /// Writes this visit as entry `at` of `to`.
+        void put(strip_visitors& to, std::size_t at) const;
+    };
+    /// The query takes steps 2 to 5 strip by strip (copy_and_sweep): a plain
+    /// float query on one thread. On more, the steps are taken one at a time,
+    /// each over units shared by the threads; pair_finder's kept candidates
+    /// (kept_pairs.hpp) and the double rows read the arrays of the whole scene
+    /// they write.
+    bool sweeps_strip_by_strip(std::size_t parts) const { return parts == 1 && !doubles_ && !kept_.keep; }
+    /// copy_records, collect_visits and sweep, one strip after the other, on
+    /// the calling thread: for each strip the places of its entries in the
+    /// merge, its records copied and bounded straight into their places, its
+    /// visits to the strips above kept for them, and the strip swept. Fills
+    /// records_ (and filters_), own_begin_ and stats' strips and visits;
+    /// leaves the scene's sweep arrays (in_lo_x_ ... strip_hi_, side_) and
+    /// visits unwritten.
+    void copy_and_sweep(const query_input& input, const pair_chunk_sink* emit);
+    /// The places in the merged strip of its `own` rectangles (own_at_, by
+    /// their keys) and of its visitors (visitor_at_); writes the visitors
+    /// there in p's strip arrays, with room for the sentinels.
+    void place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p);
+    /// Copies the records of the `own` rectangles whose lowest strip is
+    /// `strip` into records_, and their entries to their places in p
+    /// (place_strip); lists in climbing_ the places of those that visit the
+    /// strip above, and puts their visits beyond it in far_visits_. Returns
+    /// how many climb.
+    std::size_t copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p);
+    /// The `near` entries of p that climb (climbing_) as the visitors of the
+    /// strip above; false if they are not sorted by q_lo.
+    bool climb(const part& p, std::size_t near, strip_visitors& above) const;
 
     // The answer as one sorted list (output.cpp).
     void sort_found();
@@ -371,6 +446,12 @@ private:
     bool visits_counted_ = false;            ///< copy_records counted this query's visits
 
     std::vector<part> parts_;
+    strip_visitors visitors_[2];           ///< copy_and_sweep: the visitors of its strip and of the one above
+    strip_visitors merged_visitors_;       ///< copy_and_sweep: the buffer strip_visitors::merge_runs merges into
+    std::vector<far_visit> far_visits_;     ///< copy_and_sweep's visits beyond the strip above, a heap
+    std::vector<std::uint32_t> own_at_, visitor_at_;  ///< place_strip: the places of a strip's entries
+    std::vector<std::uint32_t> own_q_;  ///< place_strip: the q_lo of a strip's own rectangles, from their keys
+    std::vector<std::uint32_t> climbing_;   ///< copy_own_entries: the places of the entries that visit the strip above
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -117,8 +118,17 @@ std::size_t pair_search::drop_filtered(pair_index* candidates, std::size_t count
     return kept;
 }
 
-template <class AfterFlush>
-void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& after_flush) const {
+void pair_search::make_strip_room(part& p, std::size_t m) {
+    const std::size_t room = m + strip_padding;
+    if (p.q_lo.size() < room) {
+        p.id.resize(room);
+        for (auto* v : {&p.q_lo, &p.q_hi, &p.starts, &p.store, &p.lo_x, &p.lo_y, &p.hi_x, &p.hi_y}) {
+            v->resize(room);
+        }
+    }
+}
+
+void pair_search::sweep_strip(std::uint32_t strip, part& p, const flush_callback& after_flush) const {
     // Merge the rectangles starting in this strip with its visitors, by
     // quantized lo_x (a rectangle before a visitor on equal keys).
     const std::size_t own_begin = own_begin_[strip];
@@ -129,13 +139,7 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& af
     if (m < 2) {
         return;
     }
-    const std::size_t room = m + strip_padding;
-    if (p.q_lo.size() < room) {
-        p.id.resize(room);
-        for (auto* v : {&p.q_lo, &p.q_hi, &p.starts, &p.store, &p.lo_x, &p.lo_y, &p.hi_x, &p.hi_y}) {
-            v->resize(room);
-        }
-    }
+    make_strip_room(p, m);
     float* const q_lo = p.q_lo.data();
     float* const q_hi = p.q_hi.data();
     std::int32_t* const ids = p.id.data();
@@ -173,18 +177,23 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& af
         hi_x[e] = in_hi_x_[k];
         hi_y[e] = in_hi_y_[k];
     }
-    for (std::size_t e = m; e < room; ++e) {
-        q_lo[e] = std::numeric_limits<float>::infinity();
-        q_hi[e] = 0;
-        ids[e] = 0;
-        starts[e] = -1;  // never at least an entry's starts_needed (0 or 1): never taken
-        store[e] = 0;
-        lo_x[e] = std::numeric_limits<float>::infinity();
-        lo_y[e] = 0;
-        hi_x[e] = 0;
-        hi_y[e] = 0;
+    sweep_merged(p, m, after_flush);
+}
+
+void pair_search::sweep_merged(part& p, std::size_t m, const flush_callback& after_flush) const {
+    for (std::size_t e = m; e < m + strip_padding; ++e) {
+        p.q_lo[e] = std::numeric_limits<float>::infinity();
+        p.q_hi[e] = 0;
+        p.id[e] = 0;
+        p.starts[e] = -1;  // never at least an entry's starts_needed (0 or 1): never taken
+        p.store[e] = 0;
+        p.lo_x[e] = std::numeric_limits<float>::infinity();
+        p.lo_y[e] = 0;
+        p.hi_x[e] = 0;
+        p.hi_y[e] = 0;
     }
-    const strip_view view{q_lo, q_hi, ids, starts, store, lo_x, lo_y, hi_x, hi_y, m, !self_};
+    const strip_view view{p.q_lo.data(), p.q_hi.data(), p.id.data(),   p.starts.data(), p.store.data(),
+                          p.lo_x.data(), p.lo_y.data(), p.hi_x.data(), p.hi_y.data(),   m, !self_};
     const strip_sweep_fn sweep_kernel = kernels_for(ran_).strip_sweep;
     sweep_cursor cursor;
     while (cursor.e + 1 < m) {
@@ -206,6 +215,18 @@ void pair_search::sweep_strip(std::uint32_t strip, part& p, const AfterFlush& af
     }
 }
 
+void pair_search::start_part(part& p, std::uint32_t first_strip, std::uint32_t end_strip) {
+    p.first_strip = first_strip;
+    p.end_strip = end_strip;
+    p.candidate_count = 0;
+    p.found.clear();
+    p.keep.captured.clear();
+    p.keep.over_budget = false;
+    p.tested = 0;
+    p.slow_path = 0;
+    p.kernel_seconds = 0;
+}
+
 void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     // The strips are cut into units of about the same number of entries, a
     // few per thread, each taken by the next thread free (work_shares.hpp):
@@ -219,28 +240,29 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     if (parts_.size() < units) {
         parts_.resize(units);
     }
-    used_parts_ = units;
     std::uint32_t s = 0;
     for (std::size_t i = 0; i < units; ++i) {
-        part& p = parts_[i];
-        p.first_strip = s;
+        const std::uint32_t first = s;
         const std::size_t target = entries * (i + 1) / units;
         while (s < strips && (i + 1 == units || own_begin_[s] + visit_begin_[s] < target)) {
             ++s;
         }
-        p.end_strip = s;
-        p.candidate_count = 0;
-        p.found.clear();
-        p.keep.captured.clear();
-        p.keep.over_budget = false;
-        p.tested = 0;
-        p.slow_path = 0;
-        p.kernel_seconds = 0;
+        start_part(parts_[i], first, s);
     }
     kept_.capture_budget = kept_.margin > 0.0f
                                ? kept_budget_factor * kept_.last_candidates + n_ + units * candidate_block
                                : std::numeric_limits<std::size_t>::max();
     kept_.captured_all.store(0, std::memory_order_relaxed);
+    sweep_units(units, parts, emit, [this](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {
+        for (std::uint32_t strip = p.first_strip; strip < p.end_strip && !failed.load(); ++strip) {
+            sweep_strip(strip, p, after_flush);
+        }
+    });
+}
+
+void pair_search::sweep_units(std::size_t units, std::size_t parts, const pair_chunk_sink* emit,
+                              const unit_sweep& sweep_unit) {
+    used_parts_ = units;
     std::mutex emit_mutex;
     std::vector<std::exception_ptr> failures(units);
     std::atomic<bool> failed{false};
@@ -266,13 +288,11 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
                     p.found.clear();
                 }
             };
-            const auto after_flush = [&] {
+            const flush_callback after_flush = [&] {
                 hand_over(false);
                 return !failed.load();
             };
-            for (std::uint32_t strip = p.first_strip; strip < p.end_strip && !failed.load(); ++strip) {
-                sweep_strip(strip, p, after_flush);
-            }
+            sweep_unit(p, after_flush, failed);
             flush_candidates(p);
             hand_over(true);
         } catch (...) {

@@ -100,7 +100,7 @@ struct find_pairs_stats {
     std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls (of rows still there, with ids)
     bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
-    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits; pair_finder with ids: carrying the kept candidates over rows that came, went or moved
+    double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits; pair_finder with ids: carrying the kept candidates over rows that came, went or moved; 0 for a query on one thread that copies strip by strip as it sweeps (then in sweep_seconds)
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
     double kernel_seconds = 0;   ///< the method's kernels alone, summed over the threads (part of the sweep)
     double output_seconds = 0;   ///< mapping back to the caller's indices and sorting

@@ -227,14 +227,26 @@ OBBSAT_LANE_INLINE void load_vector_of_pairs(const Real* a, std::size_t a_stride
     }
 }
 
-/// Asks for the records of pairs [from, to) of a list (fetch_ahead.hpp).
+/// Asks for the records of pairs [from, to) of a list (fetch_ahead.hpp). A
+/// list sorted by its first index, as a broadphase emits it, reads the
+/// first records in order, a few pairs to each: when the first indices of
+/// these pairs lie within as many records as there are pairs, the core's own
+/// prefetcher streams those records, and only the second ones are asked for.
+/// Asking for both took 256K pairs over 128K poses (a 4 MiB store) 15%
+/// longer with AVX-512: a prefetch of a line already on its way costs a
+/// load slot and a miss buffer. Other lists (shuffled) ask for both.
 template <pair_fetch Fetch, class Real>
 OBBSAT_LANE_INLINE void fetch_records_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
                                                std::size_t b_stride, const pair_index* pairs, std::size_t from,
                                                std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
-        fetch_record<Fetch>(a + a_stride * pairs[k].a);
         fetch_record<Fetch>(b + b_stride * pairs[k].b);
+    }
+    // Unsigned: a last index below the first is a spread as large as any.
+    if (std::size_t{pairs[to - 1].a - pairs[from].a} >= to - from) {
+        for (std::size_t k = from; k < to; ++k) {
+            fetch_record<Fetch>(a + a_stride * pairs[k].a);
+        }
     }
 }
 

@@ -229,12 +229,14 @@ OBBSAT_LANE_INLINE void load_vector_of_pairs(const Real* a, std::size_t a_stride
 
 /// Asks for the records of pairs [from, to) of a list (fetch_ahead.hpp). A
 /// list sorted by its first index, as a broadphase emits it, reads the
-/// first records in order, a few pairs to each: when the first indices of
-/// these pairs lie within as many records as there are pairs, the core's own
-/// prefetcher streams those records, and only the second ones are asked for.
-/// Asking for both took 256K pairs over 128K poses (a 4 MiB store) 15%
-/// longer with AVX-512: a prefetch of a line already on its way costs a
-/// load slot and a miss buffer. Other lists (shuffled) ask for both.
+/// first records in order, a few pairs to each. For float records, when the
+/// first indices of these pairs lie within four records a pair, the core's
+/// own prefetcher streams those records from L3, and only the second ones
+/// are asked for: asking for both took 256K sorted pairs over 128K poses (a
+/// 4 MiB store, a 12 MiB answer) 10-15% longer with AVX-512, each prefetch
+/// a load slot. Double records are asked for both: there the answer is
+/// twice as large and pushes the store out of L3, and without them the same
+/// pairs took 25% longer. Other lists (shuffled) ask for both.
 template <pair_fetch Fetch, class Real>
 OBBSAT_LANE_INLINE void fetch_records_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
                                                std::size_t b_stride, const pair_index* pairs, std::size_t from,
@@ -243,7 +245,9 @@ OBBSAT_LANE_INLINE void fetch_records_of_pairs(const Real* a, std::size_t a_stri
         fetch_record<Fetch>(b + b_stride * pairs[k].b);
     }
     // Unsigned: a last index below the first is a spread as large as any.
-    if (std::size_t{pairs[to - 1].a - pairs[from].a} >= to - from) {
+    const bool streamed =
+        std::is_same<Real, float>::value && std::size_t{pairs[to - 1].a - pairs[from].a} < 4 * (to - from);
+    if (!streamed) {
         for (std::size_t k = from; k < to; ++k) {
             fetch_record<Fetch>(a + a_stride * pairs[k].a);
         }

@@ -281,7 +281,7 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const Real* a, std::size_t a_st
                                                  [i](std::size_t lane) { return i + lane; }, fa, fb);
         body(fa, fb, i, width);
     }
-    for (; i < count; i += width) {
+    if (i < count) {
         const std::size_t valid = count - i;
         batch fa[8], fb[8];
         load_vector_of_pairs<Arch, Real, Fields>(

@@ -241,15 +241,17 @@ template <pair_fetch Fetch, class Real>
 OBBSAT_LANE_INLINE void fetch_records_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
                                                std::size_t b_stride, const pair_index* pairs, std::size_t from,
                                                std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) {
-        fetch_record<Fetch>(b + b_stride * pairs[k].b);
-    }
     // Unsigned: a last index below the first is a spread as large as any.
     const bool streamed =
         std::is_same<Real, float>::value && std::size_t{pairs[to - 1].a - pairs[from].a} < 4 * (to - from);
-    if (!streamed) {
+    if (streamed) {
+        for (std::size_t k = from; k < to; ++k) {
+            fetch_record<Fetch>(b + b_stride * pairs[k].b);
+        }
+    } else {
         for (std::size_t k = from; k < to; ++k) {
             fetch_record<Fetch>(a + a_stride * pairs[k].a);
+            fetch_record<Fetch>(b + b_stride * pairs[k].b);
         }
     }
 }
@@ -281,7 +283,9 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const Real* a, std::size_t a_st
                                                  [i](std::size_t lane) { return i + lane; }, fa, fb);
         body(fa, fb, i, width);
     }
-    if (i < count) {
+    // The last, partial vector, if any (a loop run at most once: written as an
+    // if, the double 256K row compiled 35% slower with GCC 12 on AVX-512).
+    for (; i < count; i += width) {
         const std::size_t valid = count - i;
         batch fa[8], fb[8];
         load_vector_of_pairs<Arch, Real, Fields>(

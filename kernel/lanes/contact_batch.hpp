@@ -162,19 +162,110 @@ OBBSAT_LANE_INLINE void store_contacts(const contact_fields<Arch, Real>& c, cont
     store_contacts_to<Arch, Real>(c, [out](std::size_t lane) { return out + lane; }, valid);
 }
 
-/// Walks pairs [0, count) one vector at a time: loads each lane's two records
-/// into fa and fb (one vector per field; Fields reals read, six for a pose,
-/// eight for corners) and calls body(fa, fb, i, valid) for the vector of pairs
-/// i to i + valid. Records of eight reals (pose_records, corner records and
+/// Loads the records of one vector of pairs into fa and fb (one vector per
+/// field; Fields reals read, six for a pose, eight for corners): lane i
+/// holds pair pair_of(i), pairs[pair_of(i)] of a list or record pair_of(i)
+/// of a stream. Records of eight reals (pose_records, corner records and
 /// their double stores, the only double records) are read whole and
 /// transposed in registers, other rows through a staging copy.
-/// Whole vectors take the pair indices as they are; the last, partial vector
-/// repeats its last pair in the unused lanes. A pair list's records are read
-/// at random: those of the pairs ahead, up to pair `fetchable` of the list,
-/// are asked into L2 (fetch_ahead.hpp), which costs two instructions a pair
-/// against a contact's hundreds and hides the reads of a store larger than
-/// the caches; records just read are not fetched again (fetchable 0), nor
-/// any with Fetch none (a store the caches hold).
+template <class Arch, class Real, std::size_t Fields, class PairOf>
+OBBSAT_LANE_INLINE void load_vector_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
+                                             std::size_t b_stride, const pair_index* pairs, const PairOf& pair_of,
+                                             real_lanes<Arch, Real>* fa, real_lanes<Arch, Real>* fb) {
+    using batch = real_lanes<Arch, Real>;
+    constexpr std::size_t width = batch::size;
+    [[maybe_unused]] const bool whole_records = a_stride == 8 && b_stride == 8;
+    auto record_a = [&](std::size_t pair) { return a + 8 * (pairs != nullptr ? pairs[pair].a : pair); };
+    auto record_b = [&](std::size_t pair) { return b + 8 * (pairs != nullptr ? pairs[pair].b : pair); };
+    if constexpr (std::is_same<Real, double>::value && Fields == 6) {
+        const pose64_lanes<Arch> pa = pose64_record_transpose<Arch>::load([&](std::size_t lane) {
+            return record_a(pair_of(lane));
+        });
+        const pose64_lanes<Arch> pb = pose64_record_transpose<Arch>::load([&](std::size_t lane) {
+            return record_b(pair_of(lane));
+        });
+        const batch from_a[6] = {pa.cx, pa.cy, pa.hx, pa.hy, pa.c, pa.s};
+        const batch from_b[6] = {pb.cx, pb.cy, pb.hx, pb.hy, pb.c, pb.s};
+        for (std::size_t f = 0; f < 6; ++f) {
+            fa[f] = from_a[f];
+            fb[f] = from_b[f];
+        }
+    } else if constexpr (std::is_same<Real, double>::value) {
+        const quad<batch> qa = record64_transpose<Arch>::load(
+            [&](std::size_t lane) { return reinterpret_cast<const rect64*>(record_a(pair_of(lane))); });
+        const quad<batch> qb = record64_transpose<Arch>::load(
+            [&](std::size_t lane) { return reinterpret_cast<const rect64*>(record_b(pair_of(lane))); });
+        for (std::size_t f = 0; f < 8; ++f) {
+            fa[f] = qa.c[f];
+            fb[f] = qb.c[f];
+        }
+    } else if (whole_records) {
+        const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
+            [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_a(pair_of(lane))); });
+        const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
+            [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_b(pair_of(lane))); });
+        for (std::size_t f = 0; f < 8; ++f) {
+            fa[f] = qa.c[f];
+            fb[f] = qb.c[f];
+        }
+    } else {
+        alignas(64) Real staged_a[Fields][width];
+        alignas(64) Real staged_b[Fields][width];
+        for (std::size_t lane = 0; lane < width; ++lane) {
+            const std::size_t pair = pair_of(lane);
+            const Real* ra = a + a_stride * (pairs != nullptr ? pairs[pair].a : pair);
+            const Real* rb = b + b_stride * (pairs != nullptr ? pairs[pair].b : pair);
+            for (std::size_t f = 0; f < Fields; ++f) {
+                staged_a[f][lane] = ra[f];
+                staged_b[f][lane] = rb[f];
+            }
+        }
+        for (std::size_t f = 0; f < Fields; ++f) {
+            fa[f] = batch::load_aligned(staged_a[f]);
+            fb[f] = batch::load_aligned(staged_b[f]);
+        }
+    }
+}
+
+/// Asks for the records of pairs [from, to) of a list (fetch_ahead.hpp). A
+/// list sorted by its first index, as a broadphase emits it, reads the
+/// first records in order, a few pairs to each. For float records, when the
+/// first indices of these pairs lie within four records a pair, the core's
+/// own prefetcher streams those records from L3, and only the second ones
+/// are asked for: asking for both took 256K sorted pairs over 128K poses (a
+/// 4 MiB store, a 12 MiB answer) 10-15% longer with AVX-512, each prefetch
+/// a load slot. Double records are asked for both: there the answer is
+/// twice as large and pushes the store out of L3, and without them the same
+/// pairs took 25% longer. Other lists (shuffled) ask for both.
+template <pair_fetch Fetch, class Real>
+OBBSAT_LANE_INLINE void fetch_records_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
+                                               std::size_t b_stride, const pair_index* pairs, std::size_t from,
+                                               std::size_t to) {
+    // Unsigned: a last index below the first is a spread as large as any.
+    const bool streamed =
+        std::is_same<Real, float>::value && std::size_t{pairs[to - 1].a - pairs[from].a} < 4 * (to - from);
+    if (streamed) {
+        for (std::size_t k = from; k < to; ++k) {
+            fetch_record<Fetch>(b + b_stride * pairs[k].b);
+        }
+    } else {
+        for (std::size_t k = from; k < to; ++k) {
+            fetch_record<Fetch>(a + a_stride * pairs[k].a);
+            fetch_record<Fetch>(b + b_stride * pairs[k].b);
+        }
+    }
+}
+
+/// Walks pairs [0, count) one vector at a time: loads each lane's two
+/// records into fa and fb (load_vector_of_pairs) and calls body(fa, fb, i,
+/// valid) for the vector of pairs i to i + valid. Whole vectors take the
+/// pair indices as they are; the last, partial vector repeats its last pair
+/// in the unused lanes, so nothing past the caller's arrays is read. A pair
+/// list's records are read at random: those of the pairs ahead, up to pair
+/// `fetchable` of the list, are asked into L2 (fetch_ahead.hpp), which costs
+/// two instructions a pair against a contact's hundreds and hides the reads
+/// of a store larger than the caches; records just read are not fetched
+/// again (fetchable 0), nor any with Fetch none (a store the caches hold).
 template <class Arch, class Real, std::size_t Fields, pair_fetch Fetch = pair_fetch::into_l2, class Body>
 OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const Real* a, std::size_t a_stride, const Real* b,
                                                  std::size_t b_stride, const pair_index* pairs, std::size_t count,
@@ -182,74 +273,25 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const Real* a, std::size_t a_st
     using batch = real_lanes<Arch, Real>;
     constexpr std::size_t width = batch::size;
     constexpr std::size_t ahead = pairs_ahead<Fetch>;
-    [[maybe_unused]] const bool whole_records = a_stride == 8 && b_stride == 8;
-    auto record_a = [&](std::size_t pair) { return a + 8 * (pairs != nullptr ? pairs[pair].a : pair); };
-    auto record_b = [&](std::size_t pair) { return b + 8 * (pairs != nullptr ? pairs[pair].b : pair); };
-    auto vector_at = [&](std::size_t i, std::size_t valid, const auto& pair_of) __attribute__((always_inline)) {
-        batch fa[8], fb[8];
-        if constexpr (std::is_same<Real, double>::value && Fields == 6) {
-            const pose64_lanes<Arch> pa = pose64_record_transpose<Arch>::load([&](std::size_t lane) {
-                return record_a(pair_of(lane));
-            });
-            const pose64_lanes<Arch> pb = pose64_record_transpose<Arch>::load([&](std::size_t lane) {
-                return record_b(pair_of(lane));
-            });
-            const batch from_a[6] = {pa.cx, pa.cy, pa.hx, pa.hy, pa.c, pa.s};
-            const batch from_b[6] = {pb.cx, pb.cy, pb.hx, pb.hy, pb.c, pb.s};
-            for (std::size_t f = 0; f < 6; ++f) {
-                fa[f] = from_a[f];
-                fb[f] = from_b[f];
-            }
-        } else if constexpr (std::is_same<Real, double>::value) {
-            const quad<batch> qa = record64_transpose<Arch>::load(
-                [&](std::size_t lane) { return reinterpret_cast<const rect64*>(record_a(pair_of(lane))); });
-            const quad<batch> qb = record64_transpose<Arch>::load(
-                [&](std::size_t lane) { return reinterpret_cast<const rect64*>(record_b(pair_of(lane))); });
-            for (std::size_t f = 0; f < 8; ++f) {
-                fa[f] = qa.c[f];
-                fb[f] = qb.c[f];
-            }
-        } else if (whole_records) {
-            const quad_lanes<Arch> qa = record_transpose<Arch>::template load<false>(
-                [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_a(pair_of(lane))); });
-            const quad_lanes<Arch> qb = record_transpose<Arch>::template load<false>(
-                [&](std::size_t lane) { return reinterpret_cast<const rect*>(record_b(pair_of(lane))); });
-            for (std::size_t f = 0; f < 8; ++f) {
-                fa[f] = qa.c[f];
-                fb[f] = qb.c[f];
-            }
-        } else {
-            alignas(64) Real staged_a[Fields][width];
-            alignas(64) Real staged_b[Fields][width];
-            for (std::size_t lane = 0; lane < width; ++lane) {
-                const std::size_t pair = pair_of(lane);
-                const Real* ra = a + a_stride * (pairs != nullptr ? pairs[pair].a : pair);
-                const Real* rb = b + b_stride * (pairs != nullptr ? pairs[pair].b : pair);
-                for (std::size_t f = 0; f < Fields; ++f) {
-                    staged_a[f][lane] = ra[f];
-                    staged_b[f][lane] = rb[f];
-                }
-            }
-            for (std::size_t f = 0; f < Fields; ++f) {
-                fa[f] = batch::load_aligned(staged_a[f]);
-                fb[f] = batch::load_aligned(staged_b[f]);
-            }
-        }
-        body(fa, fb, i, valid);
-    };
     std::size_t i = 0;
     for (; i + width <= count; i += width) {
         if (Fetch != pair_fetch::none && pairs != nullptr && i + width + ahead <= fetchable) {
-            for (std::size_t k = i + ahead; k < i + ahead + width; ++k) {
-                fetch_record<Fetch>(a + a_stride * pairs[k].a);
-                fetch_record<Fetch>(b + b_stride * pairs[k].b);
-            }
+            fetch_records_of_pairs<Fetch>(a, a_stride, b, b_stride, pairs, i + ahead, i + ahead + width);
         }
-        vector_at(i, width, [i](std::size_t lane) { return i + lane; });
+        batch fa[8], fb[8];
+        load_vector_of_pairs<Arch, Real, Fields>(a, a_stride, b, b_stride, pairs,
+                                                 [i](std::size_t lane) { return i + lane; }, fa, fb);
+        body(fa, fb, i, width);
     }
-    if (i < count) {
+    // The last, partial vector, if any (a loop run at most once: written as an
+    // if, the double 256K row compiled 35% slower with GCC 12 on AVX-512).
+    for (; i < count; i += width) {
         const std::size_t valid = count - i;
-        vector_at(i, valid, [i, valid](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); });
+        batch fa[8], fb[8];
+        load_vector_of_pairs<Arch, Real, Fields>(
+            a, a_stride, b, b_stride, pairs, [i, valid](std::size_t lane) { return i + (lane < valid ? lane : valid - 1); },
+            fa, fb);
+        body(fa, fb, i, valid);
     }
 }
 
@@ -362,7 +404,11 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     using batch = real_lanes<Arch, Real>;
     using contact_type = contact_of_real<Real>;
     constexpr std::size_t width = batch::size;
-    constexpr std::size_t block = 1024;
+    // A block's contacts (24 KiB in float), what its first pass keeps for
+    // the second (10 KiB) and its pair lists (6 KiB) stay in a 48 KiB L1
+    // until the second pass writes over the contacts of the pairs within the
+    // margin: blocks of 1024, twice that, made 256K pairs 10% slower.
+    constexpr std::size_t block = 512;
     // The first pass stores 48 bytes a pair (96 in double) faster than the lines it writes
     // arrive from memory: a batch larger than the caches (256K pairs, 12 MiB
     // of contacts) took 1.9 ms against 1.3 until the lines 512 contacts ahead
@@ -383,32 +429,41 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
         const Real* block_b = pairs != nullptr ? b : b + b_stride * begin;
         contact_type* block_out = out + begin;
         std::size_t near_count = 0;
-        for_each_vector_of_pairs<Arch, Real, Fields, Fetch>(
-            block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
-            [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
-                    if (begin + i + width + written_ahead <= written_until) {
-                        const char* line = reinterpret_cast<const char*>(block_out + i + written_ahead);
-                        for (std::size_t k = 0; k < width * sizeof(contact_type); k += 64) {
-                            __builtin_prefetch(line + k, 1, 3);
-                        }
-                    }
-                    const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
-                    const contact_out_lanes<Arch, Real> apart =
-                        contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
-                    if constexpr (std::is_same<Real, float>::value) {
-                        if (valid == width) {
-                            store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);
-                        } else {
-                            store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
-                        }
+        // The lines of the answer `written_ahead` contacts past pair i, asked for writing.
+        auto fetch_written = [&](std::size_t i) __attribute__((always_inline)) {
+            if (begin + i + width + written_ahead <= written_until) {
+                const char* line = reinterpret_cast<const char*>(block_out + i + written_ahead);
+                for (std::size_t k = 0; k < width * sizeof(contact_type); k += 64) {
+                    __builtin_prefetch(line + k, 1, 3);
+                }
+            }
+        };
+        // Writes the contacts without points of pairs i to i + valid and keeps those within the margin.
+        auto write_apart = [&](const pose_reference_lanes<Arch, Real>& p, std::size_t i, std::size_t valid)
+            __attribute__((always_inline)) {
+                const contact_out_lanes<Arch, Real> apart =
+                    contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
+                if constexpr (std::is_same<Real, float>::value) {
+                    if (valid == width) {
+                        store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);
                     } else {
                         store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                     }
-                    const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
-                    const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
-                    kept.keep(near_lanes, p, near_count);
-                    near_count = append_near_lanes<Arch, width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
-                });
+                } else {
+                    store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
+                }
+                const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
+                const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
+                kept.keep(near_lanes, p, near_count);
+                near_count =
+                    append_near_lanes<Arch, width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
+            };
+        for_each_vector_of_pairs<Arch, Real, Fields, Fetch>(
+            block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
+            [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
+                fetch_written(i);
+                write_apart(pose_reference_of<Arch, Real>(fa, fb), i, valid);
+            });
         for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
             block_a, a_stride, block_b, b_stride, near, near_count, 0,
             [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {

@@ -104,7 +104,7 @@ void expect_both_pose_entries_equal_the_reference(obbsat::backend use) {
     ASSERT_NE(Kernels::kernel(table, true), nullptr);
     const real* records = Kernels::records();
     constexpr std::size_t stride = Kernels::stride;
-    const std::size_t lengths[] = {1, 15, 16, 17, 100, 1023, 1024, 1025, 2063, s.pairs.size()};
+    const std::size_t lengths[] = {1, 15, 16, 17, 100, 511, 512, 513, 1023, 1024, 1025, 2063, s.pairs.size()};
     for (const real margin : {real(0), real(0.25)}) {
         const std::size_t all = s.pairs.size();
         std::vector<contact_type> want(all);

@@ -4,6 +4,7 @@
 // allocation; and the candidate buffer of a crowded strip, which stays one
 // block however many pairs the strip holds.
 #include "scene/pair_search.hpp"
+#include "test_support/pose_query_rows.hpp"
 
 #include "test_support/sanitizers.hpp"
 
@@ -80,14 +81,8 @@ using obbsat::detail::pair_search_test_access;
 using obbsat::detail::query_input;
 
 /// Rows of poses in the caller's memory, checked by the query.
-query_input rows_of(const std::vector<rect_pose>& poses) {
-    query_input in;
-    in.kind = obbsat::store_kind::poses;
-    in.a = &poses.data()->center.x;
-    in.a_count = poses.size();
-    in.a_stride = 6;
-    in.a_checked = false;
-    return in;
+query_input rows_of(const std::vector<rect_pose>& a, const std::vector<rect_pose>* b = nullptr) {
+    return obbsat::test_support::pose_query_rows(a, b);
 }
 
 /// While it lives, this process may map at most `extra` bytes more than it

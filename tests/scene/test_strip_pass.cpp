@@ -6,6 +6,7 @@
 // sets; with pair filters; and with rows changed between the order's read
 // and the copy's, which the caller must not do but which must give no crash.
 #include "scene/pair_search.hpp"
+#include "test_support/pose_query_rows.hpp"
 
 #include <obbsat/collide.hpp>
 #include <obbsat/method.hpp>
@@ -73,20 +74,9 @@ using obbsat::detail::pair_search;
 using obbsat::detail::pair_search_test_access;
 using obbsat::detail::query_input;
 
+/// Rows of poses in the caller's memory, checked by the query.
 query_input rows_of(const std::vector<rect_pose>& a, const std::vector<rect_pose>* b = nullptr) {
-    query_input in;
-    in.kind = obbsat::store_kind::poses;
-    in.a = &a.data()->center.x;
-    in.a_count = a.size();
-    in.a_stride = 6;
-    in.a_checked = false;
-    if (b != nullptr) {
-        in.b = &b->data()->center.x;
-        in.b_count = b->size();
-        in.b_stride = 6;
-        in.b_checked = false;
-    }
-    return in;
+    return obbsat::test_support::pose_query_rows(a, b);
 }
 
 /// `count` boxes at random in a square of side `side`, turned at random, of

@@ -231,6 +231,15 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
             break;
         }
     }
+    // The largest extent below the next power of two above the highest
+    // exponent seen: how far the strip pass looks below a unit's first strip.
+    int highest = 0;
+    for (int e = 255; e > 0 && highest == 0; --e) {
+        for (const partial& p : partials) {
+            highest = p.exponents[static_cast<std::size_t>(e)] > 0 ? e : highest;
+        }
+    }
+    largest_extent_ = highest == 255 ? std::numeric_limits<float>::infinity() : std::ldexp(1.0f, highest - 126);
     if (probe) {
         kept_.probe_ready = true;
         const bool calm = compare && std::find(inside_all.begin(), inside_all.end(), 0) == inside_all.end();

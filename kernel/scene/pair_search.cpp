@@ -51,15 +51,7 @@ void pair_search::swap_working_memory(pair_search& other) {
     // Each query sets every field of a unit it sweeps (sweep) and clears
     // what the unit found; its blocks of pairs and strip arrays stay.
     parts_.swap(other.parts_);
-    for (std::size_t i = 0; i < 2; ++i) {
-        std::swap(visitors_[i], other.visitors_[i]);
-    }
-    std::swap(merged_visitors_, other.merged_visitors_);
-    far_visits_.swap(other.far_visits_);
-    own_at_.swap(other.own_at_);
-    visitor_at_.swap(other.visitor_at_);
-    own_q_.swap(other.own_q_);
-    climbing_.swap(other.climbing_);
+    pass_memory_.swap(other.pass_memory_);
     sort_scratch_.swap(other.sort_scratch_);
 }
 
@@ -76,18 +68,21 @@ std::size_t pair_search::working_bytes() {
         add(p.verdicts);
         bytes += p.found.bytes();
     }
-    for (const strip_visitors* each : {&visitors_[0], &visitors_[1], &merged_visitors_}) {
-        const strip_visitors& visitors = *each;
-        for (const auto* v : {&visitors.q_lo, &visitors.q_hi, &visitors.id}) {
+    for (const strip_pass_memory& memory : pass_memory_) {
+        for (const strip_visitors* each : {&memory.visitors[0], &memory.visitors[1], &memory.merged}) {
+            const strip_visitors& visitors = *each;
+            for (const auto* v : {&visitors.q_lo, &visitors.q_hi, &visitors.id}) {
+                add(*v);
+            }
+            for (const auto* v :
+                 {&visitors.store, &visitors.lo_x, &visitors.lo_y, &visitors.hi_x, &visitors.hi_y}) {
+                add(*v);
+            }
+        }
+        add(memory.far_visits);
+        for (const auto* v : {&memory.own_at, &memory.visitor_at, &memory.own_q, &memory.climbing}) {
             add(*v);
         }
-        for (const auto* v : {&visitors.store, &visitors.lo_x, &visitors.lo_y, &visitors.hi_x, &visitors.hi_y}) {
-            add(*v);
-        }
-    }
-    add(far_visits_);
-    for (const auto* v : {&own_at_, &visitor_at_, &own_q_, &climbing_}) {
-        add(*v);
     }
     for (const pair_sort_scratch<pair_index>& s : sort_scratch_) {
         add(s.spare);
@@ -175,7 +170,7 @@ void pair_search::run(const query_input& input, const pair_chunk_sink& emit) {
     start = clock_type::now();
     if (sweeps_strip_by_strip(parts)) {
         // The copy and the visits are timed with the sweep they are part of.
-        copy_and_sweep(input, emit ? &emit : nullptr);
+        copy_and_sweep(input, parts, emit ? &emit : nullptr);
         stats_.sweep_seconds = seconds_since(start);
     } else {
         copy_records(input, parts);

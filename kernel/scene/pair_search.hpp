@@ -297,33 +297,70 @@ private:
         /// Writes this visit as entry `at` of `to`.
         void put(strip_visitors& to, std::size_t at) const;
     };
+    /// The working memory of one unit of the strip pass: the visitors of its
+    /// strip and of the one above, the buffer strip_visitors::merge_runs
+    /// merges into, the visits beyond the strip above (a heap), the places of
+    /// a strip's entries (place_strip) and of those that climb (copy_own_entries).
+    struct strip_pass_memory {
+        strip_visitors visitors[2];
+        strip_visitors merged;
+        std::vector<far_visit> far_visits;
+        std::vector<std::uint32_t> own_at, visitor_at, own_q, climbing;
+    };
     /// The query takes steps 2 to 5 strip by strip (copy_and_sweep): a plain
-    /// float query on one thread. On more, the steps are taken one at a time,
-    /// each over units shared by the threads; pair_finder's kept candidates
-    /// (kept_pairs.hpp) and the double rows read the arrays of the whole scene
-    /// they write.
-    bool sweeps_strip_by_strip(std::size_t parts) const { return parts == 1 && !doubles_ && !kept_.keep; }
-    /// copy_records, collect_visits and sweep, one strip after the other, on
-    /// the calling thread: for each strip the places of its entries in the
-    /// merge, its records copied and bounded straight into their places, its
-    /// visits to the strips above kept for them, and the strip swept. Fills
-    /// records_ (and filters_), own_begin_ and stats' strips and visits;
-    /// leaves the scene's sweep arrays (in_lo_x_ ... strip_hi_, side_) and
-    /// visits unwritten.
-    void copy_and_sweep(const query_input& input, const pair_chunk_sink* emit);
-    /// The places in the merged strip of its `own` rectangles (own_at_, by
-    /// their keys) and of its visitors (visitor_at_); writes the visitors
-    /// there in p's strip arrays, with room for the sentinels.
-    void place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p);
+    /// float query, on one thread or, over units of consecutive strips, on
+    /// more when the tallest rectangle reaches few strips (strip_reach). Else
+    /// the steps are taken one at a time, each over units shared by the
+    /// threads; pair_finder's kept candidates (kept_pairs.hpp) and the double
+    /// rows read the arrays of the whole scene they write.
+    bool sweeps_strip_by_strip(std::size_t parts) const {
+        return !doubles_ && !kept_.keep && (parts == 1 || strip_pass_units(parts) > 0);
+    }
+    /// Strips above its lowest a rectangle may reach, from the largest
+    /// extent the bounds pass saw (largest_extent_), at most grid_.strips.
+    std::uint32_t strip_reach() const;
+    /// Units of the strip pass on `parts` > 1 threads; 0 when the visitors
+    /// each unit gathers from below its first strip (incoming_visitors) would
+    /// cost too much of the pass.
+    std::size_t strip_pass_units(std::size_t parts) const;
+    /// copy_records, collect_visits and sweep, one strip after the other, in
+    /// units of consecutive strips taken as they come: for each strip the
+    /// places of its entries in the merge, its records copied and bounded
+    /// straight into their places, its visits to the strips above kept for
+    /// them, and the strip swept. Fills records_ (and filters_), own_begin_
+    /// and stats' strips and visits; leaves the scene's sweep arrays
+    /// (in_lo_x_ ... strip_hi_, side_) and visits unwritten.
+    void copy_and_sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
+    /// Sweeps the strips of unit `p` strip by strip, in `memory`; returns the visits to them.
+    std::size_t copy_and_sweep_unit(const query_input& input, part& p, strip_pass_memory& memory,
+                             const flush_callback& after_flush, const std::atomic<bool>& failed);
+    /// The visitors of strip `first` from the rectangles of the strips below
+    /// it (their records copied by copy_boundary_rows), sorted by q_lo, in
+    /// memory.visitors[0]; their visits beyond `first` in memory.far_visits.
+    void incoming_visitors(std::uint32_t first, strip_pass_memory& memory) const;
+    /// Before the units of the strip pass start: copies the records (and
+    /// filters) of the strips below each unit's first that its rectangles may
+    /// visit from (strip_reach), which that unit reads (its visitors' bounds,
+    /// the method's kernels, the filters) while the unit below may be
+    /// copying its own; marks them in copied_before_, so that none is written twice.
+    void copy_boundary_rows(const query_input& input, std::size_t units, std::size_t parts);
+    /// Records (and filters) of entries [begin, end) of the order, copied from the rows.
+    void copy_rows(const query_input& input, std::size_t begin, std::size_t end);
+    /// The places in the merged strip of its `own` rectangles (memory.own_at,
+    /// by their keys) and of its visitors (memory.visitor_at); writes the
+    /// visitors there in p's strip arrays, with room for the sentinels.
+    void place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p,
+                     strip_pass_memory& memory) const;
     /// Copies the records of the `own` rectangles whose lowest strip is
     /// `strip` into records_, and their entries to their places in p
-    /// (place_strip); lists in climbing_ the places of those that visit the
-    /// strip above, and puts their visits beyond it in far_visits_. Returns
-    /// how many climb.
-    std::size_t copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p);
-    /// The `near` entries of p that climb (climbing_) as the visitors of the
-    /// strip above; false if they are not sorted by q_lo.
-    bool climb(const part& p, std::size_t near, strip_visitors& above) const;
+    /// (place_strip); lists in memory.climbing the places of those that
+    /// visit the strip above, and puts their visits beyond it in
+    /// memory.far_visits. Returns how many climb.
+    std::size_t copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p,
+                                 strip_pass_memory& memory);
+    /// The `near` entries of p that climb (memory.climbing) as the visitors
+    /// of the strip above; false if they are not sorted by q_lo.
+    static bool climb(const part& p, std::size_t near, const strip_pass_memory& memory, strip_visitors& above);
 
     // The answer as one sorted list (output.cpp).
     void sort_found();
@@ -446,12 +483,9 @@ private:
     bool visits_counted_ = false;            ///< copy_records counted this query's visits
 
     std::vector<part> parts_;
-    strip_visitors visitors_[2];           ///< copy_and_sweep: the visitors of its strip and of the one above
-    strip_visitors merged_visitors_;       ///< copy_and_sweep: the buffer strip_visitors::merge_runs merges into
-    std::vector<far_visit> far_visits_;     ///< copy_and_sweep's visits beyond the strip above, a heap
-    std::vector<std::uint32_t> own_at_, visitor_at_;  ///< place_strip: the places of a strip's entries
-    std::vector<std::uint32_t> own_q_;  ///< place_strip: the q_lo of a strip's own rectangles, from their keys
-    std::vector<std::uint32_t> climbing_;   ///< copy_own_entries: the places of the entries that visit the strip above
+    std::vector<strip_pass_memory> pass_memory_;  ///< copy_and_sweep: one per unit
+    std::vector<unsigned char> copied_before_;  ///< per strip: copy_boundary_rows copied its records
+    float largest_extent_ = 0;  ///< measure_extent: at least every rectangle's larger extent (before widening)
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;

@@ -14,8 +14,11 @@
 #include "scene/search_common.hpp"
 #include "sort/radix_sort.hpp"
 #include "support/fetch_ahead.hpp"
+#include "support/work_shares.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 #include <limits>
 #include <new>
 #include <numeric>
@@ -24,6 +27,11 @@
 namespace obbsat::detail {
 
 namespace {
+
+/// The share of the scene's rows the units of the strip pass on several
+/// threads may read again, in all, to find their first strip's visitors
+/// (strip_pass_units): beyond it, the steps one at a time cost less.
+constexpr double strip_pass_read_again = 0.25;
 
 /// Room for `count` entries in each of `arrays`, grown with room to spare
 /// (the next strips are about as large), what they hold kept.
@@ -98,7 +106,8 @@ void pair_search::far_visit::put(strip_visitors& to, std::size_t at) const {
     to.hi_y[at] = hi_y;
 }
 
-void pair_search::place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p) {
+void pair_search::place_strip(const strip_visitors& visitors, std::size_t own_first, std::size_t own, part& p,
+                              strip_pass_memory& memory) const {
     // The merge by quantized lo_x (a rectangle before a visitor on equal
     // keys), on the keys alone: a rectangle's key holds the q_lo its bounds
     // give (the keys are made from the same bounds), so its place is known
@@ -109,11 +118,11 @@ void pair_search::place_strip(const strip_visitors& visitors, std::size_t own_fi
     // it, counted in one pass.
     const std::size_t count = visitors.count;
     make_strip_room(p, own + count);
-    grow_to(own + 1, &own_at_, &own_q_);
-    grow_to(count, &visitor_at_);
-    std::uint32_t* const own_at = own_at_.data();
-    std::uint32_t* const visitor_at = visitor_at_.data();
-    std::uint32_t* const own_q = own_q_.data();
+    grow_to(own + 1, &memory.own_at, &memory.own_q);
+    grow_to(count, &memory.visitor_at);
+    std::uint32_t* const own_at = memory.own_at.data();
+    std::uint32_t* const visitor_at = memory.visitor_at.data();
+    std::uint32_t* const own_q = memory.own_q.data();
     const std::uint32_t q_mask = grid_.q_max;
     const std::uint32_t* const keys = keys_.data() + own_first;
     for (std::size_t i = 0; i < own; ++i) {
@@ -182,28 +191,34 @@ void pair_search::place_strip(const strip_visitors& visitors, std::size_t own_fi
     }
 }
 
-std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p) {
+void pair_search::copy_rows(const query_input& input, std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+        if (k + random_rows_ahead < n_) {
+            fetch_into_l2(record_at(input, order_[k + random_rows_ahead]));
+        }
+        ::new (static_cast<void*>(&records_[k])) record;  // its memory may have held the sort's words
+        copy_row(input, order_[k], records_[k].v);
+    }
+    if (filtered_) {
+        for (std::size_t k = begin; k < end; ++k) {
+            filters_[k] = filter_of(input, order_[k]);
+        }
+    }
+}
+
+std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_t strip, std::size_t own, part& p,
+                                          strip_pass_memory& memory) {
     const std::size_t own_first = own_begin_[strip];
     const bounds_fn bounds = kernels_for(ran_).bounds;
     const double y_low = grid_.y_low, y_scale = grid_.y_scale, x_low = grid_.x_low, x_scale = grid_.x_scale;
     const std::uint32_t q_top = grid_.q_max, strip_top = grid_.strips - 1;
     const auto second_store = static_cast<std::uint32_t>(self_ ? n_ : a_count_);
-    grow_to(own + 1, &climbing_);
+    grow_to(own + 1, &memory.climbing);
     std::size_t near = 0;
     for (std::size_t run = 0; run < own; run += bounds_run::size) {
         const std::size_t run_end = std::min(own, run + bounds_run::size);
-        for (std::size_t i = run; i < run_end; ++i) {
-            const std::size_t k = own_first + i;
-            if (k + random_rows_ahead < n_) {
-                fetch_into_l2(record_at(input, order_[k + random_rows_ahead]));
-            }
-            ::new (static_cast<void*>(&records_[k])) record;  // its memory may have held the sort's words
-            copy_row(input, order_[k], records_[k].v);
-        }
-        if (filtered_) {
-            for (std::size_t i = run; i < run_end; ++i) {
-                filters_[own_first + i] = filter_of(input, order_[own_first + i]);
-            }
+        if (copied_before_[strip] == 0) {
+            copy_rows(input, own_first + run, own_first + run_end);
         }
         bounds_run b;
         bounds(kind_, records_[own_first + run].v, run_end - run, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
@@ -220,7 +235,7 @@ std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_
         float* __restrict const lo_y = p.lo_y.data();
         float* __restrict const hi_x = p.hi_x.data();
         float* __restrict const hi_y = p.hi_y.data();
-        const std::uint32_t* __restrict const at = own_at_.data() + run;
+        const std::uint32_t* __restrict const at = memory.own_at.data() + run;
         const std::uint32_t* __restrict const rows = order_.data() + own_first + run;
         alignas(64) std::uint32_t high[bounds_run::size];
         for (std::size_t r = 0; r < count; ++r) {
@@ -243,25 +258,25 @@ std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_
         // visitor overwrites if this one was none (visits.cpp). A highest
         // strip below this one (rows changed between the order's read and
         // this one) is taken as this one: no visit.
-        std::uint32_t* __restrict const climbing = climbing_.data();
+        std::uint32_t* __restrict const climbing = memory.climbing.data();
         for (std::size_t r = 0; r < count; ++r) {
             const std::uint32_t top = std::max(high[r], strip);
             climbing[near] = at[r];
             near += top != strip ? 1u : 0u;
             if (top > strip + 1) {
                 const std::size_t e = at[r];
-                far_visits_.push_back(far_visit{strip + 2, top, static_cast<std::uint32_t>(q_lo[e]),
+                memory.far_visits.push_back(far_visit{strip + 2, top, static_cast<std::uint32_t>(q_lo[e]),
                                                 static_cast<std::uint32_t>(q_hi[e]),
                                                 static_cast<std::uint32_t>(ids[e]), store[e], lo_x[e], lo_y[e],
                                                 hi_x[e], hi_y[e]});
-                std::push_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
+                std::push_heap(memory.far_visits.begin(), memory.far_visits.end(), far_visit::later);
             }
         }
     }
     return near;
 }
 
-bool pair_search::climb(const part& p, std::size_t near, strip_visitors& above) const {
+bool pair_search::climb(const part& p, std::size_t near, const strip_pass_memory& memory, strip_visitors& above) {
     // In this strip's key order, so sorted by q_lo as the keys are made from
     // the same bounds; were they not (rows changed while the query read
     // them), the caller sorts them.
@@ -270,7 +285,7 @@ bool pair_search::climb(const part& p, std::size_t near, strip_visitors& above) 
     unsigned sorted = 1;
     float last_q = 0;
     for (std::size_t j = 0; j < near; ++j) {
-        const std::size_t e = climbing_[j];
+        const std::size_t e = memory.climbing[j];
         above.q_lo[j] = static_cast<std::uint32_t>(p.q_lo[e]);
         above.q_hi[j] = static_cast<std::uint32_t>(p.q_hi[e]);
         above.id[j] = static_cast<std::uint32_t>(p.id[e]);
@@ -285,7 +300,149 @@ bool pair_search::climb(const part& p, std::size_t near, strip_visitors& above) 
     return sorted != 0;
 }
 
-void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink* emit) {
+std::uint32_t pair_search::strip_reach() const {
+    // A rectangle's highest strip is at most its height in strips, rounded
+    // up, above its lowest (at most the floor of it plus one); a little more
+    // covers the rounding of the bounds and of their maps to strips.
+    const double reach = std::ceil(static_cast<double>(largest_extent_) * grid_.y_scale * (1.0 + 1e-6)) + 1.0;
+    return reach < static_cast<double>(grid_.strips) ? static_cast<std::uint32_t>(reach) : grid_.strips;
+}
+
+std::size_t pair_search::strip_pass_units(std::size_t parts) const {
+    // Each unit but the first reads again the rows of the strips below its
+    // first that a rectangle may reach from (incoming_visitors): worth it
+    // while that stays a small share of the scene's rows; a scene with a
+    // rectangle through many strips takes the steps one at a time instead.
+    const std::size_t units = units_for(n_, parts, min_entries_per_unit);
+    const double read_again =
+        static_cast<double>(units - 1) * static_cast<double>(strip_reach()) / static_cast<double>(grid_.strips);
+    return read_again <= strip_pass_read_again ? units : 0;
+}
+
+void pair_search::incoming_visitors(std::uint32_t first, strip_pass_memory& memory) const {
+    // The records of the strips below were copied before the units started
+    // (copy_boundary_rows), and no unit writes them: their bounds are
+    // computed here again, by the same kernel, so they are the same.
+    const std::uint32_t reach = strip_reach();
+    const std::uint32_t lowest = first > reach ? first - reach : 0u;
+    const std::size_t begin = own_begin_[lowest];
+    const std::size_t end = own_begin_[first];
+    const bounds_fn bounds = kernels_for(ran_).bounds;
+    const auto second_store = static_cast<std::uint32_t>(self_ ? n_ : a_count_);
+    strip_visitors& here = memory.visitors[0];
+    here.count = 0;
+    memory.far_visits.clear();
+    bounds_run b;
+    for (std::size_t run = begin; run < end; run += bounds_run::size) {
+        const std::size_t count = std::min(end - run, bounds_run::size);
+        bounds(kind_, records_[run].v, count, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
+        for (std::size_t r = 0; r < count; ++r) {
+            const std::uint32_t high = grid_.strip_of(b.hi_y[r]);
+            if (high < first) {
+                continue;
+            }
+            const auto k = static_cast<std::uint32_t>(run + r);
+            const far_visit visit{first + 1,
+                                  high,
+                                  grid_.q_of(b.lo_x[r]),
+                                  grid_.q_of(b.hi_x[r]),
+                                  k,
+                                  order_[k] >= second_store ? 1.0f : 0.0f,
+                                  b.lo_x[r],
+                                  b.lo_y[r],
+                                  b.hi_x[r],
+                                  b.hi_y[r]};
+            here.make_room(here.count + 1);
+            visit.put(here, here.count);
+            ++here.count;
+            if (high > first) {
+                memory.far_visits.push_back(visit);
+                std::push_heap(memory.far_visits.begin(), memory.far_visits.end(), far_visit::later);
+            }
+        }
+    }
+    // In the order of their lowest strips, each strip's by q_lo.
+    here.sort_by_q_lo();
+}
+
+std::size_t pair_search::copy_and_sweep_unit(const query_input& input, part& p, strip_pass_memory& memory,
+                                             const flush_callback& after_flush, const std::atomic<bool>& failed) {
+    strip_visitors* here = &memory.visitors[0];
+    strip_visitors* above = &memory.visitors[1];
+    if (p.first_strip > 0 && p.first_strip < p.end_strip) {
+        incoming_visitors(p.first_strip, memory);
+    } else {
+        here->count = 0;
+        memory.far_visits.clear();
+    }
+    above->count = 0;
+    std::vector<far_visit>& far_visits = memory.far_visits;
+    std::size_t visits = 0;
+    for (std::uint32_t s = p.first_strip; s < p.end_strip && !failed.load(); ++s) {
+        const std::size_t own_first = own_begin_[s];
+        const std::size_t own = own_begin_[s + 1] - own_first;
+        // Visitors from two or more strips below come after those from
+        // the strip just below; either run is in order, both together
+        // only once sorted.
+        const std::size_t near_visitors = here->count;
+        while (!far_visits.empty() && far_visits.front().strip == s) {
+            std::pop_heap(far_visits.begin(), far_visits.end(), far_visit::later);
+            far_visit& visit = far_visits.back();
+            here->make_room(here->count + 1);
+            visit.put(*here, here->count);
+            ++here->count;
+            if (visit.high > s) {
+                ++visit.strip;
+                std::push_heap(far_visits.begin(), far_visits.end(), far_visit::later);
+            } else {
+                far_visits.pop_back();
+            }
+        }
+        if (near_visitors > 0 && here->count > near_visitors) {
+            here->merge_runs(near_visitors, memory.merged);
+        }
+        visits += here->count;
+        const std::size_t m = own + here->count;
+        place_strip(*here, own_first, own, p, memory);
+        const std::size_t near = copy_own_entries(input, s, own, p, memory);
+        const bool climbers_sorted = climb(p, near, memory, *above);
+        if (own > 0 && m >= 2) {
+            sweep_merged(p, m, after_flush);
+        }
+        std::swap(here, above);
+        above->count = 0;
+        if (!climbers_sorted) {
+            here->sort_by_q_lo();
+        }
+    }
+    return visits;
+}
+
+void pair_search::copy_boundary_rows(const query_input& input, std::size_t units, std::size_t parts) {
+    // The strips each unit reads below its first (strip_reach of them), in
+    // ranges that do not overlap: each from the first strip of the unit
+    // below on. Every strip some unit reads lies in one of them (below the
+    // first unit's first strip that starts above it).
+    const std::uint32_t strips = grid_.strips;
+    copied_before_.assign(strips, 0);
+    if (units <= 1) {
+        return;
+    }
+    const std::uint32_t reach = strip_reach();
+    std::vector<std::uint32_t> lowest(units, 0);
+    for (std::size_t i = 1; i < units; ++i) {
+        const std::uint32_t first = parts_[i].first_strip;
+        lowest[i] = std::max(first > reach ? first - reach : 0u, parts_[i - 1].first_strip);
+        std::fill(copied_before_.begin() + lowest[i], copied_before_.begin() + first, 1);
+    }
+    run_units(units, parts, [&](std::size_t unit) {
+        if (unit > 0) {
+            copy_rows(input, own_begin_[lowest[unit]], own_begin_[parts_[unit].first_strip]);
+        }
+    });
+}
+
+void pair_search::copy_and_sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit) {
     const std::uint32_t strips = grid_.strips;
     records_.resize(n_);
     if (filtered_) {
@@ -293,57 +450,33 @@ void pair_search::copy_and_sweep(const query_input& input, const pair_chunk_sink
     }
     own_begin_.resize(strips + 1);
     bucket_starts(keys_.data(), n_, grid_.q_bits, strips, 0, n_, own_begin_.data());
-    if (parts_.empty()) {
-        parts_.resize(1);
+    // Units of consecutive strips of about the same number of rectangles, a
+    // few per thread, taken as they come (work_shares.hpp); each keeps what
+    // it finds (parts_[unit]), so nothing depends on which thread took it.
+    const std::size_t units = parts == 1 ? 1 : strip_pass_units(parts);
+    if (parts_.size() < units) {
+        parts_.resize(units);
     }
-    start_part(parts_[0], 0, strips);
-    strip_visitors* here = &visitors_[0];
-    strip_visitors* above = &visitors_[1];
-    here->count = 0;
-    above->count = 0;
-    far_visits_.clear();
-    std::size_t visits = 0;
-    sweep_units(1, 1, emit, [&](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {
-        for (std::uint32_t s = 0; s < strips && !failed.load(); ++s) {
-            const std::size_t own_first = own_begin_[s];
-            const std::size_t own = own_begin_[s + 1] - own_first;
-            // Visitors from two or more strips below come after those from
-            // the strip just below; either run is in order, both together
-            // only once sorted.
-            const std::size_t near_visitors = here->count;
-            while (!far_visits_.empty() && far_visits_.front().strip == s) {
-                std::pop_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
-                far_visit& visit = far_visits_.back();
-                here->make_room(here->count + 1);
-                visit.put(*here, here->count);
-                ++here->count;
-                if (visit.high > s) {
-                    ++visit.strip;
-                    std::push_heap(far_visits_.begin(), far_visits_.end(), far_visit::later);
-                } else {
-                    far_visits_.pop_back();
-                }
-            }
-            if (near_visitors > 0 && here->count > near_visitors) {
-                here->merge_runs(near_visitors, merged_visitors_);
-            }
-            visits += here->count;
-            const std::size_t m = own + here->count;
-            place_strip(*here, own_first, own, p);
-            const std::size_t near = copy_own_entries(input, s, own, p);
-            const bool climbers_sorted = climb(p, near, *above);
-            if (own > 0 && m >= 2) {
-                sweep_merged(p, m, after_flush);
-            }
-            std::swap(here, above);
-            above->count = 0;
-            if (!climbers_sorted) {
-                here->sort_by_q_lo();
-            }
+    if (pass_memory_.size() < units) {
+        pass_memory_.resize(units);
+    }
+    std::uint32_t s = 0;
+    for (std::size_t i = 0; i < units; ++i) {
+        const std::uint32_t first = s;
+        const std::size_t target = n_ * (i + 1) / units;
+        while (s < strips && (i + 1 == units || own_begin_[s] < target)) {
+            ++s;
         }
+        start_part(parts_[i], first, s);
+    }
+    copy_boundary_rows(input, units, parts);
+    std::vector<std::size_t> visits(units);
+    sweep_units(units, parts, emit, [&](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {
+        const auto unit = static_cast<std::size_t>(&p - parts_.data());
+        visits[unit] = copy_and_sweep_unit(input, p, pass_memory_[unit], after_flush, failed);
     });
     stats_.strips = strips;
-    stats_.visits = visits;
+    stats_.visits = std::accumulate(visits.begin(), visits.end(), std::size_t{0});
 }
 
 }  // namespace obbsat::detail

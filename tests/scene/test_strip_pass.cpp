@@ -5,10 +5,16 @@
 // rectangles visit one strip above, many strips above, or none; across two
 // sets; with pair filters; and with rows changed between the order's read
 // and the copy's, which the caller must not do but which must give no crash.
+// On several threads, and on a caller's executor taking the units in
+// reverse, the strip pass runs over units of consecutive strips: the same
+// answer, with tall boxes reaching from one unit's strips into the next
+// one's; a box through every strip makes the query take the steps one at a time.
 #include "scene/pair_search.hpp"
+#include "support/executor_scope.hpp"
 #include "test_support/pose_query_rows.hpp"
 
 #include <obbsat/collide.hpp>
+#include <obbsat/executor.hpp>
 #include <obbsat/method.hpp>
 #include <obbsat/pair_filters.hpp>
 #include <obbsat/scene.hpp>
@@ -16,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -48,7 +55,7 @@ struct pair_search_test_access {
         search.measure_extent(input, 1, false);
         search.order_boxes(input, 1);
         change();
-        search.copy_and_sweep(input, &emit);
+        search.copy_and_sweep(input, 1, &emit);
     }
 
     /// Bytes the query holds for sweep bounds of the whole scene (in_lo_x_ ... strip_hi_).
@@ -60,6 +67,12 @@ struct pair_search_test_access {
     }
 
     static std::size_t strips(const pair_search& search) { return search.grid_.strips; }
+
+    /// Strips above its lowest a rectangle of the last query may reach, as the strip pass reckons.
+    static std::size_t strip_reach(const pair_search& search) { return search.strip_reach(); }
+
+    /// Units of the last query's sweep.
+    static std::size_t units(const pair_search& search) { return search.used_parts_; }
 };
 
 }  // namespace obbsat::detail
@@ -215,6 +228,130 @@ TEST(strip_pass, rows_changed_after_the_order_give_no_crash_and_no_absurd_count)
     std::vector<pair_index> again;
     search.run(input, [&](const pair_index* p, std::size_t count) { again.insert(again.end(), p, p + count); });
     expect_same(sorted(again, search), in_steps(input, method::exact));
+}
+
+}  // namespace
+
+namespace {
+
+using obbsat::executor;
+using obbsat::executor_task;
+
+/// Every unit a range of its own, run in reverse order before enqueue returns.
+void* enqueue_reversed(executor_task task, std::size_t count, std::size_t, void* task_context, void* user) {
+    for (std::size_t i = count; i-- > 0;) {
+        task(i, i + 1, task_context);
+        static_cast<std::atomic<std::size_t>*>(user)->fetch_add(1);
+    }
+    return nullptr;
+}
+
+/// Nothing left to wait for: enqueue_reversed runs every unit before it returns.
+void finish_nothing(void*, void*) {}
+
+/// How a query on several threads ran: its threads, and the caller's executor or none.
+struct threads_and_executor {
+    unsigned threads;
+    const executor* given;
+};
+
+/// The answer of a query on `run.threads` threads, run as pair_search::run
+/// (strip by strip where it may); `strip_pass` tells whether it must have
+/// taken the strip pass over several units, or the steps one at a time.
+answer on_threads(const query_input& input, method m, threads_and_executor run, bool strip_pass) {
+    collide_options options;
+    options.test = m;
+    options.threads = run.threads;
+    options.executor = run.given;
+    pair_search search(options);
+    const obbsat::detail::executor_scope scope(run.given);
+    std::vector<pair_index> pairs;
+    search.run(input, [&](const pair_index* p, std::size_t count) { pairs.insert(pairs.end(), p, p + count); });
+    if (strip_pass) {
+        EXPECT_EQ(pair_search_test_access::scene_sweep_bytes(search), 0u);
+        EXPECT_GT(pair_search_test_access::units(search), std::size_t{run.threads});
+    } else {
+        EXPECT_GT(pair_search_test_access::scene_sweep_bytes(search), 0u);
+    }
+    return sorted(pairs, search);
+}
+
+/// The query's answer on 2 and 3 threads and on an executor taking the
+/// units in reverse, each against the steps one at a time on one thread.
+void expect_same_on_threads(const query_input& input, method m, bool strip_pass) {
+    const answer wanted = in_steps(input, m);
+    ASSERT_GT(wanted.pairs.size(), 1000u);
+    std::atomic<std::size_t> ranges{0};
+    executor reversed;
+    reversed.enqueue = enqueue_reversed;
+    reversed.finish = finish_nothing;
+    reversed.user_context = &ranges;
+    for (const threads_and_executor run :
+         {threads_and_executor{2, nullptr}, threads_and_executor{3, nullptr}, threads_and_executor{2, &reversed}}) {
+        SCOPED_TRACE(testing::Message() << run.threads << " threads" << (run.given ? ", executor" : ""));
+        expect_same(on_threads(input, m, run, strip_pass), wanted);
+    }
+    EXPECT_GT(ranges.load(), 2u);
+}
+
+/// A scene large enough for three threads' units, 100 wide and 2500 high so
+/// that each unit holds many strips; one box in five up to `tall` high: they
+/// cross from one unit's strips into the next one's.
+std::vector<rect_pose> threads_scene(std::size_t count, std::size_t tall_every, float tall, std::uint64_t seed) {
+    std::vector<rect_pose> boxes = scene(count, 500.0f, tall_every, tall, seed);
+    for (rect_pose& box : boxes) {
+        box.center.x /= 5.0f;
+        box.center.y *= 5.0f;
+    }
+    return boxes;
+}
+
+std::vector<rect_pose> threads_scene(float tall, std::uint64_t seed) { return threads_scene(60000, 5, tall, seed); }
+
+TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_within_one_set) {
+    const std::vector<rect_pose> boxes = threads_scene(6.0f, 21);
+    const query_input input = rows_of(boxes);
+    collide_options options;
+    options.test = method::exact;
+    options.threads = 2;
+    pair_search probe(options);
+    probe.run(input, [](const pair_index*, std::size_t) {});
+    // Tall boxes reach several strips above their lowest, past the first strip of the next unit.
+    ASSERT_GE(pair_search_test_access::strip_reach(probe), 4u);
+    for (const method m : {method::exact, method::local, method::conservative}) {
+        expect_same_on_threads(input, m, true);
+    }
+}
+
+TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_across_two_sets) {
+    const std::vector<rect_pose> a = threads_scene(6.0f, 22);
+    const std::vector<rect_pose> b = threads_scene(30000, 3, 5.0f, 23);
+    expect_same_on_threads(rows_of(a, &b), method::exact, true);
+}
+
+TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_with_pair_filters) {
+    const std::vector<rect_pose> boxes = threads_scene(6.0f, 24);
+    std::vector<std::uint64_t> categories(boxes.size()), masks(boxes.size());
+    std::vector<std::int32_t> groups(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        categories[i] = std::uint64_t{1} << (i % 4);
+        masks[i] = i % 8 == 0 ? ~std::uint64_t{2} : obbsat::all_categories;
+        groups[i] = i % 16 == 0 ? static_cast<std::int32_t>(i % 3 + 1) : 0;
+    }
+    query_input input = rows_of(boxes);
+    input.a_filters.categories = categories.data();
+    input.a_filters.masks = masks.data();
+    input.a_filters.groups = groups.data();
+    ASSERT_LT(in_steps(input, method::exact).pairs.size(), in_steps(rows_of(boxes), method::exact).pairs.size());
+    expect_same_on_threads(input, method::exact, true);
+}
+
+TEST(strip_pass, on_threads_with_a_box_through_every_strip_answers_as_the_steps_one_at_a_time) {
+    // One box as tall as the scene visits every strip: each unit would read
+    // every row below it again, so the query takes the steps one at a time.
+    std::vector<rect_pose> boxes = threads_scene(6.0f, 25);
+    boxes[boxes.size() / 2] = rect_pose{{50.0f, 1250.0f}, {3.0f, 1300.0f}, {1.0f, 0.0f}};
+    expect_same_on_threads(rows_of(boxes), method::exact, false);
 }
 
 }  // namespace

@@ -244,6 +244,10 @@ private:
     using unit_sweep = std::function<void(part& p, const flush_callback& after_flush, const std::atomic<bool>& failed)>;
     /// Resets what unit `p` found, for strips [first_strip, end_strip).
     static void start_part(part& p, std::uint32_t first_strip, std::uint32_t end_strip);
+    /// Starts parts_[0, units) (start_part) on runs of consecutive strips of
+    /// about entries / units entries each: the rectangles whose lowest strip
+    /// it is, and the visits to it if `visits_before` (visit_begin_) is given.
+    void cut_strips_into_units(std::size_t units, std::size_t entries, const std::uint32_t* visits_before);
     /// Runs `sweep_unit` on parts_[0, units) over `parts` threads, then tests what is
     /// left of each unit's candidates, hands its pairs to `emit` (if not null), and
     /// adds the units' counts to stats_; the first exception of a unit is rethrown.

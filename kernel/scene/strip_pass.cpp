@@ -463,15 +463,7 @@ void pair_search::copy_and_sweep(const query_input& input, std::size_t parts, co
     if (pass_memory_.size() < units) {
         pass_memory_.resize(units);
     }
-    std::uint32_t s = 0;
-    for (std::size_t i = 0; i < units; ++i) {
-        const std::uint32_t first = s;
-        const std::size_t target = n_ * (i + 1) / units;
-        while (s < strips && (i + 1 == units || own_begin_[s] < target)) {
-            ++s;
-        }
-        start_part(parts_[i], first, s);
-    }
+    cut_strips_into_units(units, n_, nullptr);
     copy_boundary_rows(input, units, parts);
     std::vector<std::size_t> visits(units);
     sweep_units(units, parts, emit, [&](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {

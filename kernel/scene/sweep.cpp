@@ -227,6 +227,20 @@ void pair_search::start_part(part& p, std::uint32_t first_strip, std::uint32_t e
     p.kernel_seconds = 0;
 }
 
+void pair_search::cut_strips_into_units(std::size_t units, std::size_t entries, const std::uint32_t* visits_before) {
+    const std::uint32_t strips = grid_.strips;
+    std::uint32_t s = 0;
+    for (std::size_t i = 0; i < units; ++i) {
+        const std::uint32_t first = s;
+        const std::size_t target = entries * (i + 1) / units;
+        while (s < strips &&
+               (i + 1 == units || own_begin_[s] + (visits_before != nullptr ? visits_before[s] : 0u) < target)) {
+            ++s;
+        }
+        start_part(parts_[i], first, s);
+    }
+}
+
 void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     // The strips are cut into units of about the same number of entries, a
     // few per thread, each taken by the next thread free (work_shares.hpp):
@@ -234,21 +248,12 @@ void pair_search::sweep(std::size_t parts, const pair_chunk_sink* emit) {
     // keeps what it finds (parts_[unit]), so nothing depends on which thread
     // swept it. A query that keeps its candidates (pair_finder) keeps them
     // per thread's share (kept_share), one unit a share.
-    const std::uint32_t strips = grid_.strips;
     const std::size_t entries = n_ + stats_.visits;
     const std::size_t units = kept_.keep ? parts : units_for(entries, parts, min_entries_per_unit);
     if (parts_.size() < units) {
         parts_.resize(units);
     }
-    std::uint32_t s = 0;
-    for (std::size_t i = 0; i < units; ++i) {
-        const std::uint32_t first = s;
-        const std::size_t target = entries * (i + 1) / units;
-        while (s < strips && (i + 1 == units || own_begin_[s] + visit_begin_[s] < target)) {
-            ++s;
-        }
-        start_part(parts_[i], first, s);
-    }
+    cut_strips_into_units(units, entries, visit_begin_.data());
     kept_.capture_budget = kept_.margin > 0.0f
                                ? kept_budget_factor * kept_.last_candidates + n_ + units * candidate_block
                                : std::numeric_limits<std::size_t>::max();

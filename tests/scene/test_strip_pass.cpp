@@ -108,6 +108,29 @@ std::vector<rect_pose> scene(std::size_t count, float side, std::size_t tall_eve
     return out;
 }
 
+/// Pair filters for `count` boxes: four categories, one box in eight refusing
+/// the second, and groups 1 to 3 on one box in sixteen.
+struct pair_filter_rows {
+    std::vector<std::uint64_t> categories, masks;
+    std::vector<std::int32_t> groups;
+
+    explicit pair_filter_rows(std::size_t count) : categories(count), masks(count), groups(count) {
+        for (std::size_t i = 0; i < count; ++i) {
+            categories[i] = std::uint64_t{1} << (i % 4);
+            masks[i] = i % 8 == 0 ? ~std::uint64_t{2} : obbsat::all_categories;
+            groups[i] = i % 16 == 0 ? static_cast<std::int32_t>(i % 3 + 1) : 0;
+        }
+    }
+
+    /// `input` with these filters on its first set.
+    query_input on(query_input input) const {
+        input.a_filters.categories = categories.data();
+        input.a_filters.masks = masks.data();
+        input.a_filters.groups = groups.data();
+        return input;
+    }
+};
+
 struct answer {
     std::vector<pair_index> pairs;
     std::size_t visits = 0;
@@ -178,17 +201,8 @@ TEST(strip_pass, answers_as_the_steps_one_at_a_time_across_two_sets) {
 
 TEST(strip_pass, answers_as_the_steps_one_at_a_time_with_pair_filters) {
     const std::vector<rect_pose> boxes = scene(12000, 180.0f, 9, 25.0f, 5);
-    std::vector<std::uint64_t> categories(boxes.size()), masks(boxes.size());
-    std::vector<std::int32_t> groups(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        categories[i] = std::uint64_t{1} << (i % 4);
-        masks[i] = i % 8 == 0 ? ~std::uint64_t{2} : obbsat::all_categories;
-        groups[i] = i % 16 == 0 ? static_cast<std::int32_t>(i % 3 + 1) : 0;
-    }
-    query_input input = rows_of(boxes);
-    input.a_filters.categories = categories.data();
-    input.a_filters.masks = masks.data();
-    input.a_filters.groups = groups.data();
+    const pair_filter_rows filters(boxes.size());
+    const query_input input = filters.on(rows_of(boxes));
     const answer wanted = in_steps(input, method::exact);
     const answer unfiltered = in_steps(rows_of(boxes), method::exact);
     ASSERT_LT(wanted.pairs.size(), unfiltered.pairs.size());
@@ -331,17 +345,8 @@ TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_across_two_sets) 
 
 TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_with_pair_filters) {
     const std::vector<rect_pose> boxes = threads_scene(6.0f, 24);
-    std::vector<std::uint64_t> categories(boxes.size()), masks(boxes.size());
-    std::vector<std::int32_t> groups(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        categories[i] = std::uint64_t{1} << (i % 4);
-        masks[i] = i % 8 == 0 ? ~std::uint64_t{2} : obbsat::all_categories;
-        groups[i] = i % 16 == 0 ? static_cast<std::int32_t>(i % 3 + 1) : 0;
-    }
-    query_input input = rows_of(boxes);
-    input.a_filters.categories = categories.data();
-    input.a_filters.masks = masks.data();
-    input.a_filters.groups = groups.data();
+    const pair_filter_rows filters(boxes.size());
+    const query_input input = filters.on(rows_of(boxes));
     ASSERT_LT(in_steps(input, method::exact).pairs.size(), in_steps(rows_of(boxes), method::exact).pairs.size());
     expect_same_on_threads(input, method::exact, true);
 }

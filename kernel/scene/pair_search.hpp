@@ -33,10 +33,15 @@
 //   6. The answer: the found pairs streamed to the caller's sink as they
 //      come [sweep.cpp], or sorted into one list [output.cpp].
 // The query's rows are read through query_input.hpp; run() in
-// pair_search.cpp takes the steps in turn. A plain float query on one
-// thread takes the copy of step 2 and steps 3 to 5 strip by strip instead,
-// each strip's entries written straight to their places in the swept strip,
-// with no arrays of the whole scene between the steps [strip_pass.cpp].
+// pair_search.cpp takes the steps in turn. A plain float query takes the
+// copy of step 2 and steps 3 to 5 strip by strip instead, each strip's
+// entries written straight to their places in the swept strip, with no
+// arrays of the whole scene between the steps [strip_pass.cpp]. On several
+// threads it does so in units of consecutive strips taken as they come; a
+// unit finds its first strip's visitors in the strips below it that a
+// rectangle may reach from (the largest extent decides how many), whose
+// records are copied before the units start. A scene whose tallest
+// rectangle reaches too far for that takes the steps one at a time.
 //
 // A persistent query (collect, for pair_finder) answers its first call on a
 // scene as a plain query; later full queries widen every bounds by a

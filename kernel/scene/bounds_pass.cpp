@@ -111,6 +111,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         double height_sum = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
         std::array<std::uint32_t, 256> exponents{};  ///< of the boxes' larger extents, before widening
+        float tallest = 0;  ///< the largest height of a box, before widening
     };
     // Units taken as they come (work_shares.hpp); each keeps its own partial
     // results, combined in unit order, so none depends on the threads.
@@ -136,6 +137,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         unsigned probe_inside = 1;
         float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
         float height_sum = 0;
+        float tallest = 0;
         double total = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
         // Boxes of one scene mostly share their extent's exponent: counted
@@ -184,6 +186,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
                 y_low = std::min(y_low, b.lo_y[r]);
                 y_high = std::max(y_high, b.hi_y[r]);
                 height_sum += std::min(b.hi_y[r] - b.lo_y[r], FLT_MAX / bounds_run::size);
+                tallest = std::max(tallest, b.hi_y[r] - b.lo_y[r]);
             }
             total += static_cast<double>(height_sum);
             height_sum = 0;
@@ -200,6 +203,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         p.y_low = clamp_finite(y_low);
         p.y_high = clamp_finite(y_high);
         p.height_sum = total + static_cast<double>(height_sum);
+        p.tallest = tallest;
         p.first_bad = first_bad;
     });
     for (const partial& p : partials) {
@@ -231,15 +235,11 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
             break;
         }
     }
-    // The largest extent below the next power of two above the highest
-    // exponent seen: how far the strip pass looks below a unit's first strip.
-    int highest = 0;
-    for (int e = 255; e > 0 && highest == 0; --e) {
-        for (const partial& p : partials) {
-            highest = p.exponents[static_cast<std::size_t>(e)] > 0 ? e : highest;
-        }
+    // How far the strip pass looks below a unit's first strip (strip_reach).
+    tallest_ = 0;
+    for (const partial& p : partials) {
+        tallest_ = std::max(tallest_, p.tallest);
     }
-    largest_extent_ = highest == 255 ? std::numeric_limits<float>::infinity() : std::ldexp(1.0f, highest - 126);
     if (probe) {
         kept_.probe_ready = true;
         const bool calm = compare && std::find(inside_all.begin(), inside_all.end(), 0) == inside_all.end();

@@ -39,7 +39,7 @@
 // arrays of the whole scene between the steps [strip_pass.cpp]. On several
 // threads it does so in units of consecutive strips taken as they come; a
 // unit finds its first strip's visitors in the strips below it that a
-// rectangle may reach from (the largest extent decides how many), whose
+// rectangle may reach from (the tallest rectangle decides how many), whose
 // records are copied before the units start. A scene whose tallest
 // rectangle reaches too far for that takes the steps one at a time.
 //
@@ -326,7 +326,7 @@ private:
         return !doubles_ && !kept_.keep && (parts == 1 || strip_pass_units(parts) > 0);
     }
     /// Strips above its lowest a rectangle may reach, from the largest
-    /// extent the bounds pass saw (largest_extent_), at most grid_.strips.
+    /// height the bounds pass saw (tallest_), at most grid_.strips.
     std::uint32_t strip_reach() const;
     /// Units of the strip pass on `parts` > 1 threads; 0 when the visitors
     /// each unit gathers from below its first strip (incoming_visitors) would
@@ -494,7 +494,7 @@ private:
     std::vector<part> parts_;
     std::vector<strip_pass_memory> pass_memory_;  ///< copy_and_sweep: one per unit
     std::vector<unsigned char> copied_before_;  ///< per strip: copy_boundary_rows copied its records
-    float largest_extent_ = 0;  ///< measure_extent: at least every rectangle's larger extent (before widening)
+    float tallest_ = 0;  ///< measure_extent: the largest height of a rectangle's bounds (before widening)
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;
     std::vector<pair_sort_scratch<pair_index>> sort_scratch_;

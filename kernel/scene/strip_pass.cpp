@@ -221,7 +221,22 @@ std::size_t pair_search::copy_own_entries(const query_input& input, std::uint32_
     for (std::size_t run = 0; run < own; run += bounds_run::size) {
         const std::size_t run_end = std::min(own, run + bounds_run::size);
         if (copied_before_[strip] == 0) {
-            copy_rows(input, own_first + run, own_first + run_end);
+            // copy_rows' loop, written out: called here run by run, the
+            // copy of one thread's strip pass cost a call per run, and
+            // inlined (always_inline) GCC 12 dropped its fetch ahead.
+            for (std::size_t i = run; i < run_end; ++i) {
+                const std::size_t k = own_first + i;
+                if (k + random_rows_ahead < n_) {
+                    fetch_into_l2(record_at(input, order_[k + random_rows_ahead]));
+                }
+                ::new (static_cast<void*>(&records_[k])) record;  // its memory may have held the sort's words
+                copy_row(input, order_[k], records_[k].v);
+            }
+            if (filtered_) {
+                for (std::size_t i = run; i < run_end; ++i) {
+                    filters_[own_first + i] = filter_of(input, order_[own_first + i]);
+                }
+            }
         }
         bounds_run b;
         bounds(kind_, records_[own_first + run].v, run_end - run, b.lo_x, b.lo_y, b.hi_x, b.hi_y);
@@ -304,10 +319,11 @@ bool pair_search::climb(const part& p, std::size_t near, const strip_pass_memory
 }
 
 std::uint32_t pair_search::strip_reach() const {
-    // A rectangle's highest strip is at most its height in strips, rounded
-    // up, above its lowest (at most the floor of it plus one); a little more
-    // covers the rounding of the bounds and of their maps to strips.
-    const double reach = std::ceil(static_cast<double>(largest_extent_) * grid_.y_scale * (1.0 + 1e-6)) + 1.0;
+    // A rectangle of height h over strips of height 1 / y_scale spans at
+    // most floor(h * y_scale) + 1 strips above its lowest; a little more
+    // covers the rounding of the bounds and of their maps to strips. Most
+    // scenes' strips are twice their mean height: one strip, the one below.
+    const double reach = std::floor(static_cast<double>(tallest_) * grid_.y_scale * (1.0 + 1e-6)) + 1.0;
     return reach < static_cast<double>(grid_.strips) ? static_cast<std::uint32_t>(reach) : grid_.strips;
 }
 

@@ -68,6 +68,9 @@ struct pair_search_test_access {
 
     static std::size_t strips(const pair_search& search) { return search.grid_.strips; }
 
+    /// Strips of the last query's grid in one unit of y.
+    static double strips_per_unit_of_y(const pair_search& search) { return search.grid_.y_scale; }
+
     /// Strips above its lowest a rectangle of the last query may reach, as the strip pass reckons.
     static std::size_t strip_reach(const pair_search& search) { return search.strip_reach(); }
 
@@ -322,6 +325,32 @@ std::vector<rect_pose> threads_scene(std::size_t count, std::size_t tall_every, 
 
 std::vector<rect_pose> threads_scene(float tall, std::uint64_t seed) { return threads_scene(60000, 5, tall, seed); }
 
+TEST(strip_pass, reads_below_a_unit_as_many_strips_as_the_tallest_box_reaches) {
+    // Boxes 2 high over strips taller than that reach at most the strip
+    // above their lowest; one box 14 high, a few strips, at most
+    // floor(its height in strips) + 1 above. A unit reads that many strips
+    // below its first, no more.
+    std::vector<rect_pose> boxes;
+    obbsat::seeded_random random(26);
+    for (std::size_t i = 0; i < 20000; ++i) {
+        boxes.push_back(rect_pose{{random.uniform(0.0f, 500.0f), random.uniform(0.0f, 500.0f)},
+                                  {random.uniform(0.05f, 1.0f), 1.0f},
+                                  {1.0f, 0.0f}});
+    }
+    collide_options options;
+    options.test = method::exact;
+    options.threads = 2;
+    pair_search search(options);
+    search.run(rows_of(boxes), [](const pair_index*, std::size_t) {});
+    EXPECT_EQ(pair_search_test_access::strip_reach(search), 1u);
+    boxes[7].half_extents.y = 7.0f;
+    search.run(rows_of(boxes), [](const pair_index*, std::size_t) {});
+    const double tall_in_strips = 14.0 * pair_search_test_access::strips_per_unit_of_y(search);
+    ASSERT_GT(tall_in_strips, 2.0);
+    ASSERT_GT(std::abs(tall_in_strips - std::round(tall_in_strips)), 0.1);  // no rounding at stake
+    EXPECT_EQ(pair_search_test_access::strip_reach(search), static_cast<std::size_t>(tall_in_strips) + 1);
+}
+
 TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_within_one_set) {
     const std::vector<rect_pose> boxes = threads_scene(6.0f, 21);
     const query_input input = rows_of(boxes);
@@ -331,7 +360,7 @@ TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_within_one_set) {
     pair_search probe(options);
     probe.run(input, [](const pair_index*, std::size_t) {});
     // Tall boxes reach several strips above their lowest, past the first strip of the next unit.
-    ASSERT_GE(pair_search_test_access::strip_reach(probe), 4u);
+    ASSERT_GE(pair_search_test_access::strip_reach(probe), 3u);
     for (const method m : {method::exact, method::local, method::conservative}) {
         expect_same_on_threads(input, m, true);
     }

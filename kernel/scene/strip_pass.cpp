@@ -12,7 +12,6 @@
 
 #include "dispatch/backend_registry.hpp"
 #include "scene/search_common.hpp"
-#include "sort/radix_sort.hpp"
 #include "support/fetch_ahead.hpp"
 #include "support/work_shares.hpp"
 
@@ -43,6 +42,34 @@ void grow_to(std::size_t count, Vectors*... arrays) {
     const std::size_t size = std::max(count, 2 * std::min({arrays->size()...}));
     if (std::min({arrays->size()...}) < count) {
         (arrays->resize(size), ...);
+    }
+}
+
+/// starts[s] for s in [0, strips]: the first index of sorted `keys` whose
+/// strip (key >> shift) is at least s, n if none; what bucket_starts writes,
+/// found by a lower bound for each strip instead of reading every key, run
+/// for `lanes` strips at once, each step taking no branch on the data, so
+/// that the searches' loads overlap: a few hundred strips over a million keys.
+void strip_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::uint32_t strips,
+                  std::uint32_t* starts) {
+    constexpr std::size_t lanes = 8;
+    for (std::size_t s = 0; s <= strips; s += lanes) {
+        std::uint64_t target[lanes];
+        std::size_t base[lanes];
+        for (std::size_t t = 0; t < lanes; ++t) {
+            target[t] = static_cast<std::uint64_t>(s + t) << shift;
+            base[t] = 0;
+        }
+        for (std::size_t left = n; left > 1;) {
+            const std::size_t half = left / 2;
+            for (std::size_t t = 0; t < lanes; ++t) {
+                base[t] = keys[base[t] + half] < target[t] ? base[t] + half : base[t];
+            }
+            left -= half;
+        }
+        for (std::size_t t = 0; t < lanes && s + t <= strips; ++t) {
+            starts[s + t] = static_cast<std::uint32_t>(n == 0 ? 0 : base[t] + (keys[base[t]] < target[t] ? 1u : 0u));
+        }
     }
 }
 
@@ -350,7 +377,12 @@ void pair_search::incoming_visitors(std::uint32_t first, strip_pass_memory& memo
     const auto second_store = static_cast<std::uint32_t>(self_ ? n_ : a_count_);
     strip_visitors& here = memory.visitors[0];
     here.count = 0;
+    here.make_room(end - begin + 1);
     memory.far_visits.clear();
+    // From one strip, the visitors come in its key order, so by q_lo (the
+    // keys are made from the same bounds); from several, each strip's do.
+    bool sorted = true;
+    std::uint32_t last_q = 0;
     bounds_run b;
     for (std::size_t run = begin; run < end; run += bounds_run::size) {
         const std::size_t count = std::min(end - run, bounds_run::size);
@@ -371,17 +403,19 @@ void pair_search::incoming_visitors(std::uint32_t first, strip_pass_memory& memo
                                   b.lo_y[r],
                                   b.hi_x[r],
                                   b.hi_y[r]};
-            here.make_room(here.count + 1);
             visit.put(here, here.count);
             ++here.count;
+            sorted = sorted && last_q <= visit.q_lo;
+            last_q = visit.q_lo;
             if (high > first) {
                 memory.far_visits.push_back(visit);
                 std::push_heap(memory.far_visits.begin(), memory.far_visits.end(), far_visit::later);
             }
         }
     }
-    // In the order of their lowest strips, each strip's by q_lo.
-    here.sort_by_q_lo();
+    if (!sorted) {
+        here.sort_by_q_lo();
+    }
 }
 
 std::size_t pair_search::copy_and_sweep_unit(const query_input& input, part& p, strip_pass_memory& memory,
@@ -468,7 +502,7 @@ void pair_search::copy_and_sweep(const query_input& input, std::size_t parts, co
         filters_.resize(n_);
     }
     own_begin_.resize(strips + 1);
-    bucket_starts(keys_.data(), n_, grid_.q_bits, strips, 0, n_, own_begin_.data());
+    strip_starts(keys_.data(), n_, grid_.q_bits, strips, own_begin_.data());
     // Units of consecutive strips of about the same number of rectangles, a
     // few per thread, taken as they come (work_shares.hpp); each keeps what
     // it finds (parts_[unit]), so nothing depends on which thread took it.

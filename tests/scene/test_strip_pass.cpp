@@ -325,6 +325,21 @@ std::vector<rect_pose> threads_scene(std::size_t count, std::size_t tall_every, 
 
 std::vector<rect_pose> threads_scene(float tall, std::uint64_t seed) { return threads_scene(60000, 5, tall, seed); }
 
+TEST(strip_pass, answers_as_the_steps_one_at_a_time_with_strips_no_box_starts_in) {
+    // Three bands of boxes with wide gaps between them: strips where no box
+    // has its lowest, at the bottom, between the bands and at the top of the
+    // grid, on one thread and in units on several.
+    std::vector<rect_pose> boxes = threads_scene(60000, 5, 6.0f, 27);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        boxes[i].center.y = boxes[i].center.y / 10.0f + 600.0f * static_cast<float>(i % 3) + 100.0f;
+    }
+    const query_input input = rows_of(boxes);
+    const answer wanted = in_steps(input, method::exact);
+    ASSERT_GT(wanted.pairs.size(), boxes.size());
+    expect_same(strip_by_strip(input, method::exact), wanted);
+    expect_same_on_threads(input, method::exact, true);
+}
+
 TEST(strip_pass, reads_below_a_unit_as_many_strips_as_the_tallest_box_reaches) {
     // Boxes 2 high over strips taller than that reach at most the strip
     // above their lowest; one box 14 high, a few strips, at most

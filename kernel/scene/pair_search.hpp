@@ -91,6 +91,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace obbsat::detail {
@@ -340,19 +341,31 @@ private:
     /// and stats' strips and visits; leaves the scene's sweep arrays
     /// (in_lo_x_ ... strip_hi_, side_) and visits unwritten.
     void copy_and_sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit);
+    /// The rows below each unit's first strip that its rectangles may visit
+    /// from (strip_reach of them): region u of unit u > 0 holds strips
+    /// [lowest[u], parts_[u].first_strip), all of them the last strips of
+    /// unit u - 1, so regions do not overlap; each is copied once, by
+    /// whichever of the two units comes to it first (claim), and read by
+    /// both. claims[u]: 0 none, 1 being copied, 2 copied.
+    struct boundary_regions {
+        std::vector<std::uint32_t> lowest;
+        std::vector<std::uint32_t> starting;  ///< per strip: the region it starts, 0 for none
+        std::unique_ptr<std::atomic<unsigned char>[]> claims;
+    };
     /// Sweeps the strips of unit `p` strip by strip, in `memory`; returns the visits to them.
     std::size_t copy_and_sweep_unit(const query_input& input, part& p, strip_pass_memory& memory,
-                             const flush_callback& after_flush, const std::atomic<bool>& failed);
+                                    boundary_regions& regions, const flush_callback& after_flush,
+                                    const std::atomic<bool>& failed);
     /// The visitors of strip `first` from the rectangles of the strips below
-    /// it (their records copied by copy_boundary_rows), sorted by q_lo, in
+    /// it (their records copied, copy_region), sorted by q_lo, in
     /// memory.visitors[0]; their visits beyond `first` in memory.far_visits.
     void incoming_visitors(std::uint32_t first, strip_pass_memory& memory) const;
-    /// Before the units of the strip pass start: copies the records (and
-    /// filters) of the strips below each unit's first that its rectangles may
-    /// visit from (strip_reach), which that unit reads (its visitors' bounds,
-    /// the method's kernels, the filters) while the unit below may be
-    /// copying its own; marks them in copied_before_, so that none is written twice.
-    void copy_boundary_rows(const query_input& input, std::size_t units, std::size_t parts);
+    /// Cuts the boundary regions of `units` units (parts_, cut) and marks
+    /// their strips in copied_before_: copy_own_entries copies none of them.
+    void mark_boundary_regions(std::size_t units, boundary_regions& regions);
+    /// Returns once region `unit` is copied: copies it if no unit has
+    /// claimed it yet, else waits for the unit copying it (a strip's rows).
+    void copy_region(const query_input& input, std::size_t unit, boundary_regions& regions);
     /// Records (and filters) of entries [begin, end) of the order, copied from the rows.
     void copy_rows(const query_input& input, std::size_t begin, std::size_t end);
     /// The places in the merged strip of its `own` rectangles (memory.own_at,
@@ -493,7 +506,7 @@ private:
 
     std::vector<part> parts_;
     std::vector<strip_pass_memory> pass_memory_;  ///< copy_and_sweep: one per unit
-    std::vector<unsigned char> copied_before_;  ///< per strip: copy_boundary_rows copied its records
+    std::vector<unsigned char> copied_before_;  ///< per strip: in a boundary region (copy_region)
     float tallest_ = 0;  ///< measure_extent: the largest height of a rectangle's bounds (before widening)
     std::size_t used_parts_ = 0;  ///< sweep units of the last query; their found pairs are its answer
     std::vector<pair_index> pairs_;

@@ -21,6 +21,7 @@
 #include <limits>
 #include <new>
 #include <numeric>
+#include <thread>
 #include <utility>
 
 namespace obbsat::detail {
@@ -419,10 +420,19 @@ void pair_search::incoming_visitors(std::uint32_t first, strip_pass_memory& memo
 }
 
 std::size_t pair_search::copy_and_sweep_unit(const query_input& input, part& p, strip_pass_memory& memory,
-                                             const flush_callback& after_flush, const std::atomic<bool>& failed) {
+                                             boundary_regions& regions, const flush_callback& after_flush,
+                                             const std::atomic<bool>& failed) {
     strip_visitors* here = &memory.visitors[0];
     strip_visitors* above = &memory.visitors[1];
     if (p.first_strip > 0 && p.first_strip < p.end_strip) {
+        // The regions below this unit's first strip within reach: its own,
+        // and those of the units below while theirs end within reach.
+        const std::uint32_t reach = strip_reach();
+        const std::uint32_t lowest = p.first_strip > reach ? p.first_strip - reach : 0u;
+        for (std::size_t u = static_cast<std::size_t>(&p - parts_.data()); u > 0 && parts_[u].first_strip > lowest;
+             --u) {
+            copy_region(input, u, regions);
+        }
         incoming_visitors(p.first_strip, memory);
     } else {
         here->count = 0;
@@ -432,6 +442,9 @@ std::size_t pair_search::copy_and_sweep_unit(const query_input& input, part& p, 
     std::vector<far_visit>& far_visits = memory.far_visits;
     std::size_t visits = 0;
     for (std::uint32_t s = p.first_strip; s < p.end_strip && !failed.load(); ++s) {
+        if (regions.starting[s] != 0) {
+            copy_region(input, regions.starting[s], regions);
+        }
         const std::size_t own_first = own_begin_[s];
         const std::size_t own = own_begin_[s + 1] - own_first;
         // Visitors from two or more strips below come after those from
@@ -471,28 +484,47 @@ std::size_t pair_search::copy_and_sweep_unit(const query_input& input, part& p, 
     return visits;
 }
 
-void pair_search::copy_boundary_rows(const query_input& input, std::size_t units, std::size_t parts) {
-    // The strips each unit reads below its first (strip_reach of them), in
-    // ranges that do not overlap: each from the first strip of the unit
-    // below on. Every strip some unit reads lies in one of them (below the
-    // first unit's first strip that starts above it).
+void pair_search::mark_boundary_regions(std::size_t units, boundary_regions& regions) {
+    // Region u reaches down strip_reach strips from unit u's first, but not
+    // below unit u - 1's first: the strips further down lie in the regions
+    // of the units below (a unit fewer strips high than the reach reads
+    // several regions).
     const std::uint32_t strips = grid_.strips;
     copied_before_.assign(strips, 0);
-    if (units <= 1) {
+    regions.lowest.assign(units, 0);
+    regions.starting.assign(strips, 0);
+    regions.claims.reset(new std::atomic<unsigned char>[units]);
+    const std::uint32_t reach = strip_reach();
+    for (std::size_t u = 0; u < units; ++u) {
+        regions.claims[u].store(0, std::memory_order_relaxed);
+        if (u == 0) {
+            continue;
+        }
+        const std::uint32_t first = parts_[u].first_strip;
+        const std::uint32_t lowest = std::max(first > reach ? first - reach : 0u, parts_[u - 1].first_strip);
+        regions.lowest[u] = lowest;
+        if (lowest < first) {
+            std::fill(copied_before_.begin() + lowest, copied_before_.begin() + first, 1);
+            regions.starting[lowest] = static_cast<std::uint32_t>(u);
+        }
+    }
+}
+
+void pair_search::copy_region(const query_input& input, std::size_t unit, boundary_regions& regions) {
+    std::atomic<unsigned char>& claim = regions.claims[unit];
+    unsigned char seen = 0;
+    if (claim.compare_exchange_strong(seen, 1, std::memory_order_acquire)) {
+        copy_rows(input, own_begin_[regions.lowest[unit]], own_begin_[parts_[unit].first_strip]);
+        claim.store(2, std::memory_order_release);
         return;
     }
-    const std::uint32_t reach = strip_reach();
-    std::vector<std::uint32_t> lowest(units, 0);
-    for (std::size_t i = 1; i < units; ++i) {
-        const std::uint32_t first = parts_[i].first_strip;
-        lowest[i] = std::max(first > reach ? first - reach : 0u, parts_[i - 1].first_strip);
-        std::fill(copied_before_.begin() + lowest[i], copied_before_.begin() + first, 1);
-    }
-    run_units(units, parts, [&](std::size_t unit) {
-        if (unit > 0) {
-            copy_rows(input, own_begin_[lowest[unit]], own_begin_[parts_[unit].first_strip]);
+    // The other unit is copying it (a strip's rows): a short wait, unless
+    // its thread lost its core, which the yields give back.
+    for (unsigned k = 1; claim.load(std::memory_order_acquire) != 2; ++k) {
+        if ((k & 63u) == 0) {
+            std::this_thread::yield();
         }
-    });
+    }
 }
 
 void pair_search::copy_and_sweep(const query_input& input, std::size_t parts, const pair_chunk_sink* emit) {
@@ -514,11 +546,12 @@ void pair_search::copy_and_sweep(const query_input& input, std::size_t parts, co
         pass_memory_.resize(units);
     }
     cut_strips_into_units(units, n_, nullptr);
-    copy_boundary_rows(input, units, parts);
+    boundary_regions regions;
+    mark_boundary_regions(units, regions);
     std::vector<std::size_t> visits(units);
     sweep_units(units, parts, emit, [&](part& p, const flush_callback& after_flush, const std::atomic<bool>& failed) {
         const auto unit = static_cast<std::size_t>(&p - parts_.data());
-        visits[unit] = copy_and_sweep_unit(input, p, pass_memory_[unit], after_flush, failed);
+        visits[unit] = copy_and_sweep_unit(input, p, pass_memory_[unit], regions, after_flush, failed);
     });
     stats_.strips = strips;
     stats_.visits = std::accumulate(visits.begin(), visits.end(), std::size_t{0});

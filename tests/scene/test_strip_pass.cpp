@@ -74,6 +74,15 @@ struct pair_search_test_access {
     /// Strips above its lowest a rectangle of the last query may reach, as the strip pass reckons.
     static std::size_t strip_reach(const pair_search& search) { return search.strip_reach(); }
 
+    /// Strips of the last query's thinnest unit.
+    static std::size_t thinnest_unit(const pair_search& search) {
+        std::size_t thinnest = search.grid_.strips;
+        for (std::size_t u = 0; u < search.used_parts_; ++u) {
+            thinnest = std::min<std::size_t>(thinnest, search.parts_[u].end_strip - search.parts_[u].first_strip);
+        }
+        return thinnest;
+    }
+
     /// Units of the last query's sweep.
     static std::size_t units(const pair_search& search) { return search.used_parts_; }
 };
@@ -338,6 +347,27 @@ TEST(strip_pass, answers_as_the_steps_one_at_a_time_with_strips_no_box_starts_in
     ASSERT_GT(wanted.pairs.size(), boxes.size());
     expect_same(strip_by_strip(input, method::exact), wanted);
     expect_same_on_threads(input, method::exact, true);
+}
+
+TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_with_units_thinner_than_the_reach) {
+    // Two boxes in three in a band 40 high: there a unit holds a strip or
+    // two, fewer than the tall boxes reach, so it reads the rows below its
+    // first strip from the regions of several units below; some strips hold
+    // more boxes than a unit, which leaves units with no strip.
+    std::vector<rect_pose> boxes = threads_scene(6.0f, 29);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        if (i % 3 != 0) {
+            boxes[i].center.y = 1250.0f + boxes[i].center.y / 2500.0f * 40.0f;
+        }
+    }
+    collide_options options;
+    options.test = method::exact;
+    options.threads = 3;
+    pair_search probe(options);
+    probe.run(rows_of(boxes), [](const pair_index*, std::size_t) {});
+    ASSERT_GE(pair_search_test_access::strip_reach(probe), 3u);
+    ASSERT_LT(pair_search_test_access::thinnest_unit(probe), pair_search_test_access::strip_reach(probe));
+    expect_same_on_threads(rows_of(boxes), method::exact, true);
 }
 
 TEST(strip_pass, reads_below_a_unit_as_many_strips_as_the_tallest_box_reaches) {

@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace obbsat::detail {
@@ -334,6 +335,16 @@ std::vector<rect_pose> threads_scene(std::size_t count, std::size_t tall_every, 
 
 std::vector<rect_pose> threads_scene(float tall, std::uint64_t seed) { return threads_scene(60000, 5, tall, seed); }
 
+/// Runs a query of `input` by method exact on `threads` threads in `search`,
+/// its pairs dropped: for what the query reckoned (strip_reach, units).
+void run_exact(std::unique_ptr<pair_search>& search, const query_input& input, unsigned threads) {
+    collide_options options;
+    options.test = method::exact;
+    options.threads = threads;
+    search = std::make_unique<pair_search>(options);
+    search->run(input, [](const pair_index*, std::size_t) {});
+}
+
 TEST(strip_pass, answers_as_the_steps_one_at_a_time_with_strips_no_box_starts_in) {
     // Three bands of boxes with wide gaps between them: strips where no box
     // has its lowest, at the bottom, between the bands and at the top of the
@@ -360,13 +371,10 @@ TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_with_units_thinne
             boxes[i].center.y = 1250.0f + boxes[i].center.y / 2500.0f * 40.0f;
         }
     }
-    collide_options options;
-    options.test = method::exact;
-    options.threads = 3;
-    pair_search probe(options);
-    probe.run(rows_of(boxes), [](const pair_index*, std::size_t) {});
-    ASSERT_GE(pair_search_test_access::strip_reach(probe), 3u);
-    ASSERT_LT(pair_search_test_access::thinnest_unit(probe), pair_search_test_access::strip_reach(probe));
+    std::unique_ptr<pair_search> probe;
+    run_exact(probe, rows_of(boxes), 3);
+    ASSERT_GE(pair_search_test_access::strip_reach(*probe), 3u);
+    ASSERT_LT(pair_search_test_access::thinnest_unit(*probe), pair_search_test_access::strip_reach(*probe));
     expect_same_on_threads(rows_of(boxes), method::exact, true);
 }
 
@@ -382,30 +390,24 @@ TEST(strip_pass, reads_below_a_unit_as_many_strips_as_the_tallest_box_reaches) {
                                   {random.uniform(0.05f, 1.0f), 1.0f},
                                   {1.0f, 0.0f}});
     }
-    collide_options options;
-    options.test = method::exact;
-    options.threads = 2;
-    pair_search search(options);
-    search.run(rows_of(boxes), [](const pair_index*, std::size_t) {});
-    EXPECT_EQ(pair_search_test_access::strip_reach(search), 1u);
+    std::unique_ptr<pair_search> search;
+    run_exact(search, rows_of(boxes), 2);
+    EXPECT_EQ(pair_search_test_access::strip_reach(*search), 1u);
     boxes[7].half_extents.y = 7.0f;
-    search.run(rows_of(boxes), [](const pair_index*, std::size_t) {});
-    const double tall_in_strips = 14.0 * pair_search_test_access::strips_per_unit_of_y(search);
+    run_exact(search, rows_of(boxes), 2);
+    const double tall_in_strips = 14.0 * pair_search_test_access::strips_per_unit_of_y(*search);
     ASSERT_GT(tall_in_strips, 2.0);
     ASSERT_GT(std::abs(tall_in_strips - std::round(tall_in_strips)), 0.1);  // no rounding at stake
-    EXPECT_EQ(pair_search_test_access::strip_reach(search), static_cast<std::size_t>(tall_in_strips) + 1);
+    EXPECT_EQ(pair_search_test_access::strip_reach(*search), static_cast<std::size_t>(tall_in_strips) + 1);
 }
 
 TEST(strip_pass, on_threads_answers_as_the_steps_one_at_a_time_within_one_set) {
     const std::vector<rect_pose> boxes = threads_scene(6.0f, 21);
     const query_input input = rows_of(boxes);
-    collide_options options;
-    options.test = method::exact;
-    options.threads = 2;
-    pair_search probe(options);
-    probe.run(input, [](const pair_index*, std::size_t) {});
+    std::unique_ptr<pair_search> probe;
+    run_exact(probe, input, 2);
     // Tall boxes reach several strips above their lowest, past the first strip of the next unit.
-    ASSERT_GE(pair_search_test_access::strip_reach(probe), 3u);
+    ASSERT_GE(pair_search_test_access::strip_reach(*probe), 3u);
     for (const method m : {method::exact, method::local, method::conservative}) {
         expect_same_on_threads(input, m, true);
     }

@@ -137,7 +137,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         unsigned probe_inside = 1;
         float x_low = FLT_MAX, x_high = -FLT_MAX, y_low = FLT_MAX, y_high = -FLT_MAX;
         float height_sum = 0;
-        float tallest = 0;
+        std::uint32_t tallest_bits = 0;  // of the largest height: see below
         double total = 0;
         std::size_t first_bad = std::numeric_limits<std::size_t>::max();
         // Boxes of one scene mostly share their extent's exponent: counted
@@ -158,10 +158,18 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
             const std::size_t run_end = std::min(end, run_begin + bounds_run::size);
             input_bounds(input, run_begin, run_end, b);
             for (std::size_t r = 0; r < run_end - run_begin; ++r) {
-                const float extent = std::max(b.hi_x[r] - b.lo_x[r], b.hi_y[r] - b.lo_y[r]);
+                const float height = b.hi_y[r] - b.lo_y[r];
+                const float extent = std::max(b.hi_x[r] - b.lo_x[r], height);
                 std::uint32_t bits;
                 std::memcpy(&bits, &extent, sizeof bits);
                 extent_exponent[r] = (bits >> 23) & 0xffu;
+                // The bits of a height's magnitude order as its value does:
+                // an integer maximum, which takes no branch on NaN (a row
+                // that fails its check is refused below) and keeps -0 below
+                // every height.
+                std::uint32_t height_bits;
+                std::memcpy(&height_bits, &height, sizeof height_bits);
+                tallest_bits = std::max(tallest_bits, height_bits & 0x7fffffffu);
             }
             if (probe) {
                 probe_motion(b, run_begin, run_end - run_begin, compare, probe_inside);
@@ -186,7 +194,6 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
                 y_low = std::min(y_low, b.lo_y[r]);
                 y_high = std::max(y_high, b.hi_y[r]);
                 height_sum += std::min(b.hi_y[r] - b.lo_y[r], FLT_MAX / bounds_run::size);
-                tallest = std::max(tallest, b.hi_y[r] - b.lo_y[r]);
             }
             total += static_cast<double>(height_sum);
             height_sum = 0;
@@ -203,7 +210,7 @@ void pair_search::measure_extent(const query_input& input, std::size_t parts, bo
         p.y_low = clamp_finite(y_low);
         p.y_high = clamp_finite(y_high);
         p.height_sum = total + static_cast<double>(height_sum);
-        p.tallest = tallest;
+        std::memcpy(&p.tallest, &tallest_bits, sizeof p.tallest);
         p.first_bad = first_bad;
     });
     for (const partial& p : partials) {

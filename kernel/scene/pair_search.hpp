@@ -40,8 +40,9 @@
 // threads it does so in units of consecutive strips taken as they come; a
 // unit finds its first strip's visitors in the strips below it that a
 // rectangle may reach from (the tallest rectangle decides how many), whose
-// records are copied before the units start. A scene whose tallest
-// rectangle reaches too far for that takes the steps one at a time.
+// records whichever of the two units comes to them first copies. A scene
+// whose tallest rectangle reaches too far for that takes the steps one at
+// a time.
 //
 // A persistent query (collect, for pair_finder) answers its first call on a
 // scene as a plain query; later full queries widen every bounds by a

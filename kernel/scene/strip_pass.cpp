@@ -1,5 +1,6 @@
 // Steps 2 to 5 of the scene query (pair_search.hpp) strip by strip, for a
-// plain float query on one thread: each strip's records copied into the
+// plain float query, on one thread or over units of consecutive strips on
+// several (copy_and_sweep, at the end): each strip's records copied into the
 // query's order, their bounds, their visits to the strips above, the merge
 // with the strip's visitors and the sweep, in one go while the strip's
 // entries are in the cache. The steps taken one at a time write every
@@ -32,8 +33,10 @@ namespace {
 /// threads may read again, in all, to find their first strip's visitors
 /// (strip_pass_units). Reading one costs its bounds, a small part of what a
 /// box costs the query: on the 1M-box uniform scene (317 strips, a reach of
-/// 3, 32 units) the units read 29% of the records again. A scene whose
-/// tallest rectangle reaches much further takes the steps one at a time.
+/// 1 strip, 32 units) the units read 10% of the records again (29% when the
+/// reach came from the largest extent rounded up to a power of two: 3
+/// strips). A scene whose tallest rectangle reaches much further takes the
+/// steps one at a time.
 constexpr double strip_pass_read_again = 1.0;
 
 /// Room for `count` entries in each of `arrays`, grown with room to spare

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "dispatch/contact_kernel_table.hpp"
+#include "lanes/contact64_transpose.hpp"
 #include "lanes/contact_acceptance_lanes.hpp"
 #include "lanes/contact_compress_lanes.hpp"
 #include "lanes/contact_lanes.hpp"
@@ -68,8 +69,9 @@ OBBSAT_LANE_INLINE contact_fields<Arch, Real> contacts_of_fields(const real_lane
 
 /// Writes lane i of `c` to place(i), a contact* (contact64* for double), for
 /// the first `valid` lanes: a whole vector of float contacts by three 4x4
-/// transposes (each a third of every contact), anything else through a
-/// staging copy.
+/// transposes (each a third of every contact), of double ones by 4x4
+/// transposes of doubles (contact64_transpose.hpp), a partial vector
+/// through a staging copy.
 template <class Arch, class Real, class Place>
 OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, const Place& place,
                                           std::size_t valid) {
@@ -83,6 +85,9 @@ OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, c
             }
             return;
         }
+    } else if (valid == width) {
+        contact64_transpose<Arch>::store(c.f, place);
+        return;
     }
     alignas(64) Real staged[12][width];
     for (int f = 0; f < 12; ++f) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "dispatch/contact_kernel_table.hpp"
+#include "lanes/contact64_transpose.hpp"
 #include "lanes/contact_acceptance_lanes.hpp"
 #include "lanes/contact_compress_lanes.hpp"
 #include "lanes/contact_lanes.hpp"
@@ -68,8 +69,9 @@ OBBSAT_LANE_INLINE contact_fields<Arch, Real> contacts_of_fields(const real_lane
 
 /// Writes lane i of `c` to place(i), a contact* (contact64* for double), for
 /// the first `valid` lanes: a whole vector of float contacts by three 4x4
-/// transposes (each a third of every contact), anything else through a
-/// staging copy.
+/// transposes (each a third of every contact), of double ones by 4x4
+/// transposes of doubles (contact64_transpose.hpp), a partial vector
+/// through a staging copy.
 template <class Arch, class Real, class Place>
 OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, const Place& place,
                                           std::size_t valid) {
@@ -83,6 +85,9 @@ OBBSAT_LANE_INLINE void store_contacts_to(const contact_fields<Arch, Real>& c, c
             }
             return;
         }
+    } else if (valid == width) {
+        contact64_transpose<Arch>::store(c.f, place);
+        return;
     }
     alignas(64) Real staged[12][width];
     for (int f = 0; f < 12; ++f) {
@@ -441,19 +446,24 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
         // Writes the contacts without points of pairs i to i + valid and keeps those within the margin.
         auto write_apart = [&](const pose_reference_lanes<Arch, Real>& p, std::size_t i, std::size_t valid)
             __attribute__((always_inline)) {
-                const contact_out_lanes<Arch, Real> apart =
-                    contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
-                if constexpr (std::is_same<Real, float>::value) {
-                    if (valid == width) {
-                        store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);
+                const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
+                const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
+                // A vector whose every pair is within the margin (most of a
+                // scene's colliding pairs) has each contact written by the
+                // second pass: nothing to write here.
+                if (near_lanes != valid_lanes) {
+                    const contact_out_lanes<Arch, Real> apart =
+                        contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
+                    if constexpr (std::is_same<Real, float>::value) {
+                        if (valid == width) {
+                            store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);
+                        } else {
+                            store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
+                        }
                     } else {
                         store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                     }
-                } else {
-                    store_contacts<Arch, Real>(fields_of<Arch, Real>(apart), block_out + i, valid);
                 }
-                const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
-                const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
                 kept.keep(near_lanes, p, near_count);
                 near_count =
                     append_near_lanes<Arch, width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);

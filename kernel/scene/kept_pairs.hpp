@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/id_rows.hpp"
+#include "scene/kept_costs.hpp"
 #include "sort/few_pairs_sort.hpp"
 #include "sort/pair_sort.hpp"
 #include "support/scratch_vector.hpp"
@@ -80,6 +81,8 @@ struct kept_pairs {
         calm_calls = 0;
     }
     std::size_t last_candidates = 0;    ///< candidates of the last full query, for the budget of kept ones
+    /// What keeping and plain queries cost, measured, and whether keeping rests (kept_costs.hpp).
+    keep_costs costs;
 
     // The budget of a full query that keeps its candidates: the pairs it may
     // keep, counted over all parts, so that whether it keeps them does not

@@ -99,6 +99,11 @@ struct find_pairs_stats {
     bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
     std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls (of rows still there, with ids)
     bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
+    /// pair_finder: answered by a plain query (find_pairs' own path) because
+    /// the last kept candidates, with the full query that kept them, cost
+    /// more per call than a plain query; the finder tries keeping again
+    /// after a rest that doubles each time keeping does not pay.
+    bool kept_resting = false;
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
     double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits; pair_finder with ids: carrying the kept candidates over rows that came, went or moved; 0 for a query on one thread that copies strip by strip as it sweeps (then in sweep_seconds)
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels

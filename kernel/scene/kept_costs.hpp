@@ -23,8 +23,9 @@
 // first_call_share of its time, for the first first_call_cycles cycles only
 // (then a plain query is timed if none was), and the first cycle's full
 // query as at most full_query_cap plain queries.
-// Costs are measured by pair_search::collect (wall time of a call); the
-// decisions are here, so that they can be checked with given costs.
+// Costs are measured by pair_search::collect (wall time of a call), from
+// min_boxes_weighed rows on (search_common.hpp); the decisions are here, so
+// that they can be checked with given costs.
 #pragma once
 
 #include <algorithm>

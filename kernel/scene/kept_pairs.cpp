@@ -213,14 +213,17 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         }
         return pairs_;
     }
-    if (cycle_ended && !kept_.costs.clearly_pays()) {
+    // Below min_boxes_weighed rows a call takes so little time that the
+    // clock's noise would decide: such a finder keeps, as it always did.
+    const bool weighs = call_cost_ != nullptr || n_ >= min_boxes_weighed;
+    if (weighs && cycle_ended && !kept_.costs.clearly_pays()) {
         // Whether the cycle paid is not clear: this call is a plain query,
         // timed, and the cycle weighed against it (weigh_call); the next
         // call keeps again unless the cycle cost more.
         call_path_ = call_path::judged;
         return answer_plainly(input);
     }
-    if (kept_.costs.rest_call()) {
+    if (weighs && kept_.costs.rest_call()) {
         // The last cycle cost more per call than a plain query: plain
         // queries answer until the rest is over, then a full query keeps
         // again and its cycle is weighed anew.

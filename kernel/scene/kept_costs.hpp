@@ -11,13 +11,16 @@
 // a plain query each and the full query is never paid back.
 //
 // When a cycle ends (its candidates serve no more) the finder weighs it:
-//   - A cycle that clearly paid, at most clear_share of the last plain
-//     query measured, keeps again.
+//   - A cycle that clearly paid, at most clear_share of a plain query (the
+//     median of the latest timed), keeps again.
 //   - Otherwise that call is answered by a plain query, timed, and the
-//     cycle compared with it (judge): if the cycle cost more per call, the
-//     next rest_length calls are plain queries too (resting), and the next
-//     rest after another cycle that does not pay is twice as long, up to
-//     longest_rest; a cycle that pays makes the next rest short again.
+//     cycle compared with it and the latest ones (judge): if the cycle cost
+//     more per call, the next rest_length calls are plain queries too
+//     (resting), and the next rest after another cycle that does not pay is
+//     twice as long, up to longest_rest; a cycle that pays makes the next
+//     rest short again.
+// Each kind of call counts at the lower median of its latest costs, so that
+// a call the machine delayed counts as a typical one.
 // The first call on a scene also faults in the finder's memory, and so
 // does the full query of its first cycle: the first call counts as
 // first_call_share of its time, for the first first_call_cycles cycles only
@@ -34,14 +37,50 @@
 
 namespace obbsat::detail {
 
+/// The latest costs of one kind of call, up to `Samples` of them, and their
+/// lower median: a call the machine delayed counts as a typical one.
+template <std::size_t Samples>
+class latest_costs {
+public:
+    void add(double seconds) {
+        if (costs_.size() < Samples) {
+            costs_.push_back(seconds);
+        } else {
+            costs_[added_ % Samples] = seconds;
+        }
+        ++added_;
+    }
+    void clear() {
+        costs_.clear();
+        added_ = 0;
+    }
+    bool empty() const { return costs_.empty(); }
+    /// Costs added since the last clear, those no longer held counted.
+    std::size_t added() const { return added_; }
+    /// The lower median of the held costs; 0 when none.
+    double median() const {
+        if (costs_.empty()) {
+            return 0;
+        }
+        std::vector<double> sorted = costs_;
+        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>((sorted.size() - 1) / 2);
+        std::nth_element(sorted.begin(), middle, sorted.end());
+        return *middle;
+    }
+
+private:
+    std::vector<double> costs_;
+    std::size_t added_ = 0;
+};
+
 class keep_costs {
 public:
     /// The calls of the first rest; each rest after a cycle that did not
     /// pay doubles, up to longest_rest.
     static constexpr std::size_t first_rest = 32;
     static constexpr std::size_t longest_rest = 1024;
-    /// A cycle costing at most this share of the last plain query measured
-    /// per call keeps again with no plain query timed.
+    /// A cycle costing at most this share of a plain query per call keeps
+    /// again with no plain query timed.
     static constexpr double clear_share = 0.75;
     /// A scene's first call counts as this share of its time (its memory
     /// is faulted in on the way: some 3 plain queries at 100k boxes).
@@ -50,52 +89,37 @@ public:
     static constexpr std::size_t first_call_cycles = 3;
     /// The full query of a scene's first cycle counts as at most this many plain queries.
     static constexpr double full_query_cap = 3.0;
-    /// Carried calls whose costs are kept for the median, the latest ones.
-    static constexpr std::size_t carried_samples = 64;
 
     /// A new scene: nothing measured, no rest. `seconds`: its first call, a plain query.
     void new_scene(double seconds) {
         *this = keep_costs{};
-        plain_seconds_ = seconds * first_call_share;
+        first_call_seconds_ = seconds * first_call_share;
         first_cycle_next_ = true;
     }
     /// A plain query answered a call in `seconds` (not a first call).
-    void plain(double seconds) {
-        plain_seconds_ = seconds;
-        plain_measured_ = true;
-    }
+    void plain(double seconds) { plain_.add(seconds); }
     /// A full query kept candidates in `seconds`: a cycle begins.
     void kept(double seconds) {
         full_seconds_ = seconds;
         first_cycle_ = first_cycle_next_;
         first_cycle_next_ = false;
         carried_.clear();
-        carried_calls_ = 0;
     }
     /// The kept candidates answered a call in `seconds`.
-    void carried(double seconds) {
-        if (carried_.size() < carried_samples) {
-            carried_.push_back(seconds);
-        } else {
-            carried_[carried_calls_ % carried_samples] = seconds;
-        }
-        ++carried_calls_;
-    }
+    void carried(double seconds) { carried_.add(seconds); }
 
+    /// What a plain query costs: the median of the latest ones timed, or
+    /// before any, a share of the first call's time.
+    double plain_cost() const { return plain_.empty() ? first_call_seconds_ : plain_.median(); }
     /// The cycle's cost per call: its full query and its carried calls at
-    /// their median (a call the machine delayed counts as a typical one).
-    /// 0 when no cycle was measured.
+    /// their median. 0 when no call was carried.
     double cycle_cost() const {
         if (carried_.empty()) {
             return 0;
         }
-        std::vector<double> sorted = carried_;
-        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-        std::nth_element(sorted.begin(), middle, sorted.end());
-        const double carried = *middle;
-        const double full = first_cycle_ ? std::min(full_seconds_, full_query_cap * plain_seconds_) : full_seconds_;
-        const auto calls = static_cast<double>(carried_calls_);
-        return (full + calls * carried) / (calls + 1);
+        const double full = first_cycle_ ? std::min(full_seconds_, full_query_cap * plain_cost()) : full_seconds_;
+        const auto calls = static_cast<double>(carried_.added());
+        return (full + calls * carried_.median()) / (calls + 1);
     }
     /// At the end of a cycle (counted): true when it clearly paid (the next
     /// full query keeps); false when the call is to be a plain query, timed
@@ -103,16 +127,16 @@ public:
     bool clearly_pays() {
         ++cycles_;
         const double cost = cycle_cost();
-        const bool known = plain_measured_ || cycles_ <= first_call_cycles;
-        return known && cost > 0 && cost <= clear_share * plain_seconds_;
+        const bool known = !plain_.empty() || cycles_ <= first_call_cycles;
+        return known && cost > 0 && cost <= clear_share * plain_cost();
     }
-    /// The plain query that ended a cycle took `seconds`: rest if the cycle cost more per call.
+    /// The plain query that ended a cycle took `seconds`: rest if the cycle
+    /// cost more per call than plain queries do (this one with the latest).
     void judge(double seconds) {
         plain(seconds);
         const double cost = cycle_cost();
         carried_.clear();
-        carried_calls_ = 0;
-        if (cost > seconds) {
+        if (cost > plain_cost()) {
             rest_left_ = rest_length_;
             rest_length_ = std::min(2 * rest_length_, longest_rest);
             ++rests_;
@@ -136,14 +160,13 @@ public:
     std::size_t rests() const { return rests_; }
 
 private:
-    double plain_seconds_ = 0;  ///< the last plain query (a first call's counted at first_call_share); 0: none
-    bool plain_measured_ = false;  ///< plain_seconds_ is a plain query's, not a first call's
-    std::size_t cycles_ = 0;       ///< cycles ended on this scene
-    double full_seconds_ = 0;   ///< the full query that began the cycle
-    bool first_cycle_ = false;  ///< the cycle is the scene's first
+    latest_costs<8> plain_;            ///< plain queries timed (not a first call)
+    latest_costs<64> carried_;         ///< the cycle's carried calls
+    double first_call_seconds_ = 0;    ///< the scene's first call, counted at first_call_share
+    double full_seconds_ = 0;          ///< the full query that began the cycle
+    bool first_cycle_ = false;         ///< the cycle is the scene's first
     bool first_cycle_next_ = false;
-    std::vector<double> carried_;     ///< the latest carried calls' costs
-    std::size_t carried_calls_ = 0;   ///< carried calls of the cycle
+    std::size_t cycles_ = 0;           ///< cycles ended on this scene
     std::size_t rest_left_ = 0;
     std::size_t rest_length_ = first_rest;
     std::size_t rests_ = 0;

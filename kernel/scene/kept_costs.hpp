@@ -13,12 +13,12 @@
 // When a cycle ends (its candidates serve no more) the finder weighs it:
 //   - A cycle that clearly paid, at most clear_share of a plain query (the
 //     median of the latest timed), keeps again.
-//   - Otherwise that call is answered by a plain query, timed, and the
-//     cycle compared with it and the latest ones (judge): if the cycle cost
-//     more per call, the next rest_length calls are plain queries too
-//     (resting), and the next rest after another cycle that does not pay is
-//     twice as long, up to longest_rest; a cycle that pays makes the next
-//     rest short again.
+//   - Otherwise that call and the next are answered by plain queries,
+//     timed, and the cycle compared with them and the latest (judge): if
+//     the cycle cost more per call, the next rest_length calls are plain
+//     queries too (resting), and the next rest after another cycle that
+//     does not pay is twice as long, up to longest_rest; a cycle that pays
+//     makes the next rest short again.
 // Each kind of call counts at the lower median of its latest costs, so that
 // a call the machine delayed counts as a typical one.
 // The first call on a scene also faults in the finder's memory, and so
@@ -87,6 +87,9 @@ public:
     static constexpr double first_call_share = 1.0 / 3;
     /// The cycles a first call's time is taken for a plain query's.
     static constexpr std::size_t first_call_cycles = 3;
+    /// Plain queries timed to weigh a cycle that did not clearly pay: two,
+    /// so that one the machine delayed does not decide alone.
+    static constexpr std::size_t judge_calls = 2;
     /// The full query of a scene's first cycle counts as at most this many plain queries.
     static constexpr double full_query_cap = 3.0;
 
@@ -130,19 +133,31 @@ public:
         const bool known = !plain_.empty() || cycles_ <= first_call_cycles;
         return known && cost > 0 && cost <= clear_share * plain_cost();
     }
-    /// The plain query that ended a cycle took `seconds`: rest if the cycle
-    /// cost more per call than plain queries do (this one with the latest).
-    void judge(double seconds) {
+    /// The cycle that just ended is weighed against the next judge_calls
+    /// plain queries (judge), after clearly_pays said no.
+    void start_judging() { judging_left_ = judge_calls; }
+    /// Whether this call is one of the plain queries that weigh a cycle.
+    bool judging() const { return judging_left_ > 0; }
+    /// One of the plain queries that weigh the cycle took `seconds`; after
+    /// the last, rest if the cycle cost more per call than plain queries do
+    /// (these with the latest). Returns whether a rest began.
+    bool judge(double seconds) {
         plain(seconds);
+        if (judging_left_ > 1) {
+            --judging_left_;
+            return false;
+        }
+        judging_left_ = 0;
         const double cost = cycle_cost();
         carried_.clear();
         if (cost > plain_cost()) {
             rest_left_ = rest_length_;
             rest_length_ = std::min(2 * rest_length_, longest_rest);
             ++rests_;
-        } else {
-            rest_length_ = first_rest;
+            return true;
         }
+        rest_length_ = first_rest;
+        return false;
     }
     /// Whether this call rests (a plain query where a full query would keep); counts it.
     bool rest_call() {
@@ -167,6 +182,7 @@ private:
     bool first_cycle_ = false;         ///< the cycle is the scene's first
     bool first_cycle_next_ = false;
     std::size_t cycles_ = 0;           ///< cycles ended on this scene
+    std::size_t judging_left_ = 0;     ///< plain queries still to time for the cycle being weighed
     std::size_t rest_left_ = 0;
     std::size_t rest_length_ = first_rest;
     std::size_t rests_ = 0;

@@ -89,13 +89,10 @@ void pair_search::weigh_call(double seconds) {
         case call_path::plain:
             costs.plain(cost);
             break;
-        case call_path::judged: {
-            const std::size_t rests = costs.rests();
-            costs.judge(cost);
-            // A plain query that ended a cycle which did not pay: the rest begins with it.
-            stats_.kept_resting = costs.rests() != rests;
+        case call_path::judged:
+            // The last plain query weighing a cycle that did not pay: the rest begins with it.
+            stats_.kept_resting = costs.judge(cost);
             break;
-        }
         case call_path::kept:
             costs.kept(cost);
             break;
@@ -217,9 +214,12 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
     // clock's noise would decide: such a finder keeps, as it always did.
     const bool weighs = call_cost_ != nullptr || n_ >= min_boxes_weighed;
     if (weighs && cycle_ended && !kept_.costs.clearly_pays()) {
-        // Whether the cycle paid is not clear: this call is a plain query,
-        // timed, and the cycle weighed against it (weigh_call); the next
-        // call keeps again unless the cycle cost more.
+        kept_.costs.start_judging();
+    }
+    if (weighs && kept_.costs.judging()) {
+        // Whether the cycle that ended paid is not clear: this call and the
+        // next are plain queries, timed, and the cycle weighed against them
+        // (weigh_call); then a full query keeps again unless it cost more.
         call_path_ = call_path::judged;
         return answer_plainly(input);
     }

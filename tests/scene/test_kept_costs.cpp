@@ -58,6 +58,19 @@ keep_costs one_cycle(double full, std::size_t calls, double carried) {
     return costs;
 }
 
+/// The plain queries that weigh a cycle, each `plain`; whether a rest began.
+bool weigh(keep_costs& costs, double plain) {
+    costs.start_judging();
+    bool rest = false;
+    for (std::size_t i = 0; i < keep_costs::judge_calls; ++i) {
+        EXPECT_TRUE(costs.judging());
+        EXPECT_FALSE(rest) << "only the last plain query weighing a cycle decides";
+        rest = costs.judge(plain);
+    }
+    EXPECT_FALSE(costs.judging());
+    return rest;
+}
+
 TEST(kept_costs, a_cycle_whose_calls_cost_a_fraction_of_a_plain_query_clearly_pays) {
     keep_costs costs = one_cycle(2.0, 12, 0.2);
     // (2 + 12 * 0.2) / 13 per call against a plain query of 1 (the first call's 3 counted as 1).
@@ -70,7 +83,8 @@ TEST(kept_costs, a_cycle_whose_calls_cost_a_fraction_of_a_plain_query_clearly_pa
 TEST(kept_costs, a_cycle_that_costs_more_than_a_plain_query_starts_a_rest_that_ends_and_doubles) {
     keep_costs costs = one_cycle(2.0, 12, 1.0);
     ASSERT_FALSE(costs.clearly_pays());
-    costs.judge(0.9);  // the plain query that ended the cycle: cheaper than (2 + 12) / 13
+    // The plain queries that weigh the cycle: cheaper than (2 + 12) / 13.
+    EXPECT_TRUE(weigh(costs, 0.9));
     EXPECT_EQ(costs.rests(), 1u);
     EXPECT_EQ(costs.rest_left(), keep_costs::first_rest);
     for (std::size_t i = 0; i < keep_costs::first_rest; ++i) {
@@ -85,14 +99,14 @@ TEST(kept_costs, a_cycle_that_costs_more_than_a_plain_query_starts_a_rest_that_e
         costs.carried(1.0);
     }
     EXPECT_FALSE(costs.clearly_pays());
-    costs.judge(0.9);
+    EXPECT_TRUE(weigh(costs, 0.9));
     EXPECT_EQ(costs.rest_left(), 2 * keep_costs::first_rest);
 }
 
 TEST(kept_costs, a_cycle_weighed_cheaper_than_a_plain_query_keeps_and_shortens_the_next_rest) {
     keep_costs costs = one_cycle(2.0, 12, 1.0);
     ASSERT_FALSE(costs.clearly_pays());
-    costs.judge(0.9);
+    EXPECT_TRUE(weigh(costs, 0.9));
     while (costs.rest_call()) {
     }
     // Now the carried calls got cheap: 0.6 against plain 0.9 is not clear, but pays.
@@ -101,7 +115,7 @@ TEST(kept_costs, a_cycle_weighed_cheaper_than_a_plain_query_keeps_and_shortens_t
         costs.carried(0.6);
     }
     ASSERT_FALSE(costs.clearly_pays());
-    costs.judge(0.9);
+    EXPECT_FALSE(weigh(costs, 0.9));
     EXPECT_EQ(costs.rest_left(), 0u);
     EXPECT_EQ(costs.rests(), 1u);
     EXPECT_EQ(costs.next_rest(), keep_costs::first_rest);
@@ -110,7 +124,7 @@ TEST(kept_costs, a_cycle_weighed_cheaper_than_a_plain_query_keeps_and_shortens_t
 TEST(kept_costs, rests_double_up_to_the_longest) {
     keep_costs costs = one_cycle(2.0, 4, 1.0);
     for (int cycle = 0; cycle < 12; ++cycle) {
-        costs.judge(0.5);
+        EXPECT_TRUE(weigh(costs, 0.5));
         EXPECT_LE(costs.rest_left(), keep_costs::longest_rest);
         while (costs.rest_call()) {
         }
@@ -153,7 +167,7 @@ TEST(kept_costs, a_first_calls_time_stands_for_a_plain_query_for_the_first_cycle
     }
     // No plain query timed since the first call: this cycle is weighed against one.
     EXPECT_FALSE(costs.clearly_pays());
-    costs.judge(1.0);
+    EXPECT_FALSE(weigh(costs, 1.0));
     EXPECT_EQ(costs.rests(), 0u);
     costs.kept(2.0);
     for (int i = 0; i < 12; ++i) {
@@ -280,16 +294,18 @@ TEST(kept_costs, an_engine_whose_kept_calls_cost_a_plain_query_rests_then_keeps_
         // The first cycle: a first call, a full query that keeps, calls answered from it.
         ASSERT_GE(r.paths.size(), 4u);
         EXPECT_EQ(r.paths.substr(0, 3), "pFk");
-        // It ends when the kept candidates serve no more: the next call is the
-        // plain query that weighs it, and it rests (kept_resting) for the
-        // first rest's calls, then a full query keeps again.
+        // It ends when the kept candidates serve no more: the next calls are
+        // the plain queries that weigh it, the last of which begins a rest
+        // (kept_resting) for the first rest's calls, then a full query keeps again.
+        const std::size_t weighed = r.paths.find_first_not_of('k', 2);
+        ASSERT_NE(weighed, std::string::npos);
         const std::size_t first_rest = r.paths.find('R');
         ASSERT_NE(first_rest, std::string::npos);
-        EXPECT_EQ(r.paths[first_rest - 1], 'k');
-        EXPECT_EQ(r.paths.find_first_not_of('k', 2), first_rest);
+        EXPECT_EQ(first_rest - weighed, keep_costs::judge_calls - 1);
+        EXPECT_EQ(r.paths.substr(weighed, first_rest - weighed), std::string(keep_costs::judge_calls - 1, 'p'));
         const std::size_t rest_end = r.paths.find_first_not_of('R', first_rest);
         ASSERT_NE(rest_end, std::string::npos);
-        EXPECT_EQ(rest_end - first_rest, 1 + keep_costs::first_rest);  // the weighing call and the rest
+        EXPECT_EQ(rest_end - first_rest, 1 + keep_costs::first_rest);  // the last weighing call and the rest
         EXPECT_EQ(r.paths[rest_end], 'F');
         EXPECT_EQ(r.paths[rest_end + 1], 'k');
     }
@@ -302,9 +318,9 @@ TEST(kept_costs, an_engine_whose_kept_calls_are_cheap_never_rests_with_every_fra
         SCOPED_TRACE(std::to_string(threads) + " threads, paths " + r.paths);
         EXPECT_EQ(r.paths.find('R'), std::string::npos);
         // Several cycles ended, each followed by a full query that keeps (at
-        // most one plain query weighing the cycle between).
+        // most the plain queries weighing the cycle between).
         EXPECT_GE(std::count(r.paths.begin(), r.paths.end(), 'F'), 3);
-        EXPECT_EQ(r.paths.find("pp", 1), std::string::npos);
+        EXPECT_EQ(r.paths.find(std::string(keep_costs::judge_calls + 1, 'p'), 1), std::string::npos);
     }
 }
 

@@ -112,7 +112,9 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         kept_.ready = false;
     }
     probe_carried_ = false;
-    if (rows_changed_) {
+    if (rows_changed_ && (kept_.ready || kept_.paused)) {
+        // Only the kept candidates' carry and a paused probe read the last
+        // rows' rows now (a plain query, one that rests say, does not).
         map_last_rows();
     }
     // The kept candidates serve rows matched by position (the last call's

@@ -61,6 +61,10 @@
 // Rows with ids (box_view::with_ids) may come, go and change places between
 // calls: id_rows.hpp matches a call's ids with the last call's, and
 // kept_changes.cpp carries the kept candidates over to this call's rows.
+// Whether keeping pays at all is measured (kept_costs.hpp): a full query that
+// keeps and the calls its candidates answer are weighed against plain
+// queries, and where they cost more the finder rests, answering by plain
+// queries for a while (find_pairs_stats::kept_resting).
 #pragma once
 
 #include "scene/filter_values.hpp"

@@ -8,6 +8,7 @@
 // fresh find_pairs and its begin/end events by id the differences of
 // consecutive answers, whichever path answers.
 #include "pair_finder_id_pairs.hpp"
+#include "spawning_world.hpp"
 #include "scene/kept_costs.hpp"
 #include "scene/pair_events.hpp"
 #include "scene/pair_search.hpp"
@@ -15,8 +16,6 @@
 #include <obbsat/collide.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
-#include <obbsat/pose_scene.hpp>
-#include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -31,7 +30,6 @@ namespace obbsat::detail {
 struct pair_search_test_access {
     using call_cost = pair_search::call_cost;
     static void cost_calls_by(pair_search& search, call_cost model) { search.call_cost_ = model; }
-    static const keep_costs& costs(const pair_search& search) { return search.kept_.costs; }
 };
 
 }  // namespace obbsat::detail
@@ -39,7 +37,6 @@ struct pair_search_test_access {
 namespace {
 
 using obbsat::pair_index;
-using obbsat::rect_pose;
 using obbsat::detail::keep_costs;
 using obbsat::detail::pair_search;
 using obbsat::detail::pair_search_test_access;
@@ -189,48 +186,6 @@ double cost_by_path(const obbsat::find_pairs_stats& stats, double) {
     return stats.kept_candidates > 0 ? 3.0 : 1.0;
 }
 
-/// Drifting boxes with ids; each frame removes 2% of the rows by swap-remove
-/// (the last row takes the removed one's place) and appends as many new ones.
-struct swap_remove_world {
-    std::vector<rect_pose> boxes;
-    std::vector<std::uint64_t> ids;
-    std::vector<rect_pose> pool;
-    std::uint64_t next = 0;
-    obbsat::seeded_random random{31};
-
-    explicit swap_remove_world(std::size_t count) {
-        obbsat::pose_scene_spec spec;
-        spec.boxes = 4 * count;
-        spec.seed = 29;
-        spec.sizes = obbsat::scene_sizes::uniform;
-        pool = obbsat::make_pose_scene(spec);
-        while (boxes.size() < count) {
-            spawn();
-        }
-    }
-    void spawn() {
-        boxes.push_back(pool[next % pool.size()]);
-        ids.push_back(next++);
-    }
-    void step() {
-        for (rect_pose& p : boxes) {
-            p.center.x += random.uniform(-0.002f, 0.002f);
-            p.center.y += random.uniform(-0.002f, 0.002f);
-        }
-        const std::size_t churn = boxes.size() * 2 / 100;
-        for (std::size_t c = 0; c < churn; ++c) {
-            const auto at = static_cast<std::size_t>(random.below(boxes.size()));
-            boxes[at] = boxes.back();
-            ids[at] = ids.back();
-            boxes.pop_back();
-            ids.pop_back();
-        }
-        for (std::size_t c = 0; c < churn; ++c) {
-            spawn();
-        }
-    }
-};
-
 /// What answered each frame: 'p' a first or plain query, 'F' a full query
 /// that kept candidates, 'k' kept candidates, 'R' a plain query while resting.
 struct run_record {
@@ -248,10 +203,12 @@ run_record run_swap_removes(pair_search_test_access::call_cost model, unsigned t
     pair_search search(options);
     pair_search_test_access::cost_calls_by(search, model);
     obbsat::detail::pair_events events;
-    swap_remove_world w(6000);
+    // Each frame removes 2% of the rows by swap-remove (the last row takes
+    // the removed one's place) and appends as many new ones.
+    obbsat_test::spawning_world w(6000, 29);
     std::vector<obbsat::id_pair> last;
     run_record record;
-    for (std::size_t f = 0; f < frames; ++f, w.step()) {
+    for (std::size_t f = 0; f < frames; ++f, w.swap_remove_frame(0.02)) {
         const obbsat::box_view view(w.boxes);
         const obbsat::detail::query_input input =
             search.bound_doubles(obbsat::detail::input_of(view.with_ids(w.ids), nullptr, true));

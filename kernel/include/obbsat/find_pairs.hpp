@@ -259,7 +259,15 @@ struct scene_contacts64;  // obbsat/find_contacts.hpp
 /// bounds pass compares each box's bounds with the last call's widened by
 /// the margin (16 bytes per box; after a failed comparison the next ones
 /// wait up to 16 calls), and keeping resumes after two calls in a row whose
-/// boxes all stayed inside. The answer is always the
+/// boxes all stayed inside. From 65536 rectangles on, the finder also times
+/// its calls: when the kept pairs stop serving, the full query that kept
+/// them and the calls they answered are weighed per call against plain
+/// queries (two timed then, unless keeping clearly paid: at most three
+/// quarters of a plain query), and if keeping cost more the next 32 calls
+/// are plain queries (stats().kept_resting), the next such rest twice as
+/// long (up to 1024 calls), so that a scene where keeping does not pay (rows
+/// swap-removed every call, say) costs about what find_pairs costs. The
+/// answer is always the
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding

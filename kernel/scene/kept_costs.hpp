@@ -15,10 +15,10 @@
 //     median of the latest timed), keeps again.
 //   - Otherwise that call and the next are answered by plain queries,
 //     timed, and the cycle compared with them and the latest (judge): if
-//     the cycle cost more per call, the next rest_length calls are plain
-//     queries too (resting), and the next rest after another cycle that
-//     does not pay is twice as long, up to longest_rest; a cycle that pays
-//     makes the next rest short again.
+//     the cycle cost clearly more per call (rest_share), the next
+//     rest_length calls are plain queries too (resting), and the next rest
+//     after another cycle that does not pay is twice as long, up to
+//     longest_rest; a cycle that pays makes the next rest short again.
 // Each kind of call counts at the lower median of its latest costs, so that
 // a call the machine delayed counts as a typical one.
 // The first call on a scene also faults in the finder's memory, and so
@@ -87,6 +87,9 @@ public:
     static constexpr double first_call_share = 1.0 / 3;
     /// The cycles a first call's time is taken for a plain query's.
     static constexpr std::size_t first_call_cycles = 3;
+    /// A cycle weighed rests only if it cost more than this many plain
+    /// queries per call: where the two cost about the same, it keeps.
+    static constexpr double rest_share = 1.03;
     /// Plain queries timed to weigh a cycle that did not clearly pay: two,
     /// so that one the machine delayed does not decide alone.
     static constexpr std::size_t judge_calls = 2;
@@ -141,8 +144,8 @@ public:
     /// Whether this call is one of the plain queries that weigh a cycle.
     bool judging() const { return judging_left_ > 0; }
     /// One of the plain queries that weigh the cycle took `seconds`; after
-    /// the last, rest if the cycle cost more per call than plain queries do
-    /// (these with the latest). Returns whether a rest began.
+    /// the last, rest if the cycle cost more per call than rest_share plain
+    /// queries (these with the latest). Returns whether a rest began.
     bool judge(double seconds) {
         plain(seconds);
         if (judging_left_ > 1) {
@@ -152,7 +155,7 @@ public:
         judging_left_ = 0;
         const double cost = cycle_cost();
         carried_.clear();
-        if (cost > plain_cost()) {
+        if (cost > rest_share * plain_cost()) {
             rest_left_ = rest_length_;
             rest_length_ = std::min(2 * rest_length_, longest_rest);
             ++rests_;

@@ -118,6 +118,17 @@ TEST(kept_costs, a_cycle_weighed_cheaper_than_a_plain_query_keeps_and_shortens_t
     EXPECT_EQ(costs.next_rest(), keep_costs::first_rest);
 }
 
+TEST(kept_costs, a_cycle_that_costs_about_a_plain_query_keeps_and_one_clearly_dearer_rests) {
+    // Carried calls of c make (2 + 12 c) / 13 per call against plain queries of 1.
+    const auto carried_for = [](double per_call) { return (13 * per_call - 2) / 12; };
+    keep_costs about = one_cycle(2.0, 12, carried_for(1.02));
+    ASSERT_FALSE(about.clearly_pays());
+    EXPECT_FALSE(weigh(about, 1.0));
+    keep_costs dearer = one_cycle(2.0, 12, carried_for(1.05));
+    ASSERT_FALSE(dearer.clearly_pays());
+    EXPECT_TRUE(weigh(dearer, 1.0));
+}
+
 TEST(kept_costs, rests_double_up_to_the_longest) {
     keep_costs costs = one_cycle(2.0, 4, 1.0);
     for (int cycle = 0; cycle < 12; ++cycle) {

@@ -22,10 +22,12 @@
 // Each kind of call counts at the lower median of its latest costs, so that
 // a call the machine delayed counts as a typical one.
 // The first call on a scene also faults in the finder's memory, and so
-// does the full query of its first cycle: the first call counts as
-// first_call_share of its time, for the first first_call_cycles cycles only
-// (then a plain query is timed if none was), and the first cycle's full
-// query as at most full_query_cap plain queries.
+// does the full query of its first cycle: until a plain query is timed, a
+// plain query counts as first_call_share of the first call or a
+// full_query_cap-th of the cycle's full query, the larger (a first call may
+// find its memory ready), for the first first_call_cycles cycles only (then
+// a plain query is timed), and the first cycle's full query as at most
+// full_query_cap plain queries.
 // Costs are measured by pair_search::collect (wall time of a call), from
 // min_boxes_weighed rows on (search_common.hpp); the decisions are here, so
 // that they can be checked with given costs.
@@ -117,15 +119,24 @@ public:
     void carried(double seconds) { carried_.add(seconds); }
 
     /// What a plain query costs: the median of the latest ones timed, or
-    /// before any, a share of the first call's time.
-    double plain_cost() const { return plain_.empty() ? first_call_seconds_ : plain_.median(); }
+    /// before any, a share of the first call's time or of the cycle's full
+    /// query's, the larger.
+    double plain_cost() const {
+        if (!plain_.empty()) {
+            return plain_.median();
+        }
+        // A full query that keeps costs about full_query_cap plain ones: the
+        // larger guess, as a first call may find its memory ready or not.
+        return std::max(first_call_seconds_, full_seconds_ / full_query_cap);
+    }
     /// The cycle's cost per call: its full query and its carried calls at
     /// their median. 0 when no call was carried.
     double cycle_cost() const {
         if (carried_.empty()) {
             return 0;
         }
-        const double full = first_cycle_ ? std::min(full_seconds_, full_query_cap * plain_cost()) : full_seconds_;
+        const double plain = plain_.empty() ? first_call_seconds_ : plain_.median();
+        const double full = first_cycle_ ? std::min(full_seconds_, full_query_cap * plain) : full_seconds_;
         const auto calls = static_cast<double>(carried_.added());
         return (full + calls * carried_.median()) / (calls + 1);
     }

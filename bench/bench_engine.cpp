@@ -6,7 +6,9 @@
 //       timed). Counters reused_candidates: the share of timed frames
 //       answered from kept candidates (find_pairs_stats::reused_candidates);
 //       candidates_per_box and kept_per_box: the candidates tested, and the
-//       candidates of widened bounds kept for the next frames, per box.
+//       candidates of widened bounds kept for the next frames, per box;
+//       resting: the share answered by plain queries because keeping cost
+//       more than plain queries did (find_pairs_stats::kept_resting).
 //       A scene whose boxes have ids (spawn_despawn) passes them
 //       (box_view::with_ids), so that the finder follows rows that come and
 //       go; engine_frame/drift is the same scene with no rows changed, so
@@ -148,13 +150,14 @@ void run_engine_row(benchmark::State& state, engine_scene scene, std::size_t box
             }
         }
         std::vector<obbsat::pair_index> cold;
-        double pairs = 0, from_kept = 0, candidates = 0, kept_candidates = 0;
+        double pairs = 0, from_kept = 0, resting = 0, candidates = 0, kept_candidates = 0;
         for (auto _ : state) {
             if (kept) {
                 const std::vector<obbsat::pair_index>& found = finder.find(frame_view(*frames));
                 benchmark::DoNotOptimize(found.data());
                 pairs += static_cast<double>(found.size());
                 from_kept += finder.stats().reused_candidates ? 1.0 : 0.0;
+                resting += finder.stats().kept_resting ? 1.0 : 0.0;
                 candidates += static_cast<double>(finder.stats().candidates);
                 kept_candidates += static_cast<double>(finder.stats().kept_candidates);
             } else {
@@ -170,6 +173,7 @@ void run_engine_row(benchmark::State& state, engine_scene scene, std::size_t box
         if (kept) {
             const auto n = static_cast<double>(frames->poses().size());
             state.counters["reused_candidates"] = benchmark::Counter(from_kept, benchmark::Counter::kAvgIterations);
+            state.counters["resting"] = benchmark::Counter(resting, benchmark::Counter::kAvgIterations);
             state.counters["candidates_per_box"] =
                 benchmark::Counter(candidates / n, benchmark::Counter::kAvgIterations);
             state.counters["kept_per_box"] = benchmark::Counter(kept_candidates / n, benchmark::Counter::kAvgIterations);

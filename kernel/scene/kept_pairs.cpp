@@ -63,19 +63,48 @@ void empty_slot_record(store_kind kind, std::size_t slot, float* v) {
 
 const std::vector<pair_index>& pair_search::collect(const query_input& input) {
     // The ids are matched first: a duplicate id is refused before anything changes.
+    // The call is timed whole, the id match with it: keep_costs weighs what
+    // keeping costs against a plain query (kept_costs.hpp).
+    const auto start = clock_type::now();
     match_ids(input);
     set_query(input);
     commit_ids(input);
     try {
-        return collect_matched(input);
+        const std::vector<pair_index>& found = collect_matched(input);
+        weigh_call(seconds_since(start));
+        return found;
     } catch (...) {
         abandon_kept();
         throw;
     }
 }
 
+void pair_search::weigh_call(double seconds) {
+    const double cost = call_cost_ != nullptr ? call_cost_(stats_, seconds) : seconds;
+    keep_costs& costs = kept_.costs;
+    switch (call_path_) {
+        case call_path::first:
+            costs.new_scene(cost);
+            break;
+        case call_path::plain:
+            costs.plain(cost);
+            break;
+        case call_path::judged:
+            // The last plain query weighing a cycle that did not pay: the rest begins with it.
+            stats_.kept_resting = costs.judge(cost);
+            break;
+        case call_path::kept:
+            costs.kept(cost);
+            break;
+        case call_path::carried:
+            costs.carried(cost);
+            break;
+    }
+}
+
 const std::vector<pair_index>& pair_search::collect_matched(const query_input& input) {
     const std::size_t parts = parts_for(n_, options_.threads, min_boxes_per_part);
+    call_path_ = call_path::plain;
     if (kept_.ready && !(ids_followed_ ? follow_filters(input) : kept_filters_.same_as(input))) {
         // Kept candidates hold only the pairs their filters let through
         // (kept_filters.hpp): compared by id when the rows carry ids (a row
@@ -83,7 +112,9 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         kept_.ready = false;
     }
     probe_carried_ = false;
-    if (rows_changed_) {
+    if (rows_changed_ && (kept_.ready || kept_.paused)) {
+        // Only the kept candidates' carry and a paused probe read the last
+        // rows' rows now (a plain query, one that rests say, does not).
         map_last_rows();
     }
     // The kept candidates serve rows matched by position (the last call's
@@ -113,6 +144,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
             stats_.strips = grid_.strips;
             stats_.visits = visit_keys_.size() - 1;
             used_parts_ = parts;
+            call_path_ = call_path::carried;
             if (kept_.remap_pending) {
                 test_kept(parts, exact, 1);
                 answer_by_id();
@@ -140,6 +172,9 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
             probe_carried_ = true;
         }
     }
+    // The kept candidates served some calls and serve no more: a cycle of
+    // keeping ended (kept_costs.hpp).
+    const bool cycle_ended = kept_.ready && kept_.calls > 0;
     // A full query that keeps its candidates. The margin follows the motion:
     // kept candidates that served only a few calls widen the next ones, and
     // candidates that outlived many calls narrow them.
@@ -158,6 +193,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         // as a plain query, and the next call keeps the pairs of widened
         // bounds. Rows matched by id to the last call's are the same scene.
         kept_.resume();
+        call_path_ = call_path::first;
         return answer_plainly(input);
     }
     if (kept_.paused) {
@@ -174,6 +210,27 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
         if (kept_.calm_calls >= calm_calls_to_resume) {
             kept_.resume();
         }
+        return pairs_;
+    }
+    // Below min_boxes_weighed rows a call takes so little time that the
+    // clock's noise would decide: such a finder keeps, as it always did.
+    const bool weighs = call_cost_ != nullptr || n_ >= min_boxes_weighed;
+    if (weighs && cycle_ended && !kept_.costs.clearly_pays()) {
+        kept_.costs.start_judging();
+    }
+    if (weighs && kept_.costs.judging()) {
+        // Whether the cycle that ended paid is not clear: this call and the
+        // next are plain queries, timed, and the cycle weighed against them
+        // (weigh_call); then a full query keeps again unless it cost more.
+        call_path_ = call_path::judged;
+        return answer_plainly(input);
+    }
+    if (weighs && kept_.costs.rest_call()) {
+        // The last cycle cost more per call than a plain query: plain
+        // queries answer until the rest is over, then a full query keeps
+        // again and its cycle is weighed anew.
+        answer_plainly(input);
+        stats_.kept_resting = true;
         return pairs_;
     }
     kept_.margin = static_cast<float>(kept_.margin_share);
@@ -205,6 +262,7 @@ const std::vector<pair_index>& pair_search::collect_matched(const query_input& i
     keep_candidates(used_parts_);
     kept_filters_.take(input);
     kept_.ready = true;
+    call_path_ = call_path::kept;
     test_kept(used_parts_, false, used_parts_);
     kept_.last_candidates = stats_.candidates;
     answer_from_kept(used_parts_);

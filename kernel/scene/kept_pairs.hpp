@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/id_rows.hpp"
+#include "scene/kept_costs.hpp"
 #include "sort/few_pairs_sort.hpp"
 #include "sort/pair_sort.hpp"
 #include "support/scratch_vector.hpp"
@@ -80,6 +81,8 @@ struct kept_pairs {
         calm_calls = 0;
     }
     std::size_t last_candidates = 0;    ///< candidates of the last full query, for the budget of kept ones
+    /// What keeping and plain queries cost, measured, and whether keeping rests (kept_costs.hpp).
+    keep_costs costs;
 
     // The budget of a full query that keeps its candidates: the pairs it may
     // keep, counted over all parts, so that whether it keeps them does not
@@ -159,6 +162,8 @@ struct kept_pairs {
     scratch_vector<signed_bounds> widened;
     std::vector<tagged_pair> by_caller_spare;  ///< by_caller's next contents while it is rebuilt
     std::vector<tagged_pair> moved_pairs;      ///< kept pairs of moved rows and new ones, in rows now
+    std::vector<std::uint64_t> moved_bits;     ///< row_moved as bits, while moved_pairs are gathered
+    std::vector<std::vector<tagged_pair>> unit_moved;  ///< each share's kept pairs of moved rows, gathered apart
     /// Each unit's share of the answer while by_caller is carried on several threads (kept_carry.cpp).
     std::vector<std::vector<pair_index>> unit_answers;
     /// Each unit's tags of kept pairs of gone rows, marked in `dropped` once the units have ended.

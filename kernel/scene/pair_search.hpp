@@ -67,6 +67,10 @@
 // Rows with ids (box_view::with_ids) may come, go and change places between
 // calls: id_rows.hpp matches a call's ids with the last call's, and
 // kept_changes.cpp carries the kept candidates over to this call's rows.
+// Whether keeping pays at all is measured (kept_costs.hpp): a full query that
+// keeps and the calls its candidates answer are weighed against plain
+// queries, and where they cost more the finder rests, answering by plain
+// queries for a while (find_pairs_stats::kept_resting).
 #pragma once
 
 #include "scene/filter_values.hpp"
@@ -147,6 +151,18 @@ public:
 private:
     /// collect() once the rows' ids (if any) are matched and taken.
     const std::vector<pair_index>& collect_matched(const query_input& input);
+    /// What answered a collect() call, for keep_costs (kept_costs.hpp): a
+    /// scene's first call, a plain query, a plain query that ends a cycle
+    /// of keeping to weigh it, a full query that keeps, kept candidates.
+    enum class call_path { first, plain, judged, kept, carried };
+    call_path call_path_ = call_path::plain;
+    /// Gives keep_costs the cost of the call collect() just answered.
+    void weigh_call(double seconds);
+    /// The cost of a call from its stats and wall time; null: its wall time.
+    /// Tests set a model of counts here, so that the finder's choices do not
+    /// depend on the machine.
+    using call_cost = double (*)(const find_pairs_stats& stats, double seconds);
+    call_cost call_cost_ = nullptr;
     /// Tests take the steps one at a time (tests/scene/test_pair_search_steps.cpp).
     friend struct pair_search_test_access;
     /// Calls f(mine, others) on each buffer of working memory, this query's and `other`'s.

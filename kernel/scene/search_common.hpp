@@ -36,6 +36,11 @@ constexpr std::size_t max_probe_wait = 16;
 /// sorted anew) than the cheaper one every this many calls.
 constexpr std::size_t order_retime_period = 8;
 
+/// A pair_finder weighs what keeping costs against plain queries
+/// (kept_costs.hpp) from this many rows on: a call on fewer takes well under
+/// a millisecond, where the clock's noise would choose the path.
+constexpr std::size_t min_boxes_weighed = 65536;
+
 /// The most found pairs a part of a streaming query holds, and so hands to
 /// the sink at once (find_pairs.hpp).
 constexpr std::size_t emit_block = 4096;

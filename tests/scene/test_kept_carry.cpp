@@ -8,13 +8,12 @@
 // kept list are listed and skipped, the rest of the list stays sorted, and
 // gaps do not pile up from frame to frame.
 #include "scene/pair_search.hpp"
+#include "spawning_world.hpp"
 
 #include <obbsat/collide.hpp>
 #include <obbsat/executor.hpp>
 #include <obbsat/find_pairs.hpp>
 #include <obbsat/method.hpp>
-#include <obbsat/pose_scene.hpp>
-#include <obbsat/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -36,6 +35,8 @@ struct pair_search_test_access {
 }  // namespace obbsat::detail
 
 namespace {
+
+using obbsat_test::spawning_world;
 
 using obbsat::collide_options;
 using obbsat::pair_index;
@@ -64,56 +65,6 @@ void* enqueue_reversed(obbsat::executor_task task, std::size_t count, std::size_
     return nullptr;
 }
 void finish_nothing(void*, void*) {}
-
-/// Boxes with ids that drift, and a pool of boxes of the same scene to spawn from.
-struct spawning_world {
-    std::vector<rect_pose> boxes;
-    std::vector<std::uint64_t> ids;
-    std::vector<rect_pose> pool;
-    std::uint64_t next = 0;
-    obbsat::seeded_random random;
-
-    spawning_world(std::size_t count, std::uint64_t seed) : random(seed) {
-        obbsat::pose_scene_spec spec;
-        spec.boxes = 2 * count;
-        spec.seed = seed;
-        spec.sizes = obbsat::scene_sizes::uniform;
-        pool = obbsat::make_pose_scene(spec);
-        while (boxes.size() < count) {
-            spawn();
-        }
-    }
-    void spawn() {
-        boxes.push_back(pool[next % pool.size()]);
-        ids.push_back(next++);
-    }
-    void drift() {
-        for (rect_pose& p : boxes) {
-            p.center.x += random.uniform(-0.002f, 0.002f);
-            p.center.y += random.uniform(-0.002f, 0.002f);
-        }
-    }
-    /// A spawn frame: drift, `share` of the rows erased at random places and as many appended.
-    void spawn_frame(double share) {
-        drift();
-        const auto churn = static_cast<std::size_t>(share * static_cast<double>(boxes.size()));
-        for (std::size_t c = 0; c < churn; ++c) {
-            const auto at = static_cast<std::ptrdiff_t>(random.below(boxes.size()));
-            boxes.erase(boxes.begin() + at);
-            ids.erase(ids.begin() + at);
-        }
-        for (std::size_t c = 0; c < churn; ++c) {
-            spawn();
-        }
-    }
-    /// The last row moves into the hole of row `at`: it changes places against the others.
-    void swap_remove(std::size_t at) {
-        boxes[at] = boxes.back();
-        ids[at] = ids.back();
-        boxes.pop_back();
-        ids.pop_back();
-    }
-};
 
 /// What happens before frame f (frames 0 and 1 make the finders keep candidates).
 enum class change { none, spawn, swap_remove_and_spawn };

@@ -99,6 +99,11 @@ struct find_pairs_stats {
     bool reused_candidates = false;  ///< pair_finder: answered from the candidates the last full query kept, without a sweep
     std::size_t kept_candidates = 0;  ///< pair_finder: candidates of the widened bounds kept for the next calls (of rows still there, with ids)
     bool kept_paused = false;    ///< pair_finder: a full query that kept nothing, as keeping is paused after kept candidates served no call
+    /// pair_finder: answered by a plain query (find_pairs' own path) because
+    /// the last kept candidates, with the full query that kept them, cost
+    /// more per call than a plain query; the finder tries keeping again
+    /// after a rest that doubles each time keeping does not pay.
+    bool kept_resting = false;
     double bounds_seconds = 0;   ///< bounds, the strips, and the sort keys
     double order_seconds = 0;    ///< sorting, copying the records into the sorted order, visits; pair_finder with ids: carrying the kept candidates over rows that came, went or moved; 0 for a query on one thread that copies strip by strip as it sweeps (then in sweep_seconds)
     double sweep_seconds = 0;    ///< broadphase sweep and the method's kernels
@@ -254,7 +259,15 @@ struct scene_contacts64;  // obbsat/find_contacts.hpp
 /// bounds pass compares each box's bounds with the last call's widened by
 /// the margin (16 bytes per box; after a failed comparison the next ones
 /// wait up to 16 calls), and keeping resumes after two calls in a row whose
-/// boxes all stayed inside. The answer is always the
+/// boxes all stayed inside. From 65536 rectangles on, the finder also times
+/// its calls: when the kept pairs stop serving, the full query that kept
+/// them and the calls they answered are weighed per call against plain
+/// queries (two timed then, unless keeping clearly paid: at most three
+/// quarters of a plain query), and if keeping cost more the next 32 calls
+/// are plain queries (stats().kept_resting), the next such rest twice as
+/// long (up to 1024 calls), so that a scene where keeping does not pay (rows
+/// swap-removed every call, say) costs about what find_pairs costs. The
+/// answer is always the
 /// same as a fresh find_pairs on the same data, for every method. No
 /// allocation once the buffers have grown. Memory beyond find_pairs': 21
 /// bytes per kept pair (about 4.5 per rectangle in a scene of 2 colliding

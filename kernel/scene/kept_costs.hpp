@@ -34,8 +34,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
-#include <vector>
 
 namespace obbsat::detail {
 
@@ -45,33 +45,27 @@ template <std::size_t Samples>
 class latest_costs {
 public:
     void add(double seconds) {
-        if (costs_.size() < Samples) {
-            costs_.push_back(seconds);
-        } else {
-            costs_[added_ % Samples] = seconds;
-        }
+        costs_[added_ % Samples] = seconds;
         ++added_;
     }
-    void clear() {
-        costs_.clear();
-        added_ = 0;
-    }
-    bool empty() const { return costs_.empty(); }
+    void clear() { added_ = 0; }
+    bool empty() const { return added_ == 0; }
     /// Costs added since the last clear, those no longer held counted.
     std::size_t added() const { return added_; }
-    /// The lower median of the held costs; 0 when none.
+    /// The lower median of the held costs; 0 when none. Allocates nothing.
     double median() const {
-        if (costs_.empty()) {
+        const std::size_t held = std::min(added_, Samples);
+        if (held == 0) {
             return 0;
         }
-        std::vector<double> sorted = costs_;
-        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>((sorted.size() - 1) / 2);
-        std::nth_element(sorted.begin(), middle, sorted.end());
+        std::array<double, Samples> sorted = costs_;
+        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>((held - 1) / 2);
+        std::nth_element(sorted.begin(), middle, sorted.begin() + static_cast<std::ptrdiff_t>(held));
         return *middle;
     }
 
 private:
-    std::vector<double> costs_;
+    std::array<double, Samples> costs_{};
     std::size_t added_ = 0;
 };
 

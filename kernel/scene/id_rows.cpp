@@ -187,17 +187,21 @@ void id_rows::match(const std::uint64_t* ids, std::size_t count, bool follow, co
     out.now_of_last.resize(last_count);
     out.fresh.clear();
     out.gone.clear();
+    out.off_runs.clear();
+    out.runs_in_place = true;
     // Side by side: equal ids are one row; a difference is a removed row when
     // this call's id comes a few rows later in the last call's, an inserted
     // one when the last call's id comes a few rows later in this call's, and
     // otherwise both rows are left over.
-    std::vector<std::uint32_t> left_now, left_last;
+    std::vector<std::uint32_t>& left_now = out.off_runs;
+    std::vector<std::uint32_t> left_last;
     std::size_t r = 0;
     std::size_t l = 0;
     while (r < count && l < last_count) {
         if (ids[r] == last[l]) {
             // A run of rows with the last call's ids, shifted by r - l.
             const std::size_t run = equal_prefix(ids + r, last + l, std::min(count - r, last_count - l));
+            out.runs_in_place &= r == l;
             const auto first = out.now_of_last.begin() + static_cast<std::ptrdiff_t>(l);
             std::iota(first, first + static_cast<std::ptrdiff_t>(run), static_cast<std::uint32_t>(r));
             r += run;
@@ -316,8 +320,16 @@ void id_rows::commit(const std::uint64_t* ids, const row_match& m) {
         }
         insert(ids[fresh[i]]);
     }
-    if (m.last_count == 0 || !m.same_rows) {
+    if (m.last_count == 0 || (!m.same_rows && !m.runs_in_place)) {
         ids_.assign(ids, ids + m.count);
+    } else if (!m.same_rows) {
+        // Rows removed by swapping the last row in, or appended: the other
+        // rows hold their ids already, and a copy of every id (8 bytes a
+        // row, out of the caches by now) is saved.
+        ids_.resize(m.count);
+        for (const std::uint32_t row : m.off_runs) {
+            ids_[row] = ids[row];
+        }
     }
     ready_ = true;
 }

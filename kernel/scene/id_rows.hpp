@@ -35,6 +35,13 @@ struct row_match {
     std::vector<std::uint32_t> fresh;
     /// Rows of the last call whose id is not here now, in increasing order.
     std::vector<std::uint32_t> gone;
+    /// Rows now outside the runs of rows with the last call's ids (new rows,
+    /// and rows matched through the left-over ids), in increasing order.
+    std::vector<std::uint32_t> off_runs;
+    /// Every run of rows with the last call's ids kept its rows (no row
+    /// shifted): only the rows off_runs hold ids other than the last call's
+    /// at the same row, so commit() writes those alone.
+    bool runs_in_place = false;
     std::size_t last_count = 0;  ///< rows of the last call
     std::size_t count = 0;       ///< rows now
     bool same_rows = false;      ///< every row is the last call's row at the same position

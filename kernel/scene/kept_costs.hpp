@@ -15,7 +15,8 @@
 //     median of the latest timed), keeps again.
 //   - Otherwise that call and the next are answered by plain queries,
 //     timed, and the cycle compared with them and the latest (judge): if
-//     the cycle cost clearly more per call (rest_share), the next
+//     the cycle cost clearly more per call (rest_share), or if its carried
+//     calls alone cost nearly a plain query each (carried_share), the next
 //     rest_length calls are plain queries too (resting), and the next rest
 //     after another cycle that does not pay is twice as long, up to
 //     longest_rest; a cycle that pays makes the next rest short again.
@@ -86,6 +87,14 @@ public:
     /// A cycle weighed rests only if it cost more than this many plain
     /// queries per call: where the two cost about the same, it keeps.
     static constexpr double rest_share = 1.03;
+    /// A cycle weighed rests, whatever its full query cost, if its carried
+    /// calls cost more than this many plain queries each (at their median):
+    /// such a cycle saves too little a call to pay back its full query, and
+    /// over a long cycle its cost per call comes within the clock's noise
+    /// of a plain query's, where rest_share alone decided either way from
+    /// run to run (spawn_swap_remove, 100k boxes: carried calls cost about
+    /// a plain query each).
+    static constexpr double carried_share = 0.9;
     /// Plain queries timed to weigh a cycle that did not clearly pay: two,
     /// so that one the machine delayed does not decide alone.
     static constexpr std::size_t judge_calls = 2;
@@ -150,7 +159,8 @@ public:
     bool judging() const { return judging_left_ > 0; }
     /// One of the plain queries that weigh the cycle took `seconds`; after
     /// the last, rest if the cycle cost more per call than rest_share plain
-    /// queries (these with the latest). Returns whether a rest began.
+    /// queries (these with the latest), or its carried calls more than
+    /// carried_share plain queries each. Returns whether a rest began.
     bool judge(double seconds) {
         plain(seconds);
         if (judging_left_ > 1) {
@@ -159,8 +169,10 @@ public:
         }
         judging_left_ = 0;
         const double cost = cycle_cost();
+        const double carried = carried_.median();
         carried_.clear();
-        if (cost > rest_share * plain_cost()) {
+        const double plain = plain_cost();
+        if (cost > rest_share * plain || carried > carried_share * plain) {
             rest_left_ = rest_length_;
             rest_length_ = std::min(2 * rest_length_, longest_rest);
             ++rests_;

@@ -4,8 +4,9 @@
 // all of them), rows appended and inserted, swap-removes, swaps, blocks
 // moved, reversed rows; with ids counted up as boxes are created (each new
 // one larger than every id before, which the match uses) and with ids drawn
-// at random. Duplicate ids are refused in both, whether the duplicate is
-// below or above the largest id held so far.
+// at random; after each call the ids held must be that call's. Duplicate ids
+// are refused in both, whether the duplicate is below or above the largest
+// id held so far.
 #include "scene/id_rows.hpp"
 
 #include <obbsat/error.hpp>
@@ -100,8 +101,11 @@ TEST(id_rows, matches_equal_a_plain_match_over_edits_of_every_kind) {
         const auto edit = [&](const std::string& name, auto change) {
             const std::vector<std::uint64_t> last = list.ids;
             change();
-            expect_match(rows, last, list.ids, std::string(counted_up ? "counted up, " : "random, ") + name, m);
+            const std::string what = std::string(counted_up ? "counted up, " : "random, ") + name;
+            expect_match(rows, last, list.ids, what, m);
             rows.commit(list.ids.data(), m);
+            // The ids held are this call's, whether written whole or only where they changed.
+            EXPECT_EQ(rows.ids(), list.ids) << what;
         };
         edit("no change", [] {});
         edit("the first row removed", [&] { list.erase(0); });
@@ -130,6 +134,15 @@ TEST(id_rows, matches_equal_a_plain_match_over_edits_of_every_kind) {
                 list.ids.pop_back();
             }
         });
+        edit("swap-removes and rows appended", [&] {
+            for (std::size_t c = 0; c < 20; ++c) {
+                const std::size_t at = list.random.below(list.ids.size() - 1);
+                list.ids[at] = list.ids.back();
+                list.ids.pop_back();
+            }
+            list.append(25);
+        });
+        edit("the last rows removed", [&] { list.ids.resize(list.ids.size() - 7); });
         edit("two rows swapped, and the first and last", [&] {
             std::swap(list.ids[10], list.ids[2000]);
             std::swap(list.ids.front(), list.ids.back());

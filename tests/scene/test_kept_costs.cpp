@@ -119,14 +119,33 @@ TEST(kept_costs, a_cycle_weighed_cheaper_than_a_plain_query_keeps_and_shortens_t
 }
 
 TEST(kept_costs, a_cycle_that_costs_about_a_plain_query_keeps_and_one_clearly_dearer_rests) {
-    // Carried calls of c make (2 + 12 c) / 13 per call against plain queries of 1.
-    const auto carried_for = [](double per_call) { return (13 * per_call - 2) / 12; };
-    keep_costs about = one_cycle(2.0, 12, carried_for(1.02));
+    // Carried calls of 0.8, well under a plain query of 1: a full query of f
+    // (at most full_query_cap plain queries, counted whole) makes
+    // (f + 4 * 0.8) / 5 per call.
+    const auto full_for = [](double per_call) { return 5 * per_call - 4 * 0.8; };
+    ASSERT_LE(full_for(1.05), keep_costs::full_query_cap);
+    keep_costs about = one_cycle(full_for(1.02), 4, 0.8);
     ASSERT_FALSE(about.clearly_pays());
     EXPECT_FALSE(weigh(about, 1.0));
-    keep_costs dearer = one_cycle(2.0, 12, carried_for(1.05));
+    keep_costs dearer = one_cycle(full_for(1.05), 4, 0.8);
     ASSERT_FALSE(dearer.clearly_pays());
     EXPECT_TRUE(weigh(dearer, 1.0));
+}
+
+TEST(kept_costs, a_long_cycle_whose_carried_calls_cost_nearly_a_plain_query_rests) {
+    // 60 carried calls of 0.95 after a full query of 2: (2 + 60 * 0.95) / 61,
+    // under a plain query of 1 per call, yet each call saves only 5%.
+    keep_costs near = one_cycle(2.0, 60, 0.95);
+    ASSERT_LT(near.cycle_cost(), 1.0);
+    ASSERT_FALSE(near.clearly_pays());
+    EXPECT_TRUE(weigh(near, 1.0));
+    EXPECT_EQ(near.rest_left(), keep_costs::first_rest);
+    // The same with carried calls clearly cheaper than a plain query keeps.
+    const double cheaper = 0.95 * keep_costs::carried_share;
+    keep_costs clear = one_cycle(2.0, 60, cheaper);
+    ASSERT_FALSE(clear.clearly_pays());
+    EXPECT_FALSE(weigh(clear, 1.0));
+    EXPECT_EQ(clear.rest_left(), 0u);
 }
 
 TEST(kept_costs, rests_double_up_to_the_longest) {

@@ -388,8 +388,8 @@ struct kept_references {
     /// Appends the lanes of `bits` of `p` from kept pair `count`.
     OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_reference_lanes<Arch, Real>& p, std::size_t count) {
         if constexpr (holds) {
-            const batch values[5] = {p.r + xsimd::select(p.flip, batch(Real(4)), batch(Real(0))),
-                                     xsimd::select(p.flip, p.sb, p.sa), xsimd::select(p.flip, p.inv_a, p.inv_b),
+            const batch values[5] = {p.r + pick<Arch, Real>(p.flip, batch(Real(4)), batch(Real(0))),
+                                     pick<Arch, Real>(p.flip, p.sb, p.sa), pick<Arch, Real>(p.flip, p.inv_a, p.inv_b),
                                      p.ux, p.uy};
             for (std::size_t f = 0; f < 5; ++f) {
                 store_compressed<Arch, Real>(bits, values[f], field[f] + count);
@@ -406,7 +406,7 @@ struct kept_references {
             auto load = [&](std::size_t f) { return batch::load_unaligned(field[f] + k); };
             const batch code = load(0), separation = load(1), inv = load(2);
             const auto flip = code >= batch(Real(4));
-            const batch r = code - xsimd::select(flip, batch(Real(4)), batch(Real(0)));
+            const batch r = code - pick<Arch, Real>(flip, batch(Real(4)), batch(Real(0)));
             const pose_reference_lanes<Arch, Real> p{flip, r, separation, separation, inv, inv, load(3), load(4)};
             return contact_pose_lanes_from<Arch, Real>(fa, fb, p, margin);
         } else {

@@ -300,6 +300,34 @@ OBBSAT_LANE_INLINE void for_each_vector_of_pairs(const Real* a, std::size_t a_st
     }
 }
 
+/// Walks the pairs at places[0, count) of a list (or the rows at those
+/// places of a stream) one vector at a time, as for_each_vector_of_pairs
+/// walks a list: body(fa, fb, k, valid) for places k to k + valid, the last,
+/// partial vector repeating its last place. Fetches nothing: the places are
+/// pairs whose records were just read.
+template <class Arch, class Real, std::size_t Fields, class Body>
+OBBSAT_LANE_INLINE void for_each_vector_of_places(const Real* a, std::size_t a_stride, const Real* b,
+                                                  std::size_t b_stride, const pair_index* pairs,
+                                                  const std::uint32_t* places, std::size_t count, const Body& body) {
+    using batch = real_lanes<Arch, Real>;
+    constexpr std::size_t width = batch::size;
+    std::size_t k = 0;
+    for (; k + width <= count; k += width) {
+        batch fa[8], fb[8];
+        load_vector_of_pairs<Arch, Real, Fields>(a, a_stride, b, b_stride, pairs,
+                                                 [&](std::size_t lane) { return places[k + lane]; }, fa, fb);
+        body(fa, fb, k, width);
+    }
+    for (; k < count; k += width) {
+        const std::size_t valid = count - k;
+        batch fa[8], fb[8];
+        load_vector_of_pairs<Arch, Real, Fields>(
+            a, a_stride, b, b_stride, pairs,
+            [&](std::size_t lane) { return places[k + (lane < valid ? lane : valid - 1)]; }, fa, fb);
+        body(fa, fb, k, valid);
+    }
+}
+
 /// out[i] = the contact of box a(i) and box b(i) (see contact_fn, contact64_fn).
 template <class Arch, class Real, std::size_t Fields, bool Corners>
 void contact_batch(const Real* a, std::size_t a_stride, const Real* b, std::size_t b_stride,
@@ -312,28 +340,24 @@ void contact_batch(const Real* a, std::size_t a_stride, const Real* b, std::size
             });
 }
 
-/// Appends pair i + lane and its place i + lane, for every lane set in
-/// `bits` (all below the vector's valid lanes), to near[count) and
-/// near_at[count); returns the new count. Either array may be written up to
-/// 16 entries past it. The pairs are pairs[i + lane], or (i + lane, i + lane)
-/// without a list. AVX-512 and AVX2 compress the lanes in registers
-/// (contact_compress_lanes.hpp), reading only the pairs of set lanes; SSE2,
-/// and a stream, write every valid lane and advance by its bit, without a
-/// branch: a loop over the set bits mispredicted its exit on most vectors.
-template <class Arch, std::size_t Width>
-OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, const pair_index* pairs, std::size_t i,
-                                                 std::size_t valid, pair_index* near, std::uint32_t* near_at,
-                                                 std::size_t count) {
+/// Appends the place i + lane of every lane set in `bits` (all below the
+/// vector's valid lanes) to near_at[count); returns the new count. The array
+/// may be written up to 16 entries past it. The second pass reads each kept
+/// pair through its place (pairs[place], or the rows at place of a stream),
+/// from a list L1 holds: compressing the pairs themselves beside their places
+/// took a quarter of the first pass's bookkeeping. AVX-512 and AVX2 compress
+/// the places in registers (contact_compress_lanes.hpp); SSE2 writes every
+/// valid lane and advances by its bit, without a branch: a loop over the set
+/// bits mispredicted its exit on most vectors.
+template <class Arch>
+OBBSAT_LANE_INLINE std::size_t append_near_lanes(unsigned bits, std::size_t i, std::size_t valid,
+                                                 std::uint32_t* near_at, std::size_t count) {
     if constexpr (compresses_lanes<Arch>()) {
-        if (pairs != nullptr) {
-            store_compressed_places<Arch>(bits, static_cast<std::uint32_t>(i), near_at + count);
-            return count + store_compressed_pairs<Arch, Width>(bits, pairs + i, near + count);
-        }
+        store_compressed_places<Arch>(bits, static_cast<std::uint32_t>(i), near_at + count);
+        return count + static_cast<std::size_t>(__builtin_popcount(bits));
     }
     for (std::size_t lane = 0; lane < valid; ++lane) {
-        const auto at = static_cast<std::uint32_t>(i + lane);
-        near[count] = pairs != nullptr ? pairs[at] : pair_index{at, at};
-        near_at[count] = at;
+        near_at[count] = static_cast<std::uint32_t>(i + lane);
         count += (bits >> lane) & 1u;
     }
     return count;
@@ -364,8 +388,8 @@ struct kept_references {
     /// Appends the lanes of `bits` of `p` from kept pair `count`.
     OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_reference_lanes<Arch, Real>& p, std::size_t count) {
         if constexpr (holds) {
-            const batch values[5] = {p.r + xsimd::select(p.flip, batch(Real(4)), batch(Real(0))),
-                                     xsimd::select(p.flip, p.sb, p.sa), xsimd::select(p.flip, p.inv_a, p.inv_b),
+            const batch values[5] = {p.r + pick<Arch, Real>(p.flip, batch(Real(4)), batch(Real(0))),
+                                     pick<Arch, Real>(p.flip, p.sb, p.sa), pick<Arch, Real>(p.flip, p.inv_a, p.inv_b),
                                      p.ux, p.uy};
             for (std::size_t f = 0; f < 5; ++f) {
                 store_compressed<Arch, Real>(bits, values[f], field[f] + count);
@@ -382,7 +406,7 @@ struct kept_references {
             auto load = [&](std::size_t f) { return batch::load_unaligned(field[f] + k); };
             const batch code = load(0), separation = load(1), inv = load(2);
             const auto flip = code >= batch(Real(4));
-            const batch r = code - xsimd::select(flip, batch(Real(4)), batch(Real(0)));
+            const batch r = code - pick<Arch, Real>(flip, batch(Real(4)), batch(Real(0)));
             const pose_reference_lanes<Arch, Real> p{flip, r, separation, separation, inv, inv, load(3), load(4)};
             return contact_pose_lanes_from<Arch, Real>(fa, fb, p, margin);
         } else {
@@ -423,7 +447,6 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
     constexpr std::size_t written_ahead = 512;
     const std::size_t written_until = count * sizeof(contact_type) > store_bytes_in_l2 ? count : 0;
     // append_near_lanes may write 16 entries past the last.
-    pair_index near[block + 16];
     std::uint32_t near_at[block + 16];
     kept_references<Arch, Real, block> kept;
     for (std::size_t begin = 0; begin < count; begin += block) {
@@ -465,8 +488,7 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
                     }
                 }
                 kept.keep(near_lanes, p, near_count);
-                near_count =
-                    append_near_lanes<Arch, width>(near_lanes, block_pairs, i, valid, near, near_at, near_count);
+                near_count = append_near_lanes<Arch>(near_lanes, i, valid, near_at, near_count);
             };
         for_each_vector_of_pairs<Arch, Real, Fields, Fetch>(
             block_a, a_stride, block_b, b_stride, block_pairs, n, count - begin,
@@ -474,13 +496,13 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
                 fetch_written(i);
                 write_apart(pose_reference_of<Arch, Real>(fa, fb), i, valid);
             });
-        for_each_vector_of_pairs<Arch, Real, Fields, pair_fetch::none>(
-            block_a, a_stride, block_b, b_stride, near, near_count, 0,
-            [&](const batch* fa, const batch* fb, std::size_t i, std::size_t valid) __attribute__((always_inline)) {
-                    store_contacts_to<Arch, Real>(
-                        fields_of<Arch, Real>(kept.contacts_at(fa, fb, i, margin)),
-                        [&](std::size_t lane) { return block_out + near_at[i + lane]; }, valid);
-                });
+        for_each_vector_of_places<Arch, Real, Fields>(
+            block_a, a_stride, block_b, b_stride, block_pairs, near_at, near_count,
+            [&](const batch* fa, const batch* fb, std::size_t k, std::size_t valid) __attribute__((always_inline)) {
+                store_contacts_to<Arch, Real>(fields_of<Arch, Real>(kept.contacts_at(fa, fb, k, margin)),
+                                              [&](std::size_t lane) { return block_out + near_at[k + lane]; },
+                                              valid);
+            });
     }
 }
 

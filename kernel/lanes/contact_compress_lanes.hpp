@@ -1,8 +1,9 @@
 // Compressing the lanes of a mask to the front of a vector and storing it
-// whole, for the contact batch driver's list of the pairs within the margin
-// and what the first pass chose for them (contact_batch.hpp). AVX-512 has
-// compress instructions; AVX2 permutes by the mask's set lanes read from a
-// table; SSE2 has neither (compresses false). A compressed store writes a
+// whole, for the contact batch driver's list of the places of the pairs
+// within the margin and what the first pass chose for them
+// (contact_batch.hpp). AVX-512 has compress instructions; AVX2 permutes by
+// the mask's set lanes read from a table; SSE2 has neither (compresses
+// false). A compressed store writes a
 // whole vector: the lanes past the set ones are zero (AVX-512) or copies of
 // other lanes (AVX2), always written. Private to each per-ISA object
 // (README.md).
@@ -10,7 +11,6 @@
 
 #include "lanes/lanes.hpp"
 
-#include <obbsat/rect.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -106,37 +106,6 @@ OBBSAT_LANE_INLINE void store_compressed_places(unsigned bits, std::uint32_t fir
 #else
     (void)bits, (void)first, (void)out;
 #endif
-}
-
-/// Stores pairs[lane] for each lane set in `bits` (Width lanes), in lane
-/// order, from out[0], reading no other pair (masked loads never fault);
-/// returns how many. Writes up to 8 pairs past the last.
-template <class Arch, std::size_t Width>
-OBBSAT_LANE_INLINE std::size_t store_compressed_pairs(unsigned bits, const pair_index* pairs, pair_index* out) {
-    static_assert(sizeof(pair_index) == 8, "a pair is one 64-bit word");
-    std::size_t count = 0;
-#if defined(__AVX512F__)
-    for (std::size_t eighth = 0; eighth < Width; eighth += 8) {
-        const auto here = static_cast<__mmask8>((bits >> eighth) & 0xffu);
-        const __m512i eight = _mm512_maskz_loadu_epi64(here, pairs + eighth);
-        _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi64(here, eight));
-        count += static_cast<std::size_t>(__builtin_popcount(here));
-    }
-#elif defined(__AVX2__)
-    const __m256i lane_bit = _mm256_setr_epi64x(1, 2, 4, 8);
-    for (std::size_t fourth = 0; fourth < Width; fourth += 4) {
-        const unsigned here = (bits >> fourth) & 0xfu;
-        const __m256i wanted =
-            _mm256_cmpeq_epi64(_mm256_and_si256(_mm256_set1_epi64x(here), lane_bit), lane_bit);
-        const __m256i four = _mm256_maskload_epi64(reinterpret_cast<const long long*>(pairs + fourth), wanted);
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + count),
-                            _mm256_permutevar8x32_epi32(four, permutation_of(set_lanes.of64[here])));
-        count += static_cast<std::size_t>(__builtin_popcount(here));
-    }
-#else
-    (void)bits, (void)pairs, (void)out;
-#endif
-    return count;
 }
 
 }  // namespace

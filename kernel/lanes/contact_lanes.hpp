@@ -28,6 +28,28 @@ using real_lanes = xsimd::batch<Real, Arch>;
 template <class Arch, class Real>
 using real_mask = xsimd::batch_bool<Real, Arch>;
 
+/// xsimd::select(m, t, f): one VBLENDVPS (VBLENDVPD) on AVX2, where GCC 12
+/// rewrites the blend of a mask built by and/or of compares (or carried from
+/// one step to the next) as a compare of the mask's sign bits with zero
+/// first: an extra instruction on a select's path, some 30 a vector of
+/// contacts. A blend of a compare's mask is the same select either way.
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_lanes<Arch, Real> pick(const real_mask<Arch, Real>& m, const real_lanes<Arch, Real>& t,
+                                               const real_lanes<Arch, Real>& f) {
+#if defined(__AVX2__) && !defined(__AVX512F__)
+    if constexpr (std::is_same<Arch, xsimd::avx2>::value) {
+        typename real_lanes<Arch, Real>::register_type out;
+        if constexpr (std::is_same<Real, float>::value) {
+            __asm__("vblendvps %3, %2, %1, %0" : "=x"(out) : "x"(f.data), "xm"(t.data), "x"(m.data));
+        } else {
+            __asm__("vblendvpd %3, %2, %1, %0" : "=x"(out) : "x"(f.data), "xm"(t.data), "x"(m.data));
+        }
+        return out;
+    }
+#endif
+    return xsimd::select(m, t, f);
+}
+
 /// -x, the sign bit flipped as the reference's negation flips it. Not
 /// xsimd's unary minus: for AVX-512, xsimd 8.1 computes it as 0 - x, which
 /// turns -(+0) into +0 where the reference gives -0.
@@ -96,8 +118,8 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> contact_corner_box(const real_l
     for (int k = 0; k < 4; ++k) {
         box.vx[k] = f[2 * k] - origin_x;
         box.vy[k] = f[2 * k + 1] - origin_y;
-        box.nx[k] = xsimd::select(clockwise, negated<Arch, Real>(ey[k]), ey[k]);
-        box.ny[k] = xsimd::select(clockwise, ex[k], negated<Arch, Real>(ex[k]));
+        box.nx[k] = pick<Arch, Real>(clockwise, negated<Arch, Real>(ey[k]), ey[k]);
+        box.ny[k] = pick<Arch, Real>(clockwise, ex[k], negated<Arch, Real>(ex[k]));
         box.inv[k] = batch(Real(1)) / xsimd::sqrt((box.nx[k] * box.nx[k]) + (box.ny[k] * box.ny[k]));
     }
     return box;
@@ -136,15 +158,16 @@ OBBSAT_LANE_INLINE real_lanes<Arch, Real> feature_bits(const real_lanes<Arch, Re
                                                        const real_lanes<Arch, Real>& code_b) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0)), one(Real(1)), four(Real(4));
-    const batch type_a = xsimd::select(code_a >= four, one, zero), index_a = code_a - (four * type_a);
+    const batch type_a = pick<Arch, Real>(code_a >= four, one, zero), index_a = code_a - (four * type_a);
     const auto b_is_face = code_b >= four;
-    const batch index_b = code_b - xsimd::select(b_is_face, four, zero);
+    const batch index_b = code_b - pick<Arch, Real>(b_is_face, four, zero);
     const batch low_bytes = (index_a + (batch(Real(0x1p8)) * type_a)) + (batch(Real(0x1p16)) * index_b);
     if constexpr (std::is_same<Real, float>::value) {
         static_assert(0x1p-125f == 1.17549435e-38f * 2.0f, "2^-125 has the bits 0x01000000");
-        return xsimd::bitwise_or(integer_bits<Arch, Real>(low_bytes), xsimd::select(b_is_face, batch(0x1p-125f), zero));
+        return xsimd::bitwise_or(integer_bits<Arch, Real>(low_bytes),
+                                 pick<Arch, Real>(b_is_face, batch(0x1p-125f), zero));
     } else {
-        return integer_bits<Arch, Real>(low_bytes + xsimd::select(b_is_face, batch(0x1p24), zero));
+        return integer_bits<Arch, Real>(low_bytes + pick<Arch, Real>(b_is_face, batch(0x1p24), zero));
     }
 }
 
@@ -186,15 +209,15 @@ OBBSAT_LANE_INLINE best_face_lanes<Arch, Real> best_face_lanes_of(const contact_
                                                faces.vx[0], faces.vy[0],    faces.vx[next], faces.vy[next]};
         } else {
             const auto better = sep > best.sep;
-            best.sep = xsimd::select(better, sep, best.sep);
-            best.index = xsimd::select(better, batch(static_cast<Real>(k)), best.index);
-            best.nx = xsimd::select(better, faces.nx[k], best.nx);
-            best.ny = xsimd::select(better, faces.ny[k], best.ny);
-            best.inv = xsimd::select(better, faces.inv[k], best.inv);
-            best.x1 = xsimd::select(better, faces.vx[k], best.x1);
-            best.y1 = xsimd::select(better, faces.vy[k], best.y1);
-            best.x2 = xsimd::select(better, faces.vx[next], best.x2);
-            best.y2 = xsimd::select(better, faces.vy[next], best.y2);
+            best.sep = pick<Arch, Real>(better, sep, best.sep);
+            best.index = pick<Arch, Real>(better, batch(static_cast<Real>(k)), best.index);
+            best.nx = pick<Arch, Real>(better, faces.nx[k], best.nx);
+            best.ny = pick<Arch, Real>(better, faces.ny[k], best.ny);
+            best.inv = pick<Arch, Real>(better, faces.inv[k], best.inv);
+            best.x1 = pick<Arch, Real>(better, faces.vx[k], best.x1);
+            best.y1 = pick<Arch, Real>(better, faces.vy[k], best.y1);
+            best.x2 = pick<Arch, Real>(better, faces.vx[next], best.x2);
+            best.y2 = pick<Arch, Real>(better, faces.vy[next], best.y2);
         }
     }
     return best;
@@ -220,11 +243,11 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> either_box(const real_mask<Arch
                                                             const contact_box_lanes<Arch, Real>& b) {
     contact_box_lanes<Arch, Real> out;
     for (int k = 0; k < 4; ++k) {
-        out.vx[k] = xsimd::select(pick_a, a.vx[k], b.vx[k]);
-        out.vy[k] = xsimd::select(pick_a, a.vy[k], b.vy[k]);
-        out.nx[k] = xsimd::select(pick_a, a.nx[k], b.nx[k]);
-        out.ny[k] = xsimd::select(pick_a, a.ny[k], b.ny[k]);
-        out.inv[k] = xsimd::select(pick_a, a.inv[k], b.inv[k]);
+        out.vx[k] = pick<Arch, Real>(pick_a, a.vx[k], b.vx[k]);
+        out.vy[k] = pick<Arch, Real>(pick_a, a.vy[k], b.vy[k]);
+        out.nx[k] = pick<Arch, Real>(pick_a, a.nx[k], b.nx[k]);
+        out.ny[k] = pick<Arch, Real>(pick_a, a.ny[k], b.ny[k]);
+        out.inv[k] = pick<Arch, Real>(pick_a, a.inv[k], b.inv[k]);
     }
     return out;
 }
@@ -250,16 +273,16 @@ OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_
         real_lanes<Arch, Real>(Real(0x1p-10)) * min_pick(span_lanes<Arch, Real>(a), span_lanes<Arch, Real>(b));
     const auto flip = fb.sep > (fa.sep + tol);
     return reference_lanes<Arch, Real>{flip,
-                                       xsimd::select(flip, fb.index, fa.index),
+                                       pick<Arch, Real>(flip, fb.index, fa.index),
                                        fa.sep,
                                        fb.sep,
-                                       xsimd::select(flip, fb.nx, fa.nx),
-                                       xsimd::select(flip, fb.ny, fa.ny),
-                                       xsimd::select(flip, fb.inv, fa.inv),
-                                       xsimd::select(flip, fb.x1, fa.x1),
-                                       xsimd::select(flip, fb.y1, fa.y1),
-                                       xsimd::select(flip, fb.x2, fa.x2),
-                                       xsimd::select(flip, fb.y2, fa.y2)};
+                                       pick<Arch, Real>(flip, fb.nx, fa.nx),
+                                       pick<Arch, Real>(flip, fb.ny, fa.ny),
+                                       pick<Arch, Real>(flip, fb.inv, fa.inv),
+                                       pick<Arch, Real>(flip, fb.x1, fa.x1),
+                                       pick<Arch, Real>(flip, fb.y1, fa.y1),
+                                       pick<Arch, Real>(flip, fb.x2, fa.x2),
+                                       pick<Arch, Real>(flip, fb.y2, fa.y2)};
 }
 
 /// Step 4's normal and depth, with no point (count 0, every point field
@@ -273,9 +296,9 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_without_points(const re
                                                                         const real_lanes<Arch, Real>& sb) {
     const real_lanes<Arch, Real> zero(Real(0));
     contact_out_lanes<Arch, Real> out;
-    out.nx = xsimd::select(flip, negated<Arch, Real>(ux), ux);
-    out.ny = xsimd::select(flip, negated<Arch, Real>(uy), uy);
-    out.depth = zero - xsimd::select(flip, sb, sa);
+    out.nx = pick<Arch, Real>(flip, negated<Arch, Real>(ux), ux);
+    out.ny = pick<Arch, Real>(flip, negated<Arch, Real>(uy), uy);
+    out.depth = zero - pick<Arch, Real>(flip, sb, sa);
     out.count = zero;
     for (int e = 0; e < 2; ++e) {
         out.x[e] = zero;
@@ -309,12 +332,12 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> incident_edge_of_box(const co
             edge = incident_edge_lanes<Arch, Real>{batch(Real(0)), x1, y1, x2, y2};
         } else {
             const auto better = along < most_against;
-            most_against = xsimd::select(better, along, most_against);
-            edge.k = xsimd::select(better, batch(static_cast<Real>(f)), edge.k);
-            edge.p1x = xsimd::select(better, x1, edge.p1x);
-            edge.p1y = xsimd::select(better, y1, edge.p1y);
-            edge.p2x = xsimd::select(better, x2, edge.p2x);
-            edge.p2y = xsimd::select(better, y2, edge.p2y);
+            most_against = pick<Arch, Real>(better, along, most_against);
+            edge.k = pick<Arch, Real>(better, batch(static_cast<Real>(f)), edge.k);
+            edge.p1x = pick<Arch, Real>(better, x1, edge.p1x);
+            edge.p1y = pick<Arch, Real>(better, y1, edge.p1y);
+            edge.p2x = pick<Arch, Real>(better, x2, edge.p2x);
+            edge.p2y = pick<Arch, Real>(better, y2, edge.p2y);
         }
     }
     return edge;
@@ -347,8 +370,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
     const batch g = one / (tau[0] - tau[1]);
     const batch lambda_low = tau[0] * g, lambda_high = (tau[0] - T) * g;
     const batch along_x = p2x - p1x, along_y = p2y - p1y;
-    const batch r_next = xsimd::select((r + one) == four, zero, r + one);
-    const batch k_next = xsimd::select((k + one) == four, zero, k + one);
+    const batch r_next = pick<Arch, Real>((r + one) == four, zero, r + one);
+    const batch k_next = pick<Arch, Real>((k + one) == four, zero, k + one);
     const batch ex[2] = {p1x, p2x}, ey[2] = {p1y, p2y};
     const batch vertex_of_incident[2] = {k, k_next};
 
@@ -357,43 +380,44 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
     for (int e = 0; e < 2; ++e) {
         const auto below = tau[e] < zero;
         const auto moved = below | (tau[e] > T);
-        const batch lambda = xsimd::select(below, lambda_low, lambda_high);
-        px[e] = xsimd::select(moved, p1x + (lambda * along_x), ex[e]);
-        py[e] = xsimd::select(moved, p1y + (lambda * along_y), ey[e]);
+        const batch lambda = pick<Arch, Real>(below, lambda_low, lambda_high);
+        px[e] = pick<Arch, Real>(moved, p1x + (lambda * along_x), ex[e]);
+        py[e] = pick<Arch, Real>(moved, p1y + (lambda * along_y), ey[e]);
         // Step 8: feature codes, index + 4·type, face type 1.
-        const batch ref_code = xsimd::select(moved, xsimd::select(below, r, r_next), r + four);
-        const batch inc_code = xsimd::select(moved, k + four, vertex_of_incident[e]);
+        const batch ref_code = pick<Arch, Real>(moved, pick<Arch, Real>(below, r, r_next), r + four);
+        const batch inc_code = pick<Arch, Real>(moved, k + four, vertex_of_incident[e]);
         feature[e] =
-            feature_bits<Arch, Real>(xsimd::select(flip, inc_code, ref_code), xsimd::select(flip, ref_code, inc_code));
+            feature_bits<Arch, Real>(pick<Arch, Real>(flip, inc_code, ref_code),
+                                     pick<Arch, Real>(flip, ref_code, inc_code));
         sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
     }
     // Step 7: within the margin, or the nearer point of a touching or
     // overlapping pair; a kept separation above the margin reads as it.
-    const auto touching = xsimd::select(flip, ref.sb, ref.sa) <= zero;
+    const auto touching = pick<Arch, Real>(flip, ref.sb, ref.sa) <= zero;
     for (int e = 0; e < 2; ++e) {
         keep[e] = in_reach & ((sep[e] <= margin) | (touching & (sep[e] <= sep[1 - e])));
     }
     for (int e = 0; e < 2; ++e) {
-        sep[e] = xsimd::select(sep[e] <= margin, sep[e], margin);
+        sep[e] = pick<Arch, Real>(sep[e] <= margin, sep[e], margin);
     }
     // The second point only when it is not the first again.
     const auto repeats = keep[0] & (px[1] == px[0]) & (py[1] == py[0]);
-    keep[1] = keep[1] & (xsimd::select(repeats, one, zero) == zero);
+    keep[1] = keep[1] & (pick<Arch, Real>(repeats, one, zero) == zero);
     // Kept points first, unused slots zero.
     const auto second_kept = keep[0] & keep[1];
     for (int e = 0; e < 2; ++e) {
         px[e] = origin_x + px[e];
         py[e] = origin_y + py[e];
     }
-    out.x[0] = xsimd::select(keep[0], px[0], xsimd::select(keep[1], px[1], zero));
-    out.y[0] = xsimd::select(keep[0], py[0], xsimd::select(keep[1], py[1], zero));
-    out.separation[0] = xsimd::select(keep[0], sep[0], xsimd::select(keep[1], sep[1], zero));
-    out.feature[0] = xsimd::select(keep[0], feature[0], xsimd::select(keep[1], feature[1], zero));
-    out.x[1] = xsimd::select(second_kept, px[1], zero);
-    out.y[1] = xsimd::select(second_kept, py[1], zero);
-    out.separation[1] = xsimd::select(second_kept, sep[1], zero);
-    out.feature[1] = xsimd::select(second_kept, feature[1], zero);
-    out.count = integer_bits<Arch, Real>(xsimd::select(keep[0], one, zero) + xsimd::select(keep[1], one, zero));
+    out.x[0] = pick<Arch, Real>(keep[0], px[0], pick<Arch, Real>(keep[1], px[1], zero));
+    out.y[0] = pick<Arch, Real>(keep[0], py[0], pick<Arch, Real>(keep[1], py[1], zero));
+    out.separation[0] = pick<Arch, Real>(keep[0], sep[0], pick<Arch, Real>(keep[1], sep[1], zero));
+    out.feature[0] = pick<Arch, Real>(keep[0], feature[0], pick<Arch, Real>(keep[1], feature[1], zero));
+    out.x[1] = pick<Arch, Real>(second_kept, px[1], zero);
+    out.y[1] = pick<Arch, Real>(second_kept, py[1], zero);
+    out.separation[1] = pick<Arch, Real>(second_kept, sep[1], zero);
+    out.feature[1] = pick<Arch, Real>(second_kept, feature[1], zero);
+    out.count = integer_bits<Arch, Real>(pick<Arch, Real>(keep[0], one, zero) + pick<Arch, Real>(keep[1], one, zero));
     return out;
 }
 
@@ -428,8 +452,8 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> pose_edge_lanes(const real_la
     const batch c = f[4], s = f[5];
     const batch ux = f[2] * c, uy = f[2] * s;
     const batch wx = f[3] * s, wy = f[3] * c;
-    const batch a = xsimd::select((j == batch(Real(0))) | (j == batch(Real(3))), sign, none);
-    const batch b = xsimd::select(j < batch(Real(2)), sign, none);
+    const batch a = pick<Arch, Real>((j == batch(Real(0))) | (j == batch(Real(3))), sign, none);
+    const batch b = pick<Arch, Real>(j < batch(Real(2)), sign, none);
     const batch not_a = xsimd::bitwise_xor(a, sign), not_b = xsimd::bitwise_xor(b, sign);
     auto signed_by = [](const batch& x, const batch& bit) { return xsimd::bitwise_xor(x, bit); };
     incident_edge_lanes<Arch, Real> edge;
@@ -488,7 +512,7 @@ OBBSAT_LANE_INLINE pose_reference_lanes<Arch, Real> pose_reference_of(const real
         sep[k] = (xsimd::abs(axes.offset[k]) - axes.reach[k]) * (k < 2 ? inv_a : inv_b);
     }
     const auto a_on_y = sep[1] > sep[0], b_on_y = sep[3] > sep[2];
-    const batch sa = xsimd::select(a_on_y, sep[1], sep[0]), sb = xsimd::select(b_on_y, sep[3], sep[2]);
+    const batch sa = pick<Arch, Real>(a_on_y, sep[1], sep[0]), sb = pick<Arch, Real>(b_on_y, sep[3], sep[2]);
 
     // Pose step 3.
     const batch size_a = (fa[2] + fa[3]) * len_a, size_b = (fb[2] + fb[3]) * len_b;
@@ -496,20 +520,20 @@ OBBSAT_LANE_INLINE pose_reference_lanes<Arch, Real> pose_reference_of(const real
     const auto flip = sb > (sa + tol);
 
     // The face of the chosen axis that faces the other box.
-    const batch r_a = xsimd::select(a_on_y, xsimd::select(axes.offset[1] >= zero, zero, two),
-                                    xsimd::select(axes.offset[0] >= zero, one, three));
-    const batch r_b = xsimd::select(b_on_y, xsimd::select(axes.offset[3] >= zero, two, zero),
-                                    xsimd::select(axes.offset[2] >= zero, three, one));
-    const batch r = xsimd::select(flip, r_b, r_a);
+    const batch r_a = pick<Arch, Real>(a_on_y, pick<Arch, Real>(axes.offset[1] >= zero, zero, two),
+                                    pick<Arch, Real>(axes.offset[0] >= zero, one, three));
+    const batch r_b = pick<Arch, Real>(b_on_y, pick<Arch, Real>(axes.offset[3] >= zero, two, zero),
+                                    pick<Arch, Real>(axes.offset[2] >= zero, three, one));
+    const batch r = pick<Arch, Real>(flip, r_b, r_a);
     // Step 4's normal: face r's of the reference pose, n = (−s, c), (c, s),
     // (s, −c), (−c, −s) for r = 0 to 3, only signs and places changing.
     const batch sign(Real(-0.0));
-    const batch ref_c = xsimd::select(flip, fb[4], fa[4]), ref_s = xsimd::select(flip, fb[5], fa[5]);
+    const batch ref_c = pick<Arch, Real>(flip, fb[4], fa[4]), ref_s = pick<Arch, Real>(flip, fb[5], fa[5]);
     const auto odd = (r == one) | (r == three);
-    const batch nx = xsimd::bitwise_xor(xsimd::select(odd, ref_c, ref_s),
-                                        xsimd::select((r == zero) | (r == three), sign, zero));
-    const batch ny = xsimd::bitwise_xor(xsimd::select(odd, ref_s, ref_c), xsimd::select(r >= two, sign, zero));
-    const batch inv = xsimd::select(flip, inv_b, inv_a);
+    const batch nx = xsimd::bitwise_xor(pick<Arch, Real>(odd, ref_c, ref_s),
+                                        pick<Arch, Real>((r == zero) | (r == three), sign, zero));
+    const batch ny = xsimd::bitwise_xor(pick<Arch, Real>(odd, ref_s, ref_c), pick<Arch, Real>(r >= two, sign, zero));
+    const batch inv = pick<Arch, Real>(flip, inv_b, inv_a);
     return pose_reference_lanes<Arch, Real>{flip, r, sa, sb, inv_a, inv_b, nx * inv, ny * inv};
 }
 
@@ -541,10 +565,10 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const r
     // signs change, and a zero's sign does not change a strict compare).
     batch inc_fields[6], ref_fields[6];
     for (int f = 0; f < 6; ++f) {
-        ref_fields[f] = xsimd::select(flip, fb[f], fa[f]);
-        inc_fields[f] = xsimd::select(flip, fa[f], fb[f]);
+        ref_fields[f] = pick<Arch, Real>(flip, fb[f], fa[f]);
+        inc_fields[f] = pick<Arch, Real>(flip, fa[f], fb[f]);
     }
-    const batch inc_inv = xsimd::select(flip, inv_a, inv_b);
+    const batch inc_inv = pick<Arch, Real>(flip, inv_a, inv_b);
     const batch inc_c = inc_fields[4], inc_s = inc_fields[5];
     const batch along_0 = ((negated<Arch, Real>(inc_s) * ux) + (inc_c * uy)) * inc_inv;
     const batch along_1 = ((inc_c * ux) + (inc_s * uy)) * inc_inv;
@@ -552,8 +576,8 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const r
     batch k = zero, most_against = along[0];
     for (int f = 1; f < 4; ++f) {
         const auto better = along[f] < most_against;
-        most_against = xsimd::select(better, along[f], most_against);
-        k = xsimd::select(better, batch(static_cast<Real>(f)), k);
+        most_against = pick<Arch, Real>(better, along[f], most_against);
+        k = pick<Arch, Real>(better, batch(static_cast<Real>(f)), k);
     }
     const incident_edge_lanes<Arch, Real> edge = pose_edge_lanes<Arch, Real>(inc_fields, origin_x, origin_y, k);
     const incident_edge_lanes<Arch, Real> face = pose_edge_lanes<Arch, Real>(ref_fields, origin_x, origin_y, r);

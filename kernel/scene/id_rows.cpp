@@ -189,6 +189,7 @@ void id_rows::match(const std::uint64_t* ids, std::size_t count, bool follow, co
     out.gone.clear();
     out.off_runs.clear();
     out.runs_in_place = true;
+    out.in_order = true;
     // Side by side: equal ids are one row; a difference is a removed row when
     // this call's id comes a few rows later in the last call's, an inserted
     // one when the last call's id comes a few rows later in this call's, and
@@ -273,6 +274,7 @@ void id_rows::match(const std::uint64_t* ids, std::size_t count, bool follow, co
                 refuse_duplicate(label, now, row, id);
             }
             now = row;
+            out.in_order = false;  // a moved row: its place against the others is not known
         } else if (last_count != 0 && contains(id)) {
             refuse_duplicate(label, other_row_with(ids, count, row, id), row, id);
         } else {

@@ -45,6 +45,9 @@ struct row_match {
     std::size_t last_count = 0;  ///< rows of the last call
     std::size_t count = 0;       ///< rows now
     bool same_rows = false;      ///< every row is the last call's row at the same position
+    /// No left-over row was matched (rows only removed, inserted or appended,
+    /// or taken as new): now_of_last increases past its no_row entries.
+    bool in_order = true;
 
     bool unchanged() const { return same_rows; }
 };

@@ -91,14 +91,21 @@ struct carry_count {
 /// (at most at out[out_last]) and counted if it collides: no branch on the
 /// verdicts. The tags of pairs of gone rows are written to gone[0, gone_count), to be
 /// marked dropped once the units have ended (an atomic mark here, shared
-/// between units, stalled the loop at each).
+/// between units, stalled the loop at each). `any_moved`: in.moved is set.
+/// A kept pair takes one branch that is rarely taken for its fate (gap,
+/// gone, moved) and one for the merge (the next moved pair's key is held
+/// apart): the loop runs on instructions, not on memory, so each one counts.
+template <bool any_moved>
 carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t end, const tagged_pair* side,
                         const tagged_pair* side_end, tagged_pair* into, pair_index* out, std::size_t out_last,
                         std::uint32_t* gone) {
     // Plain locals: the stores below may alias anything the loop reads.
-    const carry_input local = in;
-    const tagged_pair* const kept = local.kept;
-    const std::uint64_t* const verdicts = local.verdicts;
+    const tagged_pair* const kept = in.kept;
+    const std::uint32_t* const now_of = in.now_of;
+    const std::uint8_t* const moved = in.moved;
+    const std::uint64_t* const verdicts = in.verdicts;
+    const std::uint32_t b_last = in.b_last;
+    const std::uint32_t b_now = in.b_now;
     std::size_t written = 0;
     std::size_t found = 0;
     std::size_t gone_count = 0;
@@ -107,31 +114,41 @@ carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t en
         out[std::min(found, out_last)] = pair_index{p.a, p.b};
         found += static_cast<std::size_t>((verdicts[p.tag / 64] >> (p.tag % 64)) & 1u);
     };
+    constexpr std::uint64_t no_key = std::numeric_limits<std::uint64_t>::max();
+    std::uint64_t next_side = side != side_end ? order_key(*side) : no_key;
     constexpr std::size_t ahead = 32;
     for (std::size_t j = begin; j < end; ++j) {
         if (j + ahead < end && !kept_pairs::is_gap(kept[j + ahead])) {
             // The second rows and the verdicts are in no order: fetched ahead, they arrive in parallel.
-            __builtin_prefetch(local.now_of + kept[j + ahead].b + local.b_last);
+            __builtin_prefetch(now_of + kept[j + ahead].b + b_last);
             __builtin_prefetch(verdicts + kept[j + ahead].tag / 64);
         }
-        const tagged_pair& p = kept[j];
-        tagged_pair mapped{};
-        switch (fate_of(local, p, mapped)) {
-            case kept_fate::gone:
+        const tagged_pair p = kept[j];
+        if (__builtin_expect(kept_pairs::is_gap(p), 0)) {
+            continue;
+        }
+        const std::uint32_t a = now_of[p.a];
+        const std::uint32_t b = now_of[p.b + b_last];
+        const bool lost = (a == no_row) | (b == no_row);
+        bool set_aside = lost;
+        if (any_moved) {
+            set_aside |= (moved[p.a] | moved[p.b + b_last]) != 0;
+        }
+        if (__builtin_expect(set_aside, 0)) {
+            if (lost) {
                 // A gone row's pair: dropped for good, and never answers again.
                 gone[gone_count++] = p.tag;
-                continue;
-            case kept_fate::gap:
-            case kept_fate::moved:
-                continue;
-            case kept_fate::kept:
-                break;
-        }
-        if (side != side_end) {
-            const std::uint64_t key = order_key(mapped);
-            while (side != side_end && order_key(*side) < key) {
-                take(*side++);
             }
+            continue;  // a moved row's pair is among the moved pairs
+        }
+        const tagged_pair mapped{a, b - b_now, p.tag};
+        const std::uint64_t key = order_key(mapped);
+        if (__builtin_expect(key > next_side, 0)) {
+            // Kept and moved pairs never share a key.
+            do {
+                take(*side++);
+            } while (side != side_end && order_key(*side) < key);
+            next_side = side != side_end ? order_key(*side) : no_key;
         }
         take(mapped);
     }
@@ -139,6 +156,14 @@ carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t en
         take(*side++);
     }
     return carry_count{written, found, gone_count};
+}
+
+/// carry_range for `in`, moved rows or none.
+carry_count carry_range(const carry_input& in, std::size_t begin, std::size_t end, const tagged_pair* side,
+                        const tagged_pair* side_end, tagged_pair* into, pair_index* out, std::size_t out_last,
+                        std::uint32_t* gone) {
+    return in.moved != nullptr ? carry_range<true>(in, begin, end, side, side_end, into, out, out_last, gone)
+                               : carry_range<false>(in, begin, end, side, side_end, into, out, out_last, gone);
 }
 
 }  // namespace

@@ -249,8 +249,11 @@ bool pair_search::absorb_changes(const query_input& input) {
     }
     // The policy: a change of more than an eighth of the rows, or empty and
     // added slots passing a quarter of the slots, is a full query's job.
+    // Rows matched in order (the side-by-side walk of id_rows) need no look
+    // for rows out of order: a pass over every row that finds none.
+    const bool in_order = ma.in_order && (self_ || match_b_.in_order);
     const std::size_t moved_rows =
-        mark_out_of_order(now_of_last_.data(), now_of_last_.size(), true, no_row, kept_.row_moved);
+        in_order ? 0 : mark_out_of_order(now_of_last_.data(), now_of_last_.size(), true, no_row, kept_.row_moved);
     const std::size_t change = moved_rows + fresh.size() + gone_count;
     const std::size_t slots_before = kept_.by_id ? kept_.slots : slots_;
     const std::size_t added_before = kept_.by_id ? kept_.slots - kept_.full_slots : 0;

@@ -52,6 +52,8 @@ enum class kept_fate { gap, gone, moved, kept };
 
 /// What becomes of kept pair p: a gap entry, a pair of a gone row, one of a
 /// moved row (in moved_pairs), or a pair kept in place, then `mapped` to this call's rows.
+/// carry_range decides the same, written out with one branch for every fate
+/// but the kept one (its loop runs on instructions, so each branch counts).
 kept_fate fate_of(const carry_input& in, const tagged_pair& p, tagged_pair& mapped) {
     if (kept_pairs::is_gap(p)) {
         return kept_fate::gap;

@@ -2,7 +2,7 @@
 // the backend, the xsimd architecture its kernels are instantiated for (and
 // so its lane width), and the check that this CPU and its OS can run it. The
 // dispatcher's registry (backend.cpp), the per-ISA kernel tables
-// (backend_isa.cpp, compiled once per SIMD row by cmake/obbsat_isa.cmake) and
+// (lanes/backend_isa/, compiled once per SIMD row by cmake/obbsat_isa.cmake) and
 // the kernel-table declarations are derived from this list.
 //
 // Nothing here is SIMD code: the rows are constants and CPU checks, compiled

@@ -61,8 +61,8 @@ struct contact_kernel_table {
 };
 
 /// The contact table of one backend of backend_catalogue.hpp: defined by
-/// scalar_contact_kernels.cpp for the scalar path and by backend_isa.cpp once
-/// per SIMD instruction set.
+/// scalar_contact_kernels.cpp for the scalar path and by
+/// lanes/backend_isa/contact_kernels.cpp once per SIMD instruction set.
 template <class Backend>
 const contact_kernel_table& contact_kernels_of();
 

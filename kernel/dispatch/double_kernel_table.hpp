@@ -1,7 +1,7 @@
 // The kernel tables of the double stores: the entry points one SIMD backend
 // offers for pair lists over pose_records64 (one double pose per lane) and
 // over rect_records64 (one double-corner rectangle per lane), defined by
-// kernel/lanes/backend_isa.cpp compiled once per SIMD backend, and found at
+// kernel/lanes/backend_isa/double_kernels.cpp compiled once per SIMD backend, and found at
 // the baseline by double_kernels_for and corner64_kernels_for. Internal to
 // the library.
 #pragma once
@@ -58,7 +58,7 @@ struct double_kernel_table {
 };
 
 /// The table of Backend (a SIMD row of dispatch/backend_catalogue.hpp), defined in
-/// its per-ISA object (lanes/backend_isa.cpp).
+/// its per-ISA object (lanes/backend_isa/double_kernels.cpp).
 template <class Backend>
 const double_kernel_table& double_kernels_of();
 
@@ -109,7 +109,7 @@ struct corner64_kernel_table {
 };
 
 /// The double-corner table of Backend (a SIMD row of dispatch/backend_catalogue.hpp),
-/// defined in its per-ISA object (lanes/backend_isa.cpp).
+/// defined in its per-ISA object (lanes/backend_isa/double_kernels.cpp).
 template <class Backend>
 const corner64_kernel_table& corner64_kernels_of();
 

@@ -115,7 +115,7 @@ struct kernel_table {
 };
 
 /// The table of one backend of backend_catalogue.hpp: defined by
-/// scalar_kernels.cpp for the scalar path and by backend_isa.cpp, once per
+/// scalar_kernels.cpp for the scalar path and by lanes/backend_isa/verdict_kernels.cpp, once per
 /// SIMD instruction set, for the others. Both fill every entry by its name,
 /// each method's row at row_of(its id), and check the result with
 /// follows_catalogue.

@@ -2,7 +2,7 @@
 // spells it, the guarantee it gives, whether its lanes can leave a pair to an
 // exact slow path, and for each store it runs on its scalar reference and its
 // lane template. Everything indexed by method is derived from this list: the
-// kernel table of every backend (backend_isa.cpp), the scalar path
+// kernel table of every backend (lanes/backend_isa/verdict_kernels.cpp), the scalar path
 // (scalar_kernels.cpp), the names and references of obbsat/method.hpp
 // (method.cpp). The static_asserts at the end tie row k to obbsat::method k.
 //

@@ -1,5 +1,5 @@
 #!/bin/sh
-# isa_boundary.sh NM CXXFILT ISA_OBJECTS BASELINE_OBJECTS
+# isa_boundary.sh NM CXXFILT BASELINE_OBJECTS ISA_OBJECTS...
 #
 # The per-ISA kernel objects are compiled with instruction-set flags the CPU
 # may lack; everything else is compiled at the baseline ISA and runs before
@@ -8,17 +8,25 @@
 # nm types W, V, u) is kept once by the linker, from whichever object it meets
 # first. So a per-ISA object must define no such symbol that another object of
 # the library also defines: neither a baseline object (which would then run an
-# AVX-512 copy on any CPU) nor another per-ISA object (SSE2 code calling an
-# AVX-512 copy). Symbols named after the xsimd architecture differ per ISA and
-# never match. Fails naming every shared symbol, demangled.
+# AVX-512 copy on any CPU) nor an object of another ISA (SSE2 code calling an
+# AVX-512 copy). The objects of one ISA are compiled with the same flags, so
+# what they share is the same code. Symbols named after the xsimd
+# architecture differ per ISA and never match. Fails naming every shared
+# symbol, demangled.
 #
-# ISA_OBJECTS and BASELINE_OBJECTS are files listing object files, one a line.
+# BASELINE_OBJECTS and each ISA_OBJECTS are files listing object files, one a
+# line; each ISA_OBJECTS file lists the objects of one ISA and is named after
+# it (avx2.txt).
 set -eu
 
 nm_tool=$1
 cxxfilt=$2
-isa_list=$3
-baseline_list=$4
+baseline_list=$3
+shift 3
+if [ "$#" -eq 0 ]; then
+    echo "no lists of per-ISA objects given" >&2
+    exit 2
+fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -49,7 +57,8 @@ vague_in() {
 }
 
 # $<TARGET_OBJECTS:obbsat> lists the per-ISA objects the library takes in too.
-grep -Fxv -f "$isa_list" "$baseline_list" >"$work/baseline_list" || true
+cat "$@" | grep -v '^$' >"$work/isa_all" || true
+grep -Fxv -f "$work/isa_all" "$baseline_list" >"$work/baseline_list" || true
 defined_in "$work/baseline_list" >"$work/baseline"
 if [ ! -s "$work/baseline" ]; then
     echo "no symbols in the baseline objects listed in $baseline_list" >&2
@@ -58,38 +67,43 @@ fi
 
 status=0
 isa_count=0
-while IFS= read -r object; do
-    [ -n "$object" ] || continue
-    isa_count=$((isa_count + 1))
-    label=$(basename "$(dirname "$(dirname "$object")")" .dir)
-    if [ -z "$("$nm_tool" --defined-only -P "$object" | head -n 1)" ]; then
-        echo "$label: no symbols defined in $object" >&2
-        exit 2
-    fi
-    vague_in "$object" >"$work/isa"
-    # Every other per-ISA object's definitions.
-    grep -Fxv "$object" "$isa_list" | grep -v '^$' >"$work/others_list" || true
+for isa_list in "$@"; do
+    isa=$(basename "$isa_list" .txt)
+    # What the objects of every other ISA define.
+    for other in "$@"; do
+        [ "$other" = "$isa_list" ] || cat "$other"
+    done | grep -v '^$' >"$work/others_list" || true
     defined_in "$work/others_list" >"$work/others"
-    comm -12 "$work/isa" "$work/baseline" >"$work/with_baseline"
-    comm -12 "$work/isa" "$work/others" >"$work/with_others"
-    if [ -s "$work/with_baseline" ] || [ -s "$work/with_others" ]; then
-        status=1
-        echo "$label ($object) defines, with vague linkage, symbols other objects define too:"
-        if [ -s "$work/with_baseline" ]; then
-            echo "  also defined by baseline objects:"
-            demangle <"$work/with_baseline" | sed 's/^/    /'
+    while IFS= read -r object; do
+        [ -n "$object" ] || continue
+        isa_count=$((isa_count + 1))
+        label="$isa $(basename "$object" .o)"
+        if [ -z "$("$nm_tool" --defined-only -P "$object" | head -n 1)" ]; then
+            echo "$label: no symbols defined in $object" >&2
+            exit 2
         fi
-        if [ -s "$work/with_others" ]; then
-            echo "  also defined by other per-ISA objects:"
-            demangle <"$work/with_others" | sed 's/^/    /'
+        vague_in "$object" >"$work/isa"
+        comm -12 "$work/isa" "$work/baseline" >"$work/with_baseline"
+        comm -12 "$work/isa" "$work/others" >"$work/with_others"
+        if [ -s "$work/with_baseline" ] || [ -s "$work/with_others" ]; then
+            status=1
+            echo "$label ($object) defines, with vague linkage, symbols other objects define too:"
+            if [ -s "$work/with_baseline" ]; then
+                echo "  also defined by baseline objects:"
+                demangle <"$work/with_baseline" | sed 's/^/    /'
+            fi
+            if [ -s "$work/with_others" ]; then
+                echo "  also defined by the objects of another ISA:"
+                demangle <"$work/with_others" | sed 's/^/    /'
+            fi
+        else
+            echo "$label: $(wc -l <"$work/isa") symbols of vague linkage, none defined elsewhere"
         fi
-    else
-        echo "$label: $(wc -l <"$work/isa") symbols of vague linkage, none defined elsewhere"
-    fi
-done <"$isa_list"
+    done <"$isa_list"
+done
 
 if [ "$isa_count" -eq 0 ]; then
-    echo "no per-ISA objects listed in $isa_list" >&2
+    echo "no per-ISA objects listed in $*" >&2
     exit 2
 fi
 if [ "$status" -ne 0 ]; then

@@ -1,43 +1,25 @@
-// The batch kernels of one instruction set. This file is compiled once per
-// SIMD row of backend_catalogue.hpp (see cmake/obbsat_isa.cmake) with
-// OBBSAT_ISA_NAME set to the backend's name and with that ISA's compiler
-// flags; it defines kernels_of<that backend>(), one row per method of
-// method_catalogue.hpp, and double_kernels_of<that backend>() and
-// corner64_kernels_of<that backend>() for the double poses and corners
-// (dispatch/double_kernel_table.hpp). Everything else here is private to this object
-// (README.md).
-#include "dispatch/backend_catalogue.hpp"
-#include "dispatch/double_kernel_table.hpp"
+// The verdict kernels of one instruction set (this_isa.hpp): kernels_of<that
+// backend>(), one row per method of method_catalogue.hpp on corners and on
+// poses, and the scene queries' helpers (bounds, strip sweep, pose corners).
 #include "dispatch/kernel_table.hpp"
+#include "lanes/backend_isa/this_isa.hpp"
 #include "lanes/batch_kernel.hpp"
 #include "lanes/bounds_lanes.hpp"
 #include "lanes/certified_lanes.hpp"
 #include "lanes/conservative_lanes.hpp"
-#include "lanes/contact_batch.hpp"
-#include "lanes/corner64_lanes.hpp"
 #include "lanes/fused_multiply_add.hpp"
 #include "lanes/largest_index_lanes.hpp"
 #include "lanes/pose_batch.hpp"
 #include "lanes/pose_corner_lanes.hpp"
 #include "lanes/pose_lanes.hpp"
-#include "lanes/pose64_batch.hpp"
 #include "lanes/sat4_centered_lanes.hpp"
 #include "lanes/sat4_double_lanes.hpp"
 #include "lanes/sat4_lanes.hpp"
 #include "lanes/strip_sweep_lanes.hpp"
 
-#ifndef OBBSAT_ISA_NAME
-#error "OBBSAT_ISA_NAME must name the backend of this translation unit"
-#endif
-
-#define OBBSAT_CONCAT_INNER(a, b) a##b
-#define OBBSAT_CONCAT(a, b) OBBSAT_CONCAT_INNER(a, b)
+#include <cstring>
 
 namespace obbsat::detail {
-
-using this_backend = OBBSAT_CONCAT(OBBSAT_ISA_NAME, _backend);
-using isa_arch = this_backend::arch;
-static_assert(lanes<isa_arch>::size == this_backend::lanes, "the catalogue's lane width is the arch's");
 
 namespace {
 
@@ -93,22 +75,6 @@ constexpr pose_method_kernels pose_kernels_of_row() {
     return k;
 }
 
-/// The entry points of one method on double poses but its plain pair list, instantiated for this ISA.
-template <template <class> class Method>
-constexpr pose64_method_kernels pose64_kernels_of() {
-    return pose64_method_kernels{record_indexed_batch<isa_arch, Method, pose64_records_of, pair_fetch::into_l1>,
-                                 record_indexed_batch<isa_arch, Method, pose64_records_of, pair_fetch::into_l2>,
-                                 record_stream_batch<isa_arch, Method, pose64_records_of>,
-                                 pose64_stream_soa_batch<isa_arch, Method>};
-}
-
-/// The pair lists of one method on double corners that fetch ahead, instantiated for this ISA.
-template <template <class> class Method>
-constexpr corner64_method_kernels corner64_kernels_of_method() {
-    return corner64_method_kernels{record_indexed_batch<isa_arch, Method, corner64_records_of, pair_fetch::into_l1>,
-                                   record_indexed_batch<isa_arch, Method, corner64_records_of, pair_fetch::into_l2>};
-}
-
 template <class... Rows>
 constexpr kernel_table table_of(type_list<Rows...>) {
     kernel_table t{};
@@ -130,35 +96,6 @@ const kernel_table& kernels_of<this_backend>() {
     static_assert(!__builtin_constant_p(follows_catalogue(table, method_catalogue{})) ||
                       follows_catalogue(table, method_catalogue{}),
                   "the table holds the catalogue's rows");
-    return table;
-}
-
-// The double-pose lanes live in this object too: a second object per ISA would
-// instantiate the same xsimd templates for the same architecture (README.md).
-template <>
-const double_kernel_table& double_kernels_of<this_backend>() {
-    static constexpr double_kernel_table table{
-        record_indexed_batch<isa_arch, pose_exact64_lanes, pose64_records_of, pair_fetch::none>,
-        record_indexed_batch<isa_arch, pose_conservative64_lanes, pose64_records_of, pair_fetch::none>,
-        record_indexed_batch<isa_arch, local64_lanes, pose64_records_of, pair_fetch::none>,
-        pose64_kernels_of<pose_exact64_lanes>(), pose64_kernels_of<pose_conservative64_lanes>(),
-        pose64_kernels_of<local64_lanes>()};
-    return table;
-}
-
-// So do the double-corner lanes, for the same reason.
-template <>
-const corner64_kernel_table& corner64_kernels_of<this_backend>() {
-    static constexpr corner64_kernel_table table{
-        record_indexed_batch<isa_arch, corner_exact64_lanes, corner64_records_of, pair_fetch::none>,
-        record_indexed_batch<isa_arch, corner_conservative64_lanes, corner64_records_of, pair_fetch::none>,
-        corner64_kernels_of_method<corner_exact64_lanes>(), corner64_kernels_of_method<corner_conservative64_lanes>()};
-    return table;
-}
-
-template <>
-const contact_kernel_table& contact_kernels_of<this_backend>() {
-    static constexpr contact_kernel_table table = contact_table_of<isa_arch>();
     return table;
 }
 

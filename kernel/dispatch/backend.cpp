@@ -2,6 +2,7 @@
 // scalar path, and the choice among them. Compiled at the baseline ISA.
 #include "dispatch/backend_catalogue.hpp"
 #include "dispatch/backend_registry.hpp"
+#include "dispatch/compiled_kernels.hpp"
 #include "dispatch/cpu_features.hpp"
 
 #include <obbsat/backend.hpp>
@@ -23,11 +24,11 @@ struct backend_entry {
     const detail::kernel_table& (*table)();
 };
 
-// Without x86 kernels only the scalar row is compiled; the SIMD rows stay in
-// the registry (their names parse) but never resolve.
+// A SIMD row whose kernels this build left out (compiled_kernels.hpp) stays in
+// the registry (its name parses) but never resolves.
 template <class Row>
 constexpr backend_entry entry_of(Row) {
-    if constexpr (Row::simd && !OBBSAT_WITH_X86_KERNELS) {
+    if constexpr (!detail::kernels_compiled<Row>()) {
         return backend_entry{Row::id, Row::name, Row::lanes, false, [] { return false; }, nullptr};
     } else {
         return backend_entry{Row::id, Row::name, Row::lanes, true, Row::runs_here, detail::kernels_of<Row>};

@@ -1,4 +1,5 @@
 #include "dispatch/backend_catalogue.hpp"
+#include "dispatch/compiled_kernels.hpp"
 #include "dispatch/double_kernel_table.hpp"
 
 #include <obbsat/oracle/contact64.hpp>
@@ -8,6 +9,7 @@
 #include <obbsat/ref/local64.hpp>
 #include <obbsat/ref/pose_conservative64.hpp>
 
+#include <initializer_list>
 #include <utility>
 
 namespace obbsat::detail {
@@ -86,22 +88,31 @@ std::size_t scalar_rect64_indexed(method m, const double* records, const pair_in
 
 namespace {
 
+/// The table `of(Backend{})` gives for `Backend` if it is the SIMD backend
+/// `resolved` and its kernels are compiled (compiled_kernels.hpp), else nullptr.
+template <class Table, class Backend, class Of>
+const Table* table_of_row(backend resolved, const Of& of) {
+    if constexpr (Backend::simd && kernels_compiled<Backend>()) {
+        return resolved == Backend::id ? &of(Backend{}) : nullptr;
+    } else {
+        (void)resolved;
+        (void)of;
+        return nullptr;
+    }
+}
+
 /// The table `of(Backend{})` gives for the SIMD backend `resolved`, or nullptr
-/// for the scalar backend and for a build without the x86 kernels.
+/// for the scalar backend and for a backend whose kernels this build left out.
 template <class Table, class Of>
 const Table* table_for(backend resolved, const Of& of) {
-#if OBBSAT_WITH_X86_KERNELS
-    switch (resolved) {
-        case backend::avx512: return &of(avx512_backend{});
-        case backend::avx2: return &of(avx2_backend{});
-        case backend::sse2: return &of(sse2_backend{});
-        default: return nullptr;
+    for (const Table* found : {table_of_row<Table, avx512_backend>(resolved, of),
+                               table_of_row<Table, avx2_backend>(resolved, of),
+                               table_of_row<Table, sse2_backend>(resolved, of)}) {
+        if (found != nullptr) {
+            return found;
+        }
     }
-#else
-    (void)resolved;
-    (void)of;
     return nullptr;
-#endif
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The scalar contact and distance kernels (the references one pair at a time) and the
 // choice of a backend's contact table. Compiled at the baseline ISA.
 #include "dispatch/backend_catalogue.hpp"
+#include "dispatch/compiled_kernels.hpp"
 #include "dispatch/contact_kernel_table.hpp"
 
 #include <obbsat/ref/contact.hpp>
@@ -54,7 +55,7 @@ const contact_kernel_table& table_for(backend resolved, type_list<Rows...>) {
     const contact_kernel_table* found = nullptr;
     auto consider = [&](auto row) {
         using Row = decltype(row);
-        if constexpr (!Row::simd || OBBSAT_WITH_X86_KERNELS) {
+        if constexpr (kernels_compiled<Row>()) {
             if (found == nullptr && Row::id == resolved) {
                 found = &contact_kernels_of<Row>();
             }

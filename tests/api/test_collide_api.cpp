@@ -385,6 +385,36 @@ TEST(collide_api, backend_table_is_ordered_best_first_ending_at_scalar) {
     EXPECT_EQ(obbsat::best_supported_backend(), runnable.front());
 }
 
+TEST(collide_api, the_registry_compiles_exactly_the_backends_the_build_asked_for) {
+    // OBBSAT_ISA_KERNELS, as tests/api/CMakeLists.txt passes it: "sse2,avx2,avx512" by default.
+    const std::string requested = std::string(",") + OBBSAT_TEST_ISA_KERNELS + ",";
+    std::vector<backend> expected;
+    for (const backend b : {backend::avx512, backend::avx2, backend::sse2}) {
+        if (requested.find(std::string(",") + obbsat::backend_name(b) + ",") != std::string::npos) {
+            expected.push_back(b);
+        }
+    }
+    expected.push_back(backend::scalar);
+    EXPECT_EQ(obbsat::compiled_backends(), expected);
+    for (const backend b : {backend::avx512, backend::avx2, backend::sse2}) {
+        if (std::find(expected.begin(), expected.end(), b) != expected.end()) {
+            continue;
+        }
+        // A backend left out of the build: its name parses, it never runs, and
+        // asking for it says so.
+        EXPECT_EQ(obbsat::parse_backend(obbsat::backend_name(b)), b);
+        EXPECT_FALSE(obbsat::cpu_supports(b)) << obbsat::backend_name(b);
+        const std::vector<backend> runnable = obbsat::runnable_backends();
+        EXPECT_EQ(std::find(runnable.begin(), runnable.end(), b), runnable.end()) << obbsat::backend_name(b);
+        try {
+            (void)obbsat::resolve_backend(b);
+            ADD_FAILURE() << obbsat::backend_name(b) << " resolved although it is not compiled";
+        } catch (const obbsat::unsupported_backend& e) {
+            EXPECT_NE(std::string(e.what()).find("is not compiled into this build"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(collide_api, automatic_resolves_to_the_best_backend_when_not_forced) {
     const char* forced = std::getenv("OBBSAT_BACKEND");
     if (forced != nullptr && *forced != '\0') {

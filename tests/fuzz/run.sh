@@ -6,7 +6,9 @@
 #   bash tests/fuzz/run.sh fuzz_csv 30
 # Inputs found are kept in build-fuzz/corpus/TARGET (the seeds stay in
 # tests/fuzz/corpus/TARGET, untouched); a failing input is written to
-# build-fuzz/artifacts/ and the exit status is non-zero.
+# build-fuzz/artifacts/ and the exit status is non-zero. OBBSAT_ISA_KERNELS,
+# when set, is the list of x86 kernels the first configure compiles
+# (kernel/CMakeLists.txt; .ci/run passes the ones this CPU runs).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -38,7 +40,9 @@ fi
 
 build=build-fuzz
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake --preset fuzz >/dev/null
+  isa_args=()
+  [ -z "${OBBSAT_ISA_KERNELS:-}" ] || isa_args=("-DOBBSAT_ISA_KERNELS=$OBBSAT_ISA_KERNELS")
+  cmake --preset fuzz "${isa_args[@]}" >/dev/null
 fi
 cmake --build --preset fuzz >/dev/null
 

@@ -167,6 +167,20 @@ std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options
     return spare_pairs(spare, spare.get().bound_doubles(input_of(a, &b)));
 }
 
+void find_pairs(box_view boxes, const collide_options& options, std::vector<pair_index>& out) {
+    const detail::executor_scope scope(options.executor);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
+    search.collect_into(search.bound_doubles(input_of(boxes, nullptr)), out);
+}
+
+void find_pairs(box_view a, box_view b, const collide_options& options, std::vector<pair_index>& out) {
+    const detail::executor_scope scope(options.executor);
+    detail::spare_search spare(options);
+    detail::pair_search& search = spare.get();
+    search.collect_into(search.bound_doubles(input_of(a, &b)), out);
+}
+
 void find_pairs_each(box_view boxes, const collide_options& options, const pair_chunk_sink& sink) {
     const detail::executor_scope scope(options.executor);
     detail::spare_search spare(options);

@@ -66,7 +66,7 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
             ::new (static_cast<void*>(words + w)) std::uint64_t;  // no code: words begin to live here
         }
         radix_sort_indices(keys_.data(), order_.data(), n_, grid_.key_bits(), words, words + n_, parts,
-                           keys_from_corners);
+                           keys_from_corners, &sort_buckets_);
     } else if (!stats_.reused_order) {
         const radix_fill keys_from_rows = [&](std::size_t begin, std::size_t end) {
             bounds_run b;
@@ -79,7 +79,8 @@ void pair_search::order_boxes(const query_input& input, std::size_t parts) {
                 }
             }
         };
-        radix_sort_indices(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts, keys_from_rows);
+        radix_sort_indices(keys_.data(), order_.data(), n_, grid_.key_bits(), packed_, spare_, parts, keys_from_rows,
+                           &sort_buckets_);
     }
     have_order_ = true;
     ordered_n_ = n_;
@@ -185,7 +186,8 @@ bool pair_search::repair_order(std::size_t parts) {
     if (std::find(repaired.begin(), repaired.end(), 0) != repaired.end()) {
         return false;
     }
-    radix_sort(moved_keys_.data(), moved_ids_.data(), changed, grid_.key_bits(), packed_, spare_, parts);
+    radix_sort(moved_keys_.data(), moved_ids_.data(), changed, grid_.key_bits(), packed_, spare_, parts,
+               &sort_buckets_);
     merge_by_key(stay_keys_.data(), stay_ids_.data(), stayed, moved_keys_.data(), moved_ids_.data(), changed,
                  keys_.data(), order_.data(), parts);
     return true;

@@ -53,6 +53,7 @@ void pair_search::swap_working_memory(pair_search& other) {
     parts_.swap(other.parts_);
     pass_memory_.swap(other.pass_memory_);
     sort_scratch_.swap(other.sort_scratch_);
+    sort_buckets_.swap(other.sort_buckets_);
 }
 
 std::size_t pair_search::working_bytes() {
@@ -88,6 +89,7 @@ std::size_t pair_search::working_bytes() {
         add(s.spare);
         add(s.counts);
     }
+    bytes += sort_buckets_.bytes();
     return bytes;
 }
 

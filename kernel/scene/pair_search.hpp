@@ -479,6 +479,7 @@ private:
     scratch_vector<std::uint8_t> changed_strip_;
     scratch_vector<std::uint32_t> stay_keys_, stay_ids_, moved_keys_, moved_ids_;
     radix_buffer packed_, spare_;
+    radix_bucket_buffers sort_buckets_;  ///< the buckets of the sorts on several threads
 
     // Per rectangle, in the query's order.
     scratch_records<record> records_;

@@ -134,7 +134,8 @@ void pair_search::collect_visits(std::size_t parts) {
     }
     if (merge) {
         if (far_count > 0) {
-            radix_sort(far_keys_.data(), far_ids_.data(), far_count, grid_.key_bits(), packed_, spare_, parts);
+            radix_sort(far_keys_.data(), far_ids_.data(), far_count, grid_.key_bits(), packed_, spare_, parts,
+                       &sort_buckets_);
             merge_by_key(near_keys_.data(), near_ids_.data(), near_count, far_keys_.data(), far_ids_.data(), far_count,
                          visit_keys_.data(), visit_ids_.data(), parts);
         }
@@ -145,7 +146,8 @@ void pair_search::collect_visits(std::size_t parts) {
             std::copy(near_keys_.begin(), near_keys_.end(), visit_keys_.begin() + static_cast<std::ptrdiff_t>(far_count));
             std::copy(near_ids_.begin(), near_ids_.end(), visit_ids_.begin() + static_cast<std::ptrdiff_t>(far_count));
         }
-        radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_, parts);
+        radix_sort(visit_keys_.data(), visit_ids_.data(), visits, grid_.key_bits(), packed_, spare_, parts,
+                   &sort_buckets_);
     }
     visit_keys_[visits] = 0;
     visit_ids_[visits] = 0;

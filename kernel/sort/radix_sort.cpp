@@ -142,7 +142,8 @@ void survey_keys(const std::uint32_t* keys, std::size_t n, unsigned d, unit_surv
 /// radix_sort and radix_sort_indices (`fill` nullptr for the first) in lent memory.
 template <class Values>
 void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::size_t n, unsigned key_bits,
-               std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill* fill) {
+               std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill* fill,
+               radix_bucket_buffers* buckets) {
     if (n < 2) {
         if (fill != nullptr) {
             (*fill)(0, n);
@@ -255,6 +256,9 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
         }
     }
     bucket_begin[digit_values] = n;
+    if (buckets != nullptr) {
+        buckets->reserve_units(threads);
+    }
     run_units(units, threads, [&](std::size_t unit) {
         digit_counts next = slots[unit];  // a copy of its own, as in sort_words
         std::uint64_t* const to = spare;
@@ -280,8 +284,9 @@ void sort_lent(std::uint32_t* keys, Values given, std::uint32_t* values, std::si
         // The passes go between two buffers of the unit's own, which stay in
         // the caches, rather than through the lent memory: the bucket is only
         // read there, so none of its lines is fetched to be written over, or
-        // written back.
-        scratch_vector<std::uint64_t> passes(2 * size);
+        // written back. They are the caller's, kept between calls, when it
+        // lends them (radix_bucket_buffers).
+        const radix_bucket_buffers::lease passes(buckets, 2 * size);
         sort_words(spare + begin, passes.data(), passes.data() + size, size, first, lower, keys + begin,
                    values + begin);
     });
@@ -300,28 +305,30 @@ void grow_buffers(std::size_t n, radix_buffer& packed, radix_buffer& spare) {
 }  // namespace
 
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
-                radix_buffer& spare, std::size_t parts) {
+                radix_buffer& spare, std::size_t parts, radix_bucket_buffers* buckets) {
     if (n < 2) {
         return;
     }
     grow_buffers(n, packed, spare);
-    sort_lent(keys, given_values{values}, values, n, key_bits, packed.data(), spare.data(), parts, nullptr);
+    sort_lent(keys, given_values{values}, values, n, key_bits, packed.data(), spare.data(), parts, nullptr, buckets);
 }
 
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, std::uint64_t* packed,
                 std::uint64_t* spare, std::size_t parts) {
-    sort_lent(keys, given_values{values}, values, n, key_bits, packed, spare, parts, nullptr);
+    sort_lent(keys, given_values{values}, values, n, key_bits, packed, spare, parts, nullptr, nullptr);
 }
 
 void radix_sort_indices(std::uint32_t* keys, std::uint32_t* indices, std::size_t n, unsigned key_bits,
-                        radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill) {
+                        radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill,
+                        radix_bucket_buffers* buckets) {
     grow_buffers(n, packed, spare);
-    sort_lent(keys, index_values{0}, indices, n, key_bits, packed.data(), spare.data(), parts, &fill);
+    sort_lent(keys, index_values{0}, indices, n, key_bits, packed.data(), spare.data(), parts, &fill, buckets);
 }
 
 void radix_sort_indices(std::uint32_t* keys, std::uint32_t* indices, std::size_t n, unsigned key_bits,
-                        std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill) {
-    sort_lent(keys, index_values{0}, indices, n, key_bits, packed, spare, parts, &fill);
+                        std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill,
+                        radix_bucket_buffers* buckets) {
+    sort_lent(keys, index_values{0}, indices, n, key_bits, packed, spare, parts, &fill, buckets);
 }
 
 void bucket_starts(const std::uint32_t* keys, std::size_t n, unsigned shift, std::size_t buckets, std::size_t begin,

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "support/scratch_vector.hpp"
+#include "support/unit_buffers.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -24,12 +25,17 @@ namespace obbsat::detail {
 /// Working memory of radix_sort, kept by the caller between calls.
 using radix_buffer = scratch_records<std::uint64_t>;
 
+/// The buffers the buckets of a sort on several threads are sorted in (two
+/// words a key of a bucket, up to 16384 keys: 256 KiB each, one a thread),
+/// kept by the caller between calls; without them each bucket allocates its own.
+using radix_bucket_buffers = unit_buffers<std::uint64_t>;
+
 /// Sorts keys[0, n) and values[0, n) together by key, stably; `key_bits` is
 /// the number of low bits that can be non-zero. `packed` and `spare` are
 /// grown to n. Each pass is cut into units taken as they come by up to
 /// `parts` threads (work_shares.hpp); the result does not depend on how many.
 void radix_sort(std::uint32_t* keys, std::uint32_t* values, std::size_t n, unsigned key_bits, radix_buffer& packed,
-                radix_buffer& spare, std::size_t parts = 1);
+                radix_buffer& spare, std::size_t parts = 1, radix_bucket_buffers* buckets = nullptr);
 
 /// radix_sort in working memory the caller lends: `packed` and `spare`, n
 /// words each, not overlapping each other, keys or values.
@@ -47,11 +53,13 @@ using radix_fill = std::function<void(std::size_t begin, std::size_t end)>;
 /// of them before the sort starts. `indices` is only written, once every key
 /// is filled, so fill may read what it held before.
 void radix_sort_indices(std::uint32_t* keys, std::uint32_t* indices, std::size_t n, unsigned key_bits,
-                        radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill);
+                        radix_buffer& packed, radix_buffer& spare, std::size_t parts, const radix_fill& fill,
+                        radix_bucket_buffers* buckets = nullptr);
 
 /// radix_sort_indices in working memory the caller lends, as radix_sort's.
 void radix_sort_indices(std::uint32_t* keys, std::uint32_t* indices, std::size_t n, unsigned key_bits,
-                        std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill);
+                        std::uint64_t* packed, std::uint64_t* spare, std::size_t parts, const radix_fill& fill,
+                        radix_bucket_buffers* buckets = nullptr);
 
 /// Where each bucket begins in keys[0, n), n > 0, sorted by key >> shift
 /// (every bucket below `buckets`): starts[b] is the first i whose bucket is

@@ -92,6 +92,26 @@ TEST(radix_sort, on_two_threads_skips_high_digits_every_key_shares) {
     }
 }
 
+TEST(radix_sort, on_two_threads_sorts_its_buckets_in_the_callers_buffers) {
+    // The buckets of a sort on two threads are sorted in the caller's
+    // buffers, one a thread, which the next sorts reuse: however many sorts,
+    // they hold at most two buckets' worth (two words a key, at most 16384
+    // keys a bucket). The answer is that of a sort without them.
+    std::vector<std::uint32_t> keys, values;
+    random_input(300000, 24, 23, keys, values);
+    const keyed want = stably_sorted(keys, values, 0);
+    obbsat::detail::radix_buffer packed, spare;
+    obbsat::detail::radix_bucket_buffers buckets;
+    for (int round = 0; round < 4; ++round) {
+        std::vector<std::uint32_t> k = keys, v = values;
+        obbsat::detail::radix_sort(k.data(), v.data(), k.size(), 24, packed, spare, 2, &buckets);
+        EXPECT_EQ(zipped(k, v), want) << "round " << round;
+        EXPECT_GT(buckets.bytes(), 0u) << "round " << round;
+        EXPECT_LE(buckets.buffers(), 2u);
+        EXPECT_LE(buckets.bytes(), 2u * 2u * 16384u * sizeof(std::uint64_t)) << "round " << round;
+    }
+}
+
 TEST(radix_sort, in_lent_memory_equals_a_stable_sort_and_writes_only_its_words) {
     // The scene query lends the records' memory: n words for the packed keys
     // and n for the spare, here between words that must keep their values.

@@ -55,14 +55,16 @@
 // Memory kept between calls: find_pairs and find_pairs_each keep their
 // working memory (all of the above but the returned pairs) for the next
 // call, which then skips the page faults of fresh memory (about a tenth of
-// a cold query of a million boxes). Only one query's memory is kept, that of
+// a cold query of a million boxes); the find_pairs taking `out` writes the
+// pairs into the caller's vector, so that a caller keeping it takes no
+// fresh memory at all. Only one query's memory is kept, that of
 // the last one to end while none was kept; a query that finds it held by
 // another running at the same time works in memory of its own. A query
 // whose working memory passes 1 GiB (some ten million boxes) keeps none,
-// and frees its per-rectangle memory before it sorts the pairs, so that its
-// peak is the larger of the two phases. find_contacts keeps the same working
-// memory, and with a margin its candidates and stand-ins too.
-// release_scratch() frees all of it.
+// and frees its per-rectangle memory before it sorts the pairs (unless it
+// writes them into `out`), so that its peak is the larger of the two
+// phases. find_contacts keeps the same working memory, and with a margin
+// its candidates and stand-ins too. release_scratch() frees all of it.
 #pragma once
 
 #include <obbsat/collide.hpp>
@@ -211,6 +213,16 @@ std::vector<pair_index> find_pairs(box_view boxes, const collide_options& option
 /// Every pair (i, j), i in `a` and j in `b`, that collides, sorted by i then
 /// j; `a` and `b` hold the same kind (invalid_input otherwise).
 std::vector<pair_index> find_pairs(box_view a, box_view b, const collide_options& options);
+
+/// find_pairs(boxes, options) written into `out`, in the memory `out` holds:
+/// a caller that keeps `out` from one call to the next (a frame loop) gives
+/// the answer no fresh memory either, which an answer of over 32 MB (4M
+/// pairs) otherwise takes from the OS, page faults included, on every call.
+/// `out` changes only once every row is checked.
+void find_pairs(box_view boxes, const collide_options& options, std::vector<pair_index>& out);
+
+/// find_pairs(a, b, options) written into `out`, as above.
+void find_pairs(box_view a, box_view b, const collide_options& options, std::vector<pair_index>& out);
 
 /// Frees the memory find_pairs, find_pairs_each and find_contacts keep
 /// between calls (see "Memory kept between calls" above): after it returns,

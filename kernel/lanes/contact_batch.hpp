@@ -59,9 +59,11 @@ OBBSAT_LANE_INLINE contact_fields<Arch, Real> contacts_of_fields(const real_lane
     if constexpr (Corners) {
         const contact_box_lanes<Arch, Real> a = contact_corner_box<Arch, Real>(fa, origin_x, origin_y);
         const contact_box_lanes<Arch, Real> b = contact_corner_box<Arch, Real>(fb, origin_x, origin_y);
-        const reference_lanes<Arch, Real> ref = reference_of_boxes<Arch, Real>(a, b);
+        real_mask<Arch, Real> within;
+        const reference_lanes<Arch, Real> ref = reference_of_boxes<Arch, Real>(a, b, margin, within);
         const contact_box_lanes<Arch, Real> incident = either_box<Arch, Real>(ref.flip, a, b);
-        return fields_of<Arch, Real>(manifold_lanes_of<Arch, Real>(incident, ref, origin_x, origin_y, margin));
+        return fields_of<Arch, Real>(
+            manifold_lanes_of<Arch, Real>(incident, ref, within, origin_x, origin_y, margin));
     } else {
         return fields_of<Arch, Real>(contact_pose_lanes_of<Arch, Real>(fa, fb, margin));
     }
@@ -379,17 +381,16 @@ struct kept_references {
     /// Field f of kept pair k at field[f][k]: r + 4 where flip (else r), the
     /// separation of the reference box's best face, the incident box's
     /// reciprocal length, ux, uy: all that steps 4 to 8 read of the choice
-    /// for a pair within the margin, where sa and sb are both at most the
-    /// margin and are otherwise read only as the reference box's. Every keep
+    /// for a pair within the margin (pose_choice_lanes), whose test of the
+    /// margin holds for every kept pair (known_within). Every keep
     /// writes a whole vector from `count`, so a vector read from the last
     /// kept pair reads only written reals.
     alignas(64) Real field[fields][rows];
 
     /// Appends the lanes of `bits` of `p` from kept pair `count`.
-    OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_reference_lanes<Arch, Real>& p, std::size_t count) {
+    OBBSAT_LANE_INLINE void keep(unsigned bits, const pose_choice_lanes<Arch, Real>& p, std::size_t count) {
         if constexpr (holds) {
-            const batch values[5] = {p.r + pick<Arch, Real>(p.flip, batch(Real(4)), batch(Real(0))),
-                                     pick<Arch, Real>(p.flip, p.sb, p.sa), pick<Arch, Real>(p.flip, p.inv_a, p.inv_b),
+            const batch values[5] = {p.r + pick<Arch, Real>(p.flip, batch(Real(4)), batch(Real(0))), p.sep, p.inc_inv,
                                      p.ux, p.uy};
             for (std::size_t f = 0; f < 5; ++f) {
                 store_compressed<Arch, Real>(bits, values[f], field[f] + count);
@@ -404,11 +405,11 @@ struct kept_references {
                                                                  Real margin) const {
         if constexpr (holds) {
             auto load = [&](std::size_t f) { return batch::load_unaligned(field[f] + k); };
-            const batch code = load(0), separation = load(1), inv = load(2);
+            const batch code = load(0);
             const auto flip = code >= batch(Real(4));
             const batch r = code - pick<Arch, Real>(flip, batch(Real(4)), batch(Real(0)));
-            const pose_reference_lanes<Arch, Real> p{flip, r, separation, separation, inv, inv, load(3), load(4)};
-            return contact_pose_lanes_from<Arch, Real>(fa, fb, p, margin);
+            const pose_choice_lanes<Arch, Real> p{flip, r, load(1), load(2), load(3), load(4)};
+            return contact_pose_lanes_from<Arch, Real>(fa, fb, p, known_within{}, margin);
         } else {
             (void)k;
             return contact_pose_lanes_of<Arch, Real>(fa, fb, margin);
@@ -467,16 +468,17 @@ void contact_pose_batch(const Real* a, std::size_t a_stride, const Real* b, std:
             }
         };
         // Writes the contacts without points of pairs i to i + valid and keeps those within the margin.
-        auto write_apart = [&](const pose_reference_lanes<Arch, Real>& p, std::size_t i, std::size_t valid)
+        auto write_apart = [&](const pose_reference_lanes<Arch, Real>& reference, std::size_t i, std::size_t valid)
             __attribute__((always_inline)) {
                 const unsigned valid_lanes = valid == width ? ~0u : (1u << valid) - 1u;
-                const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(p, margin)) & valid_lanes;
+                const unsigned near_lanes = lane_bits(may_have_points<Arch, Real>(reference, margin)) & valid_lanes;
+                const pose_choice_lanes<Arch, Real> p = pose_choice_of<Arch, Real>(reference);
                 // A vector whose every pair is within the margin (most of a
                 // scene's colliding pairs) has each contact written by the
                 // second pass: nothing to write here.
                 if (near_lanes != valid_lanes) {
                     const contact_out_lanes<Arch, Real> apart =
-                        contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sa, p.sb);
+                        contact_without_points<Arch, Real>(p.flip, p.ux, p.uy, p.sep);
                     if constexpr (std::is_same<Real, float>::value) {
                         if (valid == width) {
                             store_contacts_without_points<Arch>(apart.nx, apart.ny, apart.depth, block_out + i);

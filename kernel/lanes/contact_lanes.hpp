@@ -149,25 +149,25 @@ OBBSAT_LANE_INLINE real_lanes<Arch, Real> integer_bits(const real_lanes<Arch, Re
 }
 
 /// The lanes whose bits are contact_feature's four bytes (index_a, type_a,
-/// index_b, type_b; little-endian) for codes index + 4·type of A and of B.
-/// For float the three low bytes make a whole float below 2^24 and type_b's
-/// bit, bit 24, is OR-ed in as the bits of 2^-125 (exponent field 2); a
-/// double holds all four bytes as one whole number.
+/// index_b, type_b; little-endian) for the indices of A's and B's features,
+/// of which exactly one is a face (type 1): B's where b_is_face, else A's,
+/// as every feature of a clipped point. For float the three low bytes make
+/// a whole float below 2^24 and type_b's bit, bit 24, is OR-ed in as the
+/// bits of 2^-125 (exponent field 2); a double holds all four bytes as one
+/// whole number. Every sum is of whole numbers below 2^25, so exact.
 template <class Arch, class Real>
-OBBSAT_LANE_INLINE real_lanes<Arch, Real> feature_bits(const real_lanes<Arch, Real>& code_a,
-                                                       const real_lanes<Arch, Real>& code_b) {
+OBBSAT_LANE_INLINE real_lanes<Arch, Real> feature_bits(const real_lanes<Arch, Real>& index_a,
+                                                       const real_lanes<Arch, Real>& index_b,
+                                                       const real_mask<Arch, Real>& b_is_face) {
     using batch = real_lanes<Arch, Real>;
-    const batch zero(Real(0)), one(Real(1)), four(Real(4));
-    const batch type_a = pick<Arch, Real>(code_a >= four, one, zero), index_a = code_a - (four * type_a);
-    const auto b_is_face = code_b >= four;
-    const batch index_b = code_b - pick<Arch, Real>(b_is_face, four, zero);
-    const batch low_bytes = (index_a + (batch(Real(0x1p8)) * type_a)) + (batch(Real(0x1p16)) * index_b);
+    const batch indices = index_a + (batch(Real(0x1p16)) * index_b);
     if constexpr (std::is_same<Real, float>::value) {
         static_assert(0x1p-125f == 1.17549435e-38f * 2.0f, "2^-125 has the bits 0x01000000");
-        return xsimd::bitwise_or(integer_bits<Arch, Real>(low_bytes),
+        const batch zero(0.0f);
+        return xsimd::bitwise_or(integer_bits<Arch, Real>(indices + pick<Arch, Real>(b_is_face, zero, batch(0x1p8f))),
                                  pick<Arch, Real>(b_is_face, batch(0x1p-125f), zero));
     } else {
-        return integer_bits<Arch, Real>(low_bytes + pick<Arch, Real>(b_is_face, batch(0x1p24), zero));
+        return integer_bits<Arch, Real>(indices + pick<Arch, Real>(b_is_face, batch(0x1p24), batch(0x1p8)));
     }
 }
 
@@ -254,17 +254,36 @@ OBBSAT_LANE_INLINE contact_box_lanes<Arch, Real> either_box(const real_mask<Arch
 
 /// What steps 1 to 3 choose, per lane: the reference box (B where flip), its
 /// face r with its normal, that normal's reciprocal length and the face's
-/// ends, and the best separations of A's and of B's faces.
+/// ends, and the reference box's best separation (sep).
 template <class Arch, class Real>
 struct reference_lanes {
     real_mask<Arch, Real> flip;
-    real_lanes<Arch, Real> r, sa, sb, nx, ny, inv, q1x, q1y, q2x, q2y;
+    real_lanes<Arch, Real> r, sep, nx, ny, inv, q1x, q1y, q2x, q2y;
 };
 
-/// Steps 1 to 3 of the reference for boxes a and b (the corner rule).
+/// Marks lanes whose pairs are all within the margin (both best separations
+/// at most it), as every pair the second pass of contact_pose_batch reads:
+/// step 6's test of the margin is then true in every lane, and left out.
+struct known_within {};
+
+/// `m` where both best separations are at most the margin (`within`).
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_mask<Arch, Real> and_within(const real_mask<Arch, Real>& within,
+                                                    const real_mask<Arch, Real>& m) {
+    return within & m;
+}
+
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE real_mask<Arch, Real> and_within(known_within, const real_mask<Arch, Real>& m) {
+    return m;
+}
+
+/// Steps 1 to 3 of the reference for boxes a and b (the corner rule); sets
+/// `within` where both best separations are at most the margin.
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_box_lanes<Arch, Real>& a,
-                                                                  const contact_box_lanes<Arch, Real>& b) {
+                                                                  const contact_box_lanes<Arch, Real>& b,
+                                                                  Real margin, real_mask<Arch, Real>& within) {
     // Step 2 (step 1 is the boxes' inv).
     const best_face_lanes<Arch, Real> fa = best_face_lanes_of<Arch, Real>(a, b);
     const best_face_lanes<Arch, Real> fb = best_face_lanes_of<Arch, Real>(b, a);
@@ -272,10 +291,11 @@ OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_
     const real_lanes<Arch, Real> tol =
         real_lanes<Arch, Real>(Real(0x1p-10)) * min_pick(span_lanes<Arch, Real>(a), span_lanes<Arch, Real>(b));
     const auto flip = fb.sep > (fa.sep + tol);
+    const real_lanes<Arch, Real> limit(margin);
+    within = (fa.sep <= limit) & (fb.sep <= limit);
     return reference_lanes<Arch, Real>{flip,
                                        pick<Arch, Real>(flip, fb.index, fa.index),
-                                       fa.sep,
-                                       fb.sep,
+                                       pick<Arch, Real>(flip, fb.sep, fa.sep),
                                        pick<Arch, Real>(flip, fb.nx, fa.nx),
                                        pick<Arch, Real>(flip, fb.ny, fa.ny),
                                        pick<Arch, Real>(flip, fb.inv, fa.inv),
@@ -286,19 +306,19 @@ OBBSAT_LANE_INLINE reference_lanes<Arch, Real> reference_of_boxes(const contact_
 }
 
 /// Step 4's normal and depth, with no point (count 0, every point field
-/// zero): the contact of a pair whose best faces separate it by more than
-/// the margin, and what steps 5 to 8 start from.
+/// zero), from the reference box's best separation (sep): the contact of a
+/// pair whose best faces separate it by more than the margin, and what steps
+/// 5 to 8 start from.
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_without_points(const real_mask<Arch, Real>& flip,
                                                                         const real_lanes<Arch, Real>& ux,
                                                                         const real_lanes<Arch, Real>& uy,
-                                                                        const real_lanes<Arch, Real>& sa,
-                                                                        const real_lanes<Arch, Real>& sb) {
+                                                                        const real_lanes<Arch, Real>& sep) {
     const real_lanes<Arch, Real> zero(Real(0));
     contact_out_lanes<Arch, Real> out;
     out.nx = pick<Arch, Real>(flip, negated<Arch, Real>(ux), ux);
     out.ny = pick<Arch, Real>(flip, negated<Arch, Real>(uy), uy);
-    out.depth = zero - pick<Arch, Real>(flip, sb, sa);
+    out.depth = zero - sep;
     out.count = zero;
     for (int e = 0; e < 2; ++e) {
         out.x[e] = zero;
@@ -344,11 +364,12 @@ OBBSAT_LANE_INLINE incident_edge_lanes<Arch, Real> incident_edge_of_box(const co
 }
 
 /// Steps 6 to 8 of the reference, and step 4's outputs, from the reference
-/// face (ref), its unit normal (ux, uy) and the incident edge.
-template <class Arch, class Real>
+/// face (ref), its unit normal (ux, uy), the incident edge and where both
+/// best separations are at most the margin (within: a mask, or known_within).
+template <class Arch, class Real, class Within>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
-    const reference_lanes<Arch, Real>& ref, const real_lanes<Arch, Real>& ux, const real_lanes<Arch, Real>& uy,
-    const incident_edge_lanes<Arch, Real>& edge, const real_lanes<Arch, Real>& origin_x,
+    const reference_lanes<Arch, Real>& ref, const Within& within, const real_lanes<Arch, Real>& ux,
+    const real_lanes<Arch, Real>& uy, const incident_edge_lanes<Arch, Real>& edge, const real_lanes<Arch, Real>& origin_x,
     const real_lanes<Arch, Real>& origin_y, Real margin_value) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0)), one(Real(1)), four(Real(4)), margin(margin_value);
@@ -356,7 +377,7 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
     const batch r = ref.r, q1x = ref.q1x, q1y = ref.q1y, q2x = ref.q2x, q2y = ref.q2y;
     const batch k = edge.k, p1x = edge.p1x, p1y = edge.p1y, p2x = edge.p2x, p2y = edge.p2y;
 
-    contact_out_lanes<Arch, Real> out = contact_without_points<Arch, Real>(flip, ux, uy, ref.sa, ref.sb);
+    contact_out_lanes<Arch, Real> out = contact_without_points<Arch, Real>(flip, ux, uy, ref.sep);
 
     // Step 6: clip to the side planes.
     const batch tx = q2x - q1x, ty = q2y - q1y;
@@ -366,7 +387,7 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
     // masks through SSE2 halves, code that two per-ISA objects would share.
     const auto reaches_low_side = (tau[0] >= zero) | (tau[1] >= zero);
     const auto reaches_high_side = (tau[0] <= T) | (tau[1] <= T);
-    const auto in_reach = (ref.sa <= margin) & (ref.sb <= margin) & reaches_low_side & reaches_high_side;
+    const auto in_reach = and_within<Arch, Real>(within, reaches_low_side & reaches_high_side);
     const batch g = one / (tau[0] - tau[1]);
     const batch lambda_low = tau[0] * g, lambda_high = (tau[0] - T) * g;
     const batch along_x = p2x - p1x, along_y = p2y - p1y;
@@ -378,22 +399,23 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
     batch px[2], py[2], sep[2], feature[2];
     real_mask<Arch, Real> keep[2];
     for (int e = 0; e < 2; ++e) {
-        const auto below = tau[e] < zero;
-        const auto moved = below | (tau[e] > T);
+        const auto below = tau[e] < zero, above = tau[e] > T;
+        const auto moved = below | above;
         const batch lambda = pick<Arch, Real>(below, lambda_low, lambda_high);
         px[e] = pick<Arch, Real>(moved, p1x + (lambda * along_x), ex[e]);
         py[e] = pick<Arch, Real>(moved, p1y + (lambda * along_y), ey[e]);
-        // Step 8: feature codes, index + 4·type, face type 1.
-        const batch ref_code = pick<Arch, Real>(moved, pick<Arch, Real>(below, r, r_next), r + four);
-        const batch inc_code = pick<Arch, Real>(moved, k + four, vertex_of_incident[e]);
-        feature[e] =
-            feature_bits<Arch, Real>(pick<Arch, Real>(flip, inc_code, ref_code),
-                                     pick<Arch, Real>(flip, ref_code, inc_code));
+        // Step 8: an end left in place is the incident vertex on reference
+        // face r; a moved one is reference vertex r (below) or r + 1 (above:
+        // T is a sum of squares, so never both) on incident face k.
+        const batch ref_index = pick<Arch, Real>(above, r_next, r);
+        const batch inc_index = pick<Arch, Real>(moved, k, vertex_of_incident[e]);
+        feature[e] = feature_bits<Arch, Real>(pick<Arch, Real>(flip, inc_index, ref_index),
+                                              pick<Arch, Real>(flip, ref_index, inc_index), moved ^ flip);
         sep[e] = ((px[e] - q1x) * ux) + ((py[e] - q1y) * uy);
     }
     // Step 7: within the margin, or the nearer point of a touching or
     // overlapping pair; a kept separation above the margin reads as it.
-    const auto touching = pick<Arch, Real>(flip, ref.sb, ref.sa) <= zero;
+    const auto touching = ref.sep <= zero;
     for (int e = 0; e < 2; ++e) {
         keep[e] = in_reach & ((sep[e] <= margin) | (touching & (sep[e] <= sep[1 - e])));
     }
@@ -426,12 +448,13 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> clipped_manifold_lanes(
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> manifold_lanes_of(const contact_box_lanes<Arch, Real>& inc,
                                                                    const reference_lanes<Arch, Real>& ref,
+                                                                   const real_mask<Arch, Real>& within,
                                                                    const real_lanes<Arch, Real>& origin_x,
                                                                    const real_lanes<Arch, Real>& origin_y,
                                                                    Real margin) {
     const real_lanes<Arch, Real> ux = ref.nx * ref.inv, uy = ref.ny * ref.inv;
-    return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, incident_edge_of_box<Arch, Real>(inc, ux, uy), origin_x,
-                                              origin_y, margin);
+    return clipped_manifold_lanes<Arch, Real>(ref, within, ux, uy, incident_edge_of_box<Arch, Real>(inc, ux, uy),
+                                              origin_x, origin_y, margin);
 }
 
 /// Face j's edge of pose boxes, per lane, without building the boxes: pose
@@ -545,20 +568,35 @@ OBBSAT_LANE_INLINE real_mask<Arch, Real> may_have_points(const pose_reference_la
     return (p.sa <= limit) & (p.sb <= limit);
 }
 
-/// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
-/// and what pose_reference_of chose for them (the reference's pose steps),
-/// then steps 4 to 8.
+/// What steps 5 to 8 read of pose_reference_of's choice, per lane: the
+/// reference pose (B where flip), its face r and best separation, the
+/// incident pose's reciprocal length and the unit normal u of face r.
 template <class Arch, class Real>
+struct pose_choice_lanes {
+    real_mask<Arch, Real> flip;
+    real_lanes<Arch, Real> r, sep, inc_inv, ux, uy;
+};
+
+template <class Arch, class Real>
+OBBSAT_LANE_INLINE pose_choice_lanes<Arch, Real> pose_choice_of(const pose_reference_lanes<Arch, Real>& p) {
+    return pose_choice_lanes<Arch, Real>{p.flip, p.r, pick<Arch, Real>(p.flip, p.sb, p.sa),
+                                         pick<Arch, Real>(p.flip, p.inv_a, p.inv_b), p.ux, p.uy};
+}
+
+/// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
+/// and what pose_reference_of chose for them (the reference's pose steps,
+/// `within` where both best separations are at most the margin: a mask, or
+/// known_within), then steps 4 to 8.
+template <class Arch, class Real, class Within>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const real_lanes<Arch, Real>* fa,
                                                                          const real_lanes<Arch, Real>* fb,
-                                                                         const pose_reference_lanes<Arch, Real>& p,
-                                                                         Real margin) {
+                                                                         const pose_choice_lanes<Arch, Real>& p,
+                                                                         const Within& within, Real margin) {
     using batch = real_lanes<Arch, Real>;
     const batch zero(Real(0));
     const batch origin_x = fa[0], origin_y = fa[1];
     const auto flip = p.flip;
-    const batch r = p.r, ux = p.ux, uy = p.uy, inv_a = p.inv_a, inv_b = p.inv_b;
-
+    const batch r = p.r, ux = p.ux, uy = p.uy, inc_inv = p.inc_inv;
 
     // Step 5 on the incident pose: its faces' normals are ±(−s, c) and ±(c,
     // s), so faces 2 and 3 are along faces 0 and 1 negated (exactly: only
@@ -568,7 +606,6 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const r
         ref_fields[f] = pick<Arch, Real>(flip, fb[f], fa[f]);
         inc_fields[f] = pick<Arch, Real>(flip, fa[f], fb[f]);
     }
-    const batch inc_inv = pick<Arch, Real>(flip, inv_a, inv_b);
     const batch inc_c = inc_fields[4], inc_s = inc_fields[5];
     const batch along_0 = ((negated<Arch, Real>(inc_s) * ux) + (inc_c * uy)) * inc_inv;
     const batch along_1 = ((inc_c * ux) + (inc_s * uy)) * inc_inv;
@@ -582,9 +619,9 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const r
     const incident_edge_lanes<Arch, Real> edge = pose_edge_lanes<Arch, Real>(inc_fields, origin_x, origin_y, k);
     const incident_edge_lanes<Arch, Real> face = pose_edge_lanes<Arch, Real>(ref_fields, origin_x, origin_y, r);
     // The normal and its reciprocal length: what steps 6 to 8 do not read again.
-    const reference_lanes<Arch, Real> ref{flip,           r,        p.sa,     p.sb,     ux,      uy,
-                                          batch(Real(1)), face.p1x, face.p1y, face.p2x, face.p2y};
-    return clipped_manifold_lanes<Arch, Real>(ref, ux, uy, edge, origin_x, origin_y, margin);
+    const reference_lanes<Arch, Real> ref{flip,     r,        p.sep,    ux,      uy, batch(Real(1)),
+                                          face.p1x, face.p1y, face.p2x, face.p2y};
+    return clipped_manifold_lanes<Arch, Real>(ref, within, ux, uy, edge, origin_x, origin_y, margin);
 }
 
 /// The contact of poses, per lane: fields cx, cy, hx, hy, c, s of A and of B
@@ -592,7 +629,9 @@ OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_from(const r
 template <class Arch, class Real>
 OBBSAT_LANE_INLINE contact_out_lanes<Arch, Real> contact_pose_lanes_of(const real_lanes<Arch, Real>* fa,
                                                                        const real_lanes<Arch, Real>* fb, Real margin) {
-    return contact_pose_lanes_from<Arch, Real>(fa, fb, pose_reference_of<Arch, Real>(fa, fb), margin);
+    const pose_reference_lanes<Arch, Real> p = pose_reference_of<Arch, Real>(fa, fb);
+    return contact_pose_lanes_from<Arch, Real>(fa, fb, pose_choice_of<Arch, Real>(p),
+                                               may_have_points<Arch, Real>(p, margin), margin);
 }
 
 }  // namespace

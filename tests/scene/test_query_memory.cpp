@@ -53,6 +53,12 @@ void* allocate(std::size_t bytes, std::size_t alignment) {
 
 }  // namespace
 
+// GCC 12 sees free() in a replacement operator delete as a mismatch with the
+// operator new it replaces; here both sides are this file's malloc and free.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+
 void* operator new(std::size_t bytes) { return allocate(bytes, 0); }
 void* operator new[](std::size_t bytes) { return allocate(bytes, 0); }
 void* operator new(std::size_t bytes, std::align_val_t alignment) {
